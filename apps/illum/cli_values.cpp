@@ -1,0 +1,85 @@
+#include "cli_values.h"
+
+#include <illum/error.h>
+
+#include <charconv>
+#include <cmath>
+#include <sstream>
+#include <vector>
+
+namespace illum::cli {
+namespace {
+
+bool toNumber(const std::string& s, double& out) {
+  std::size_t begin = s.find_first_not_of(" \t");
+  std::size_t end = s.find_last_not_of(" \t");
+  if (begin == std::string::npos) return false;
+  const char* first = s.data() + begin;
+  const char* last = s.data() + end + 1;
+  if (*first == '+') ++first;
+  auto [ptr, ec] = std::from_chars(first, last, out);
+  return ec == std::errc() && ptr == last && std::isfinite(out);
+}
+
+std::vector<std::string> split(const std::string& text) {
+  std::vector<std::string> parts;
+  std::stringstream in(text);
+  std::string part;
+  while (std::getline(in, part, ',')) parts.push_back(part);
+  if (!text.empty() && text.back() == ',') parts.push_back("");
+  return parts;
+}
+
+}  // namespace
+
+Real parseNumber(const std::string& option, const std::string& text, Real min, Real max) {
+  double v = 0;
+  if (!toNumber(text, v)) throw InputError(option + ": expected a finite number, got \"" + text + "\"");
+  if (v < min || v > max) {
+    std::ostringstream s;
+    s << option << ": expected a number in [" << min << ", " << max << "], got " << text;
+    throw InputError(s.str());
+  }
+  return Real(v);
+}
+
+Vec3 parseVec3(const std::string& option, const std::string& text) {
+  const auto parts = split(text);
+  Vec3 v(0);
+  double x = 0;
+  if (parts.size() != 3) throw InputError(option + ": expected 3 numbers x,y,z, got \"" + text + "\"");
+  for (int i = 0; i < 3; ++i) {
+    if (!toNumber(parts[std::size_t(i)], x)) throw InputError(option + ": expected 3 finite numbers x,y,z, got \"" + text + "\"");
+    v[i] = Real(x);
+  }
+  return v;
+}
+
+Vec3 parseColor(const std::string& option, const std::string& text, bool unitRange) {
+  if (!text.empty() && text[0] == '#') {
+    // #rrggbb: sRGB-encoded bytes, decoded to the linear values the lighting uses.
+    unsigned value = 0;
+    auto [ptr, ec] = std::from_chars(text.data() + 1, text.data() + text.size(), value, 16);
+    if (text.size() != 7 || ec != std::errc() || ptr != text.data() + text.size())
+      throw InputError(option + ": expected a colour R,G,B or #rrggbb, got \"" + text + "\"");
+    Vec3 c;
+    for (int i = 0; i < 3; ++i) {
+      const double s = double((value >> (16 - 8 * i)) & 0xffu) / 255.0;
+      c[i] = Real(s <= 0.04045 ? s / 12.92 : std::pow((s + 0.055) / 1.055, 2.4));
+    }
+    return c;
+  }
+  const auto parts = split(text);
+  if (parts.size() != 3) throw InputError(option + ": expected a colour R,G,B (3 numbers), got \"" + text + "\"");
+  Vec3 c;
+  for (int i = 0; i < 3; ++i) {
+    double x = 0;
+    if (!toNumber(parts[std::size_t(i)], x) || x < 0 || (unitRange && x > 1))
+      throw InputError(option + ": expected a colour R,G,B with each channel a number in " +
+                       (unitRange ? "[0, 1]" : "[0, ∞)") + ", got \"" + text + "\"");
+    c[i] = Real(x);
+  }
+  return c;
+}
+
+}  // namespace illum::cli

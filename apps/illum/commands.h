@@ -1,0 +1,15 @@
+// The CLI's commands, one file each. Each adds its subcommand and returns the function that runs it.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <functional>
+
+namespace illum::cli {
+
+using Command = std::function<int()>;
+
+Command addEvalCommand(CLI::App& app);
+Command addRenderCommand(CLI::App& app);
+
+}  // namespace illum::cli

@@ -1,0 +1,48 @@
+// illum: the classic local lighting models, computed and rendered exactly, on the CPU.
+#include <illum/error.h>
+
+#include "commands.h"
+
+#include <cstdio>
+#include <exception>
+#include <iostream>
+#include <new>
+
+int main(int argc, char** argv) {
+  CLI::App app{"illum: the classic lighting models (Lambert, Phong, Blinn-Phong) as OpenGL defines them"};
+  app.name("illum");
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "illum 0.1.0");
+  const illum::cli::Command eval = illum::cli::addEvalCommand(app);
+  const illum::cli::Command render = illum::cli::addRenderCommand(app);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "illum: error: " << e.what() << "\nRun 'illum --help' for usage.\n";
+    return 2;
+  }
+
+  try {
+    if (app.got_subcommand("eval")) return eval();
+    return render();
+  } catch (const illum::InputError& e) {
+    std::cerr << "illum: error: " << e.what() << "\n";
+    return 2;
+  } catch (const illum::Error& e) {
+    std::cerr << "illum: error: " << e.what() << "\n";
+    return 1;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "illum: error: out of memory\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "illum: error: " << e.what() << "\n";
+    return 1;
+  }
+}

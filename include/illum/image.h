@@ -1,0 +1,45 @@
+// 8-bit RGBA images, row 0 at the top, and their PNG form.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace illum {
+
+struct Image {
+  int width = 0;
+  int height = 0;
+  std::vector<std::uint8_t> rgba;  // width·height·4 bytes, rows top to bottom
+
+  Image() = default;
+  Image(int w, int h) : width(w), height(h), rgba(std::size_t(w) * std::size_t(h) * 4, 0) {}
+  std::uint8_t* pixel(int x, int y) { return &rgba[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * 4]; }
+  const std::uint8_t* pixel(int x, int y) const {
+    return &rgba[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * 4];
+  }
+};
+
+// Encodes the image as PNG in memory.
+std::vector<std::uint8_t> encodePng(const Image& image);
+// Writes a PNG atomically: a temporary file beside `path`, then a rename, so a failure never
+// leaves a partial file or clobbers an existing one. Throws Error on failure.
+void writePng(const std::filesystem::path& path, const Image& image);
+// Reads a PNG (any 8-bit format, expanded to RGBA). Throws InputError on failure.
+Image readPng(const std::filesystem::path& path);
+
+// Writes bytes atomically (temporary file + rename). Throws Error on failure.
+void writeFileAtomically(const std::filesystem::path& path, const std::vector<std::uint8_t>& bytes);
+
+// How far two images are apart, per channel, in 8-bit steps.
+struct ImageDifference {
+  int maxError = 0;               // largest |a−b| over every channel of every pixel
+  double fractionWithin = 1;      // fraction of pixels whose every channel is within the tolerance
+  double psnr = 0;                // dB over RGB; +inf for identical images
+};
+ImageDifference compareImages(const Image& a, const Image& b, int tolerance);
+// |a−b| per channel, amplified so small errors show, alpha opaque.
+Image differenceImage(const Image& a, const Image& b, int gain = 16);
+
+}  // namespace illum

@@ -1,0 +1,21 @@
+// The scalar type of every lighting and geometry computation.
+// float by default, like OpenGL and llvmpipe; configure with -DILLUM_DOUBLE=ON for double.
+#pragma once
+
+#include <glm/glm.hpp>
+
+namespace illum {
+
+#if defined(ILLUM_USE_DOUBLE) && ILLUM_USE_DOUBLE
+using Real = double;
+#else
+using Real = float;
+#endif
+
+using Vec2 = glm::vec<2, Real>;
+using Vec3 = glm::vec<3, Real>;
+using Vec4 = glm::vec<4, Real>;
+using Mat3 = glm::mat<3, 3, Real>;
+using Mat4 = glm::mat<4, 4, Real>;
+
+}  // namespace illum

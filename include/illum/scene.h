@@ -1,0 +1,62 @@
+// A scene as the renderers see it: image settings, camera, lights and objects in world space.
+// Its JSON form, version 1, is documented in docs/scene-format.md.
+#pragma once
+
+#include <illum/lighting.h>
+#include <illum/mesh.h>
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace illum {
+
+enum class Projection { Perspective, Orthographic };
+
+// gluLookAt + gluPerspective (or glOrtho with a given view height); aspect = width / height.
+struct Camera {
+  Vec3 eye{0, 0, 5};
+  Vec3 center{0, 0, 0};
+  Vec3 up{0, 1, 0};
+  Real fovy = 45;  // degrees
+  Real near = Real(0.1);
+  Real far = 100;
+  Projection projection = Projection::Perspective;
+  Real viewHeight = 2;  // world units, orthographic only
+
+  Mat4 viewFromWorld() const;
+  Mat4 clipFromView(Real aspect) const;
+};
+
+struct Object {
+  std::shared_ptr<const Mesh> mesh;
+  Mat4 worldFromObject{1};
+  Material material;
+};
+
+struct Scene {
+  int width = 640;
+  int height = 480;
+  Color4 background{0, 0, 0, 1};
+  LightingModel model = LightingModel::BlinnPhong;
+  Shading shading = Shading::Phong;
+  Camera camera;
+  LightModel lightModel;
+  std::vector<Light> lights{Light{}};
+  std::vector<Object> objects;
+};
+
+// Reads a scene file; relative mesh paths are resolved against the file's folder.
+// Throws InputError naming the file, the JSON path and what was expected.
+Scene loadSceneFile(const std::filesystem::path& path);
+
+// Parses scene JSON text. `name` is used in messages; `baseDir` resolves mesh file paths.
+Scene parseScene(const std::string& text, const std::string& name,
+                 const std::filesystem::path& baseDir);
+
+// The built-in scene `illum render` draws with no arguments: GLUT's solids in several materials
+// under coloured lights, the seeds' story at a glance.
+Scene defaultScene();
+
+}  // namespace illum

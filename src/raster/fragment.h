@@ -1,0 +1,31 @@
+// Fragment stage: the colour of one covered pixel for each shading frequency.
+//   flat:    the colour lit at the triangle's provoking (last) vertex;
+//   gouraud: the vertex colours, interpolated perspective-correctly;
+//   phong:   normal and eye position interpolated perspective-correctly, lit per pixel.
+#pragma once
+
+#include "raster/frame_context.h"
+#include "raster/setup.h"
+
+namespace illum {
+
+// Screen-space barycentrics → perspective-correct weights (λi/wi normalized).
+inline std::array<Real, 3> perspectiveWeights(const TriangleSetup& t, Real l0, Real l1, Real l2) {
+  const Real q0 = l0 * t.invW[0], q1 = l1 * t.invW[1], q2 = l2 * t.invW[2];
+  const Real inv = Real(1) / (q0 + q1 + q2);
+  return {q0 * inv, q1 * inv, q2 * inv};
+}
+
+// The per-pixel lighting of Phong shading. `frontFacing` picks N or −N under two-sided lighting.
+Color4 shadePhongFragment(const FrameContext& frame, const Material& material, const TriangleSetup& t,
+                          const std::array<Real, 3>& w);
+
+// Gouraud: interpolated vertex colours of the visible side.
+inline Color4 shadeGouraudFragment(const FrameContext& frame, const TriangleSetup& t, const std::array<Real, 3>& w) {
+  const bool back = frame.lightModel.twoSided && !t.frontFacing;
+  const auto& v = t.vertex;
+  return back ? w[0] * v[0]->back + w[1] * v[1]->back + w[2] * v[2]->back
+              : w[0] * v[0]->front + w[1] * v[1]->front + w[2] * v[2]->front;
+}
+
+}  // namespace illum

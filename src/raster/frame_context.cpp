@@ -1,0 +1,19 @@
+#include "raster/frame_context.h"
+
+namespace illum {
+
+FrameContext FrameContext::fromScene(const Scene& scene) {
+  FrameContext f;
+  f.width = scene.width;
+  f.height = scene.height;
+  f.viewFromWorld = scene.camera.viewFromWorld();
+  f.clipFromView = scene.camera.clipFromView(Real(scene.width) / Real(scene.height));
+  // Lights are given in world space: GL would see glLight called with GL_MODELVIEW = the view.
+  for (const Light& l : scene.lights) f.lights.push_back(toEyeSpace(l, f.viewFromWorld));
+  f.lightModel = scene.lightModel;
+  f.model = scene.model;
+  f.shading = scene.shading;
+  return f;
+}
+
+}  // namespace illum

@@ -1,0 +1,49 @@
+// Framebuffer stage: an RGBA8 colour buffer and a float depth buffer in GL window coordinates
+// (row 0 at the bottom), the depth test GL_LESS, and 8-bit conversion round(clamp(c)·255).
+#pragma once
+
+#include <illum/image.h>
+#include <illum/lighting.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+namespace illum {
+
+inline std::uint8_t toUnorm8(Real c) {
+  return std::uint8_t(std::lround(double(std::clamp(c, Real(0), Real(1))) * 255.0));
+}
+
+class Framebuffer {
+ public:
+  Framebuffer(int width, int height, const Color4& clearColor);
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+
+  // GL_LESS against the stored depth; on a pass the depth is written and true returned.
+  bool depthTest(int x, int y, Real z) {
+    Real& stored = depth_[index(x, y)];
+    if (!(z < stored)) return false;
+    stored = z;
+    return true;
+  }
+  void writeColor(int x, int y, const Color4& c) {
+    std::uint8_t* p = &color_[index(x, y) * 4];
+    for (int i = 0; i < 4; ++i) p[i] = toUnorm8(c[i]);
+  }
+
+  // The picture as an image file stores it: row 0 at the top.
+  Image toImage() const;
+
+ private:
+  std::size_t index(int x, int y) const { return std::size_t(y) * std::size_t(width_) + std::size_t(x); }
+
+  int width_, height_;
+  std::vector<std::uint8_t> color_;
+  std::vector<Real> depth_;
+};
+
+}  // namespace illum

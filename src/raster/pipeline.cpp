@@ -1,0 +1,73 @@
+// The pipeline in order: vertex → clip → setup → rasterize → fragment → framebuffer.
+#include <illum/render.h>
+
+#include "raster/clip.h"
+#include "raster/fragment.h"
+#include "raster/frame_context.h"
+#include "raster/framebuffer.h"
+#include "raster/rasterize.h"
+#include "raster/setup.h"
+#include "raster/vertex.h"
+
+namespace illum {
+namespace {
+
+struct TriangleColor {
+  Color4 front, back;  // flat shading: the provoking vertex's colours
+};
+
+void drawTriangle(const FrameContext& frame, const Object& object, const TriangleSetup& t,
+                  const TriangleColor& flat, Framebuffer& fb, RenderStats& stats) {
+  const bool back = frame.lightModel.twoSided && !t.frontFacing;
+  rasterizeTriangle(t, [&](int x, int y, Real l0, Real l1, Real l2) {
+    const Real z = l0 * t.z[0] + l1 * t.z[1] + l2 * t.z[2];
+    if (!fb.depthTest(x, y, z)) return;
+    ++stats.fragmentsShaded;
+    switch (frame.shading) {
+      case Shading::Flat:
+        fb.writeColor(x, y, back ? flat.back : flat.front);
+        break;
+      case Shading::Gouraud:
+        fb.writeColor(x, y, shadeGouraudFragment(frame, t, perspectiveWeights(t, l0, l1, l2)));
+        break;
+      case Shading::Phong:
+        fb.writeColor(x, y, shadePhongFragment(frame, object.material, t, perspectiveWeights(t, l0, l1, l2)));
+        break;
+    }
+  });
+}
+
+void drawObject(const FrameContext& frame, const Object& object, Framebuffer& fb, RenderStats& stats) {
+  std::vector<ShadedVertex> vertices;
+  runVertexStage(frame, object, vertices);
+  std::vector<ShadedVertex> polygon;
+  const auto& indices = object.mesh->indices;
+  for (std::size_t i = 0; i + 2 < indices.size(); i += 3) {
+    ++stats.trianglesIn;
+    const std::array<ShadedVertex, 3> tri = {vertices[indices[i]], vertices[indices[i + 1]], vertices[indices[i + 2]]};
+    // GL's provoking vertex for flat shading is the triangle's last one.
+    const TriangleColor flat{tri[2].front, tri[2].back};
+    polygon.clear();
+    if (clipTriangle(tri, frame.width, frame.height, polygon) == ClipResult::Outside) continue;
+    // The clipped polygon is convex: draw it as a fan.
+    for (std::size_t k = 1; k + 1 < polygon.size(); ++k) {
+      TriangleSetup setup;
+      if (!setupTriangle(polygon[0], polygon[k], polygon[k + 1], frame.width, frame.height, setup)) continue;
+      ++stats.trianglesDrawn;
+      drawTriangle(frame, object, setup, flat, fb, stats);
+    }
+  }
+}
+
+}  // namespace
+
+Image renderScene(const Scene& scene, RenderStats* statsOut) {
+  const FrameContext frame = FrameContext::fromScene(scene);
+  Framebuffer fb(scene.width, scene.height, scene.background);
+  RenderStats stats;
+  for (const Object& object : scene.objects) drawObject(frame, object, fb, stats);
+  if (statsOut) *statsOut = stats;
+  return fb.toImage();
+}
+
+}  // namespace illum

@@ -1,0 +1,74 @@
+#include "raster/setup.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace illum {
+namespace {
+
+struct WindowVertex {
+  std::int64_t x, y;  // fixed point, 8 sub-pixel bits
+  Real z, invW;
+};
+
+WindowVertex toWindow(const ShadedVertex& v, int width, int height) {
+  // Perspective division, then the viewport transform (glViewport(0,0,w,h), glDepthRange(0,1)).
+  const Real invW = Real(1) / v.clip.w;
+  const Real xw = (v.clip.x * invW + 1) * Real(0.5) * Real(width);
+  const Real yw = (v.clip.y * invW + 1) * Real(0.5) * Real(height);
+  const Real zw = (v.clip.z * invW + 1) * Real(0.5);
+  return {std::llround(double(xw) * kSubpixelOne), std::llround(double(yw) * kSubpixelOne), zw, invW};
+}
+
+// Edge from p to q, positive on its left (the inside of a counter-clockwise triangle, y up).
+EdgeFunction makeEdge(const WindowVertex& p, const WindowVertex& q) {
+  EdgeFunction e;
+  e.a = -(q.y - p.y);
+  e.b = q.x - p.x;
+  e.c = -(e.a * p.x + e.b * p.y);
+  // Top-left rule, y up: a left edge runs downwards; a top edge is horizontal and runs leftwards.
+  const bool left = q.y < p.y;
+  const bool top = q.y == p.y && q.x < p.x;
+  e.bias = (left || top) ? 0 : -1;
+  return e;
+}
+
+}  // namespace
+
+bool setupTriangle(const ShadedVertex& v0, const ShadedVertex& v1, const ShadedVertex& v2, int width, int height,
+                   TriangleSetup& out) {
+  std::array<WindowVertex, 3> w = {toWindow(v0, width, height), toWindow(v1, width, height),
+                                   toWindow(v2, width, height)};
+  out.vertex = {&v0, &v1, &v2};
+  std::int64_t area2 = (w[1].x - w[0].x) * (w[2].y - w[0].y) - (w[2].x - w[0].x) * (w[1].y - w[0].y);
+  if (area2 == 0) return false;
+  out.frontFacing = area2 > 0;
+  if (area2 < 0) {
+    // Make the triangle counter-clockwise; attributes travel with their vertices.
+    std::swap(w[1], w[2]);
+    std::swap(out.vertex[1], out.vertex[2]);
+    area2 = -area2;
+  }
+  out.area2 = area2;
+  for (int i = 0; i < 3; ++i) {
+    out.z[std::size_t(i)] = w[std::size_t(i)].z;
+    out.invW[std::size_t(i)] = w[std::size_t(i)].invW;
+  }
+  out.edge[0] = makeEdge(w[1], w[2]);
+  out.edge[1] = makeEdge(w[2], w[0]);
+  out.edge[2] = makeEdge(w[0], w[1]);
+
+  // Pixel centres (x + 0.5) inside the bounding box, limited to the viewport (the scissor).
+  const std::int64_t half = kSubpixelOne / 2;
+  const std::int64_t minFx = std::min({w[0].x, w[1].x, w[2].x}), maxFx = std::max({w[0].x, w[1].x, w[2].x});
+  const std::int64_t minFy = std::min({w[0].y, w[1].y, w[2].y}), maxFy = std::max({w[0].y, w[1].y, w[2].y});
+  const auto firstCentre = [&](std::int64_t f) { return (f - half + kSubpixelOne - 1) >> kSubpixelBits; };
+  const auto lastCentre = [&](std::int64_t f) { return (f - half) >> kSubpixelBits; };
+  out.minX = int(std::max<std::int64_t>(0, firstCentre(minFx)));
+  out.maxX = int(std::min<std::int64_t>(width - 1, lastCentre(maxFx)));
+  out.minY = int(std::max<std::int64_t>(0, firstCentre(minFy)));
+  out.maxY = int(std::min<std::int64_t>(height - 1, lastCentre(maxFy)));
+  return out.minX <= out.maxX && out.minY <= out.maxY;
+}
+
+}  // namespace illum

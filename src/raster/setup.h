@@ -1,0 +1,37 @@
+// Setup stage: one clipped triangle → window coordinates, fixed-point edge functions with 8
+// sub-pixel bits, the top-left fill rule, facing, and the pixel bounding box.
+#pragma once
+
+#include "raster/vertex.h"
+
+#include <array>
+#include <cstdint>
+
+namespace illum {
+
+constexpr int kSubpixelBits = 8;
+constexpr std::int64_t kSubpixelOne = 1 << kSubpixelBits;
+
+// E(x, y) = a·x + b·y + c over fixed-point window coordinates; the inside is E > 0, or E = 0 on a
+// top or left edge (the bias folds that rule in: inside ⇔ E + bias > 0).
+struct EdgeFunction {
+  std::int64_t a = 0, b = 0, c = 0, bias = 0;
+  std::int64_t at(std::int64_t x, std::int64_t y) const { return a * x + b * y + c; }
+};
+
+struct TriangleSetup {
+  std::array<const ShadedVertex*, 3> vertex{};  // counter-clockwise on screen
+  std::array<Real, 3> z{};                      // window depth in [0,1]
+  std::array<Real, 3> invW{};                   // 1/w_clip, for perspective-correct attributes
+  std::array<EdgeFunction, 3> edge{};           // edge[i] is opposite vertex[i]
+  std::int64_t area2 = 0;                       // twice the area, fixed-point², > 0
+  bool frontFacing = true;                      // counter-clockwise as submitted (GL_CCW front)
+  int minX = 0, maxX = -1, minY = 0, maxY = -1; // pixels to visit, inside the viewport
+};
+
+// Returns false for triangles that cover no pixel centre's neighbourhood (zero area or off-screen).
+// Window coordinates are GL's: origin at the bottom-left, pixel centres at +0.5.
+bool setupTriangle(const ShadedVertex& v0, const ShadedVertex& v1, const ShadedVertex& v2, int width, int height,
+                   TriangleSetup& out);
+
+}  // namespace illum

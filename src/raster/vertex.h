@@ -1,0 +1,25 @@
+// Vertex stage: object space → eye space → clip space, normals by the inverse transpose,
+// and, for flat and Gouraud shading, the lighting equation at every vertex.
+#pragma once
+
+#include "raster/frame_context.h"
+
+#include <vector>
+
+namespace illum {
+
+struct ShadedVertex {
+  Vec4 clip{0};       // clipFromView · viewFromObject · p
+  Vec3 eyePosition{0};
+  Vec3 eyeNormal{0};  // unit length (GL_NORMALIZE)
+  Color4 front{0};    // lit with N (flat, Gouraud)
+  Color4 back{0};     // lit with −N (two-sided lighting only)
+};
+
+// The object's vertices through the vertex stage; `out` is resized to the mesh's vertex count.
+void runVertexStage(const FrameContext& frame, const Object& object, std::vector<ShadedVertex>& out);
+
+// Linear interpolation of every attribute, as clipping needs it.
+ShadedVertex lerp(const ShadedVertex& a, const ShadedVertex& b, Real t);
+
+}  // namespace illum

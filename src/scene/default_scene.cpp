@@ -1,0 +1,84 @@
+// The built-in scene: GLUT's five solids in five classic materials under three coloured lights,
+// a positional key light with distance attenuation, a directional fill and a spot from behind.
+#include <illum/scene.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <memory>
+
+namespace illum {
+namespace {
+
+Material material(Color3 ambient, Color3 diffuse, Color3 specular, Real shininess) {
+  Material m;
+  m.ambient = Color4(ambient, 1);
+  m.diffuse = Color4(diffuse, 1);
+  m.specular = Color4(specular, 1);
+  m.shininess = shininess;
+  return m;
+}
+
+Object object(Mesh mesh, Mat4 worldFromObject, Material m) {
+  return {std::make_shared<const Mesh>(std::move(mesh)), worldFromObject, m};
+}
+
+}  // namespace
+
+Scene defaultScene() {
+  Scene s;
+  s.width = 960;
+  s.height = 540;
+  s.background = {0.06, 0.07, 0.1, 1};
+  s.camera.eye = {0, 2.2, 8.5};
+  s.camera.center = {0, 0.1, 0};
+  s.camera.fovy = 40;
+  s.lightModel.ambient = {0.15, 0.15, 0.17};
+
+  Light key;  // warm positional key light, upper left front, gently attenuated
+  key.position = {-4, 5, 6, 1};
+  key.diffuse = {1.0, 0.93, 0.8};
+  key.specular = {1, 1, 1};
+  key.attenuation = {0.6, 0.03, 0.004};
+  Light fill;  // cool directional fill from the right
+  fill.position = {1, 0.3, 0.4, 0};
+  fill.diffuse = {0.2, 0.3, 0.5};
+  fill.specular = {0.3, 0.4, 0.6};
+  Light rim;  // magenta spot from behind and above, aimed at the middle of the row
+  rim.position = {0, 6, -5, 1};
+  rim.spotDirection = {0, -6, 5};
+  rim.spotCutoff = 35;
+  rim.spotExponent = 8;
+  rim.diffuse = {0.6, 0.25, 0.5};
+  rim.specular = {0.8, 0.4, 0.7};
+  s.lights = {key, fill, rim};
+
+  const auto at = [](Real x, Real y, Real z) { return glm::translate(Mat4(1), Vec3(x, y, z)); };
+  const auto upright = [](Mat4 m) { return glm::rotate(m, glm::radians(Real(-90)), Vec3(1, 0, 0)); };
+  // Red plastic sphere: white Blinn-Phong highlight on a saturated diffuse colour.
+  s.objects.push_back(object(makeSphere(0.8f, 48, 32), at(-3.4f, 0.8f, 0),
+                             material({0.25, 0.03, 0.03}, {0.8, 0.1, 0.1}, {0.9, 0.9, 0.9}, 60)));
+  // Polished gold torus: coloured specular, like a metal.
+  s.objects.push_back(object(makeTorus(0.22f, 0.62f, 32, 64),
+                             glm::rotate(at(-1.6f, 0.85f, 0), glm::radians(Real(-60)), Vec3(1, 0, 0)),
+                             material({0.25, 0.2, 0.07}, {0.75, 0.6, 0.23}, {0.63, 0.56, 0.37}, 51)));
+  // Porcelain teapot in the middle.
+  s.objects.push_back(object(makeTeapot(0.9f), at(0.3f, 0.7f, 0.3f),
+                             material({0.1, 0.14, 0.2}, {0.45, 0.6, 0.85}, {0.8, 0.8, 0.8}, 90)));
+  // Matte green cone: Lambert only, no specular colour.
+  s.objects.push_back(object(makeCone(0.7f, 1.7f, 40, 10), upright(at(2.2f, 0, 0)),
+                             material({0.05, 0.2, 0.05}, {0.2, 0.65, 0.25}, {0, 0, 0}, 0)));
+  // Violet cube with a broad, dull highlight.
+  s.objects.push_back(object(makeCube(1.1f),
+                             glm::rotate(at(3.7f, 0.55f, -0.3f), glm::radians(Real(35)), Vec3(0, 1, 0)),
+                             material({0.12, 0.06, 0.18}, {0.5, 0.3, 0.7}, {0.4, 0.4, 0.4}, 8)));
+  // A floor makes the light's distance falloff and the spot visible.
+  Mesh floor;
+  floor.positions = {{-8, 0, -6}, {8, 0, -6}, {8, 0, 6}, {-8, 0, 6}};
+  floor.normals.assign(4, Vec3(0, 1, 0));
+  floor.indices = {0, 3, 2, 0, 2, 1};
+  s.objects.push_back(object(std::move(floor), Mat4(1),
+                             material({0.15, 0.15, 0.15}, {0.55, 0.55, 0.55}, {0.2, 0.2, 0.2}, 20)));
+  return s;
+}
+
+}  // namespace illum

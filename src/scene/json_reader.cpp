@@ -1,0 +1,139 @@
+#include "scene/json_reader.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace illum {
+namespace {
+
+std::string escapePointerToken(const std::string& key) {
+  std::string out;
+  for (char c : key) {
+    if (c == '~') out += "~0";
+    else if (c == '/') out += "~1";
+    else out += c;
+  }
+  return out;
+}
+
+std::string formatReal(Real v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+}  // namespace
+
+void JsonReader::fail(const std::string& expected) const {
+  throw InputError(file_ + ": " + (pointer_.empty() ? "/" : pointer_) + ": " + expected);
+}
+
+std::string JsonReader::describe() const {
+  switch (value_.type()) {
+    case Json::value_t::null: return "null";
+    case Json::value_t::boolean: return "a boolean";
+    case Json::value_t::string: return "a string";
+    case Json::value_t::array: return "an array of " + std::to_string(value_.size());
+    case Json::value_t::object: return "an object";
+    default: return "a number";
+  }
+}
+
+void JsonReader::expectObject(std::initializer_list<const char*> allowed) const {
+  if (!value_.is_object()) fail("expected an object, got " + describe());
+  for (const auto& [key, unused] : value_.items()) {
+    bool known = false;
+    for (const char* a : allowed) known = known || key == a;
+    if (known) continue;
+    std::string list;
+    for (const char* a : allowed) list += std::string(list.empty() ? "" : ", ") + a;
+    JsonReader(unused, file_, pointer_ + "/" + escapePointerToken(key))
+        .fail("unknown key \"" + key + "\" (expected one of: " + list + ")");
+  }
+}
+
+JsonReader JsonReader::at(const char* key) const {
+  return JsonReader(value_.at(key), file_, pointer_ + "/" + escapePointerToken(key));
+}
+
+JsonReader JsonReader::item(std::size_t index) const {
+  return JsonReader(value_.at(index), file_, pointer_ + "/" + std::to_string(index));
+}
+
+std::size_t JsonReader::arraySize() const {
+  if (!value_.is_array()) fail("expected an array, got " + describe());
+  return value_.size();
+}
+
+Real JsonReader::number(Real min, Real max) const {
+  if (!value_.is_number()) fail("expected a number, got " + describe());
+  const double v = value_.get<double>();
+  if (!std::isfinite(v) || !std::isfinite(Real(v))) fail("expected a finite number");
+  if (v < min || v > max)
+    fail("expected a number in [" + formatReal(min) + ", " + formatReal(max) + "], got " + formatReal(Real(v)));
+  return Real(v);
+}
+
+Real JsonReader::positive() const {
+  const Real v = number(-std::numeric_limits<Real>::max(), std::numeric_limits<Real>::max());
+  if (!(v > 0)) fail("expected a positive number, got " + formatReal(v));
+  return v;
+}
+
+int JsonReader::integer(int min, int max) const {
+  if (!value_.is_number()) fail("expected an integer, got " + describe());
+  const double v = value_.get<double>();
+  if (!std::isfinite(v) || v != std::floor(v)) fail("expected an integer, got " + value_.dump());
+  if (v < min || v > max)
+    fail("expected an integer in [" + std::to_string(min) + ", " + std::to_string(max) + "], got " + value_.dump());
+  return int(v);
+}
+
+bool JsonReader::boolean() const {
+  if (!value_.is_boolean()) fail("expected true or false, got " + describe());
+  return value_.get<bool>();
+}
+
+std::string JsonReader::string() const {
+  if (!value_.is_string()) fail("expected a string, got " + describe());
+  return value_.get<std::string>();
+}
+
+std::vector<Real> JsonReader::numbers(std::size_t count) const { return numbers(count, count); }
+
+std::vector<Real> JsonReader::numbers(std::size_t minCount, std::size_t maxCount) const {
+  const std::string want = minCount == maxCount ? std::to_string(minCount)
+                                                : std::to_string(minCount) + " or " + std::to_string(maxCount);
+  if (!value_.is_array()) fail("expected " + want + " numbers, got " + describe());
+  const std::size_t n = value_.size();
+  if (n < minCount || n > maxCount) fail("expected " + want + " numbers, got " + std::to_string(n));
+  std::vector<Real> out;
+  out.reserve(n);
+  const Real big = std::numeric_limits<Real>::max();
+  for (std::size_t i = 0; i < n; ++i) out.push_back(item(i).number(-big, big));
+  return out;
+}
+
+Vec3 JsonReader::vec3() const {
+  const auto v = numbers(3);
+  return {v[0], v[1], v[2]};
+}
+
+Vec4 JsonReader::vec4() const {
+  const auto v = numbers(4);
+  return {v[0], v[1], v[2], v[3]};
+}
+
+Vec3 JsonReader::color3() const {
+  numbers(3);
+  return {item(0).number(0, 1), item(1).number(0, 1), item(2).number(0, 1)};
+}
+
+Vec4 JsonReader::color34() const {
+  const auto v = numbers(3, 4);
+  Vec4 c(0, 0, 0, 1);
+  for (std::size_t i = 0; i < v.size(); ++i) c[int(i)] = item(i).number(0, 1);
+  return c;
+}
+
+}  // namespace illum

@@ -1,0 +1,60 @@
+// Strict reading of scene JSON: every value is checked for type, length, finiteness and range,
+// and every failure names the file, the JSON pointer and what was expected.
+#pragma once
+
+#include <illum/error.h>
+#include <illum/real.h>
+
+#include <nlohmann/json.hpp>
+
+#include <initializer_list>
+#include <string>
+#include <vector>
+
+namespace illum {
+
+using Json = nlohmann::json;
+
+class JsonReader {
+ public:
+  JsonReader(const Json& value, std::string file, std::string pointer = "")
+      : value_(value), file_(std::move(file)), pointer_(std::move(pointer)) {}
+
+  const Json& value() const { return value_; }
+  const std::string& pointer() const { return pointer_; }
+  const std::string& file() const { return file_; }
+
+  [[noreturn]] void fail(const std::string& expected) const;
+
+  // Object access. `expectObject` also rejects keys outside `allowed`.
+  void expectObject(std::initializer_list<const char*> allowed) const;
+  bool has(const char* key) const { return value_.contains(key); }
+  JsonReader at(const char* key) const;
+  JsonReader item(std::size_t index) const;
+  std::size_t arraySize() const;  // fails unless an array
+
+  // Scalars.
+  Real number(Real min, Real max) const;  // inclusive range, finite
+  Real positive() const;                  // > 0, finite
+  int integer(int min, int max) const;
+  bool boolean() const;
+  std::string string() const;
+
+  // Fixed-length number arrays: "expected 3 numbers, got 2".
+  std::vector<Real> numbers(std::size_t count) const;
+  std::vector<Real> numbers(std::size_t minCount, std::size_t maxCount) const;
+  Vec3 vec3() const;
+  Vec4 vec4() const;
+  // Colours are in [0,1]; [r,g,b] or [r,g,b,a] (alpha defaults to 1).
+  Vec3 color3() const;
+  Vec4 color34() const;
+
+ private:
+  std::string describe() const;  // "a string", "an array of 2", ...
+
+  const Json& value_;
+  std::string file_;
+  std::string pointer_;
+};
+
+}  // namespace illum

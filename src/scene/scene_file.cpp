@@ -1,0 +1,269 @@
+// The scene file contract, version 1 (docs/scene-format.md): every key, default and rejection.
+#include <illum/error.h>
+#include <illum/scene.h>
+
+#include "scene/import.h"
+#include "scene/json_reader.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+namespace illum {
+namespace {
+
+constexpr int kMaxImageSize = 16384;
+constexpr int kMaxTessellation = 4096;
+const Real kBig = std::numeric_limits<Real>::max();
+
+void readCamera(const JsonReader& j, Camera& cam) {
+  j.expectObject({"eye", "center", "up", "fovy", "near", "far", "projection", "view_height"});
+  if (j.has("eye")) cam.eye = j.at("eye").vec3();
+  if (j.has("center")) cam.center = j.at("center").vec3();
+  if (j.has("up")) cam.up = j.at("up").vec3();
+  if (j.has("fovy")) {
+    cam.fovy = j.at("fovy").number(0, 180);
+    if (cam.fovy <= 0 || cam.fovy >= 180) j.at("fovy").fail("expected an angle strictly between 0 and 180 degrees");
+  }
+  if (j.has("near")) cam.near = j.at("near").positive();
+  if (j.has("far")) cam.far = j.at("far").positive();
+  if (j.has("projection")) {
+    const std::string p = j.at("projection").string();
+    if (p == "perspective") cam.projection = Projection::Perspective;
+    else if (p == "orthographic") cam.projection = Projection::Orthographic;
+    else j.at("projection").fail("expected \"perspective\" or \"orthographic\", got \"" + p + "\"");
+  }
+  if (j.has("view_height")) cam.viewHeight = j.at("view_height").positive();
+  if (!(cam.far > cam.near)) j.fail("expected far > near");
+  const Vec3 forward = cam.center - cam.eye;
+  if (glm::length(forward) == 0) j.fail("expected eye and center to differ");
+  if (glm::length(glm::cross(forward, cam.up)) <= Real(1e-6) * glm::length(forward) * glm::length(cam.up))
+    j.fail("expected an up vector that is not parallel to the view direction");
+}
+
+void readLightModel(const JsonReader& j, LightModel& lm) {
+  j.expectObject({"ambient", "local_viewer", "two_sided"});
+  if (j.has("ambient")) lm.ambient = j.at("ambient").color3();
+  if (j.has("local_viewer")) lm.localViewer = j.at("local_viewer").boolean();
+  if (j.has("two_sided")) lm.twoSided = j.at("two_sided").boolean();
+}
+
+Light readLight(const JsonReader& j) {
+  j.expectObject({"position", "ambient", "diffuse", "specular", "attenuation", "spot_direction",
+                  "spot_exponent", "spot_cutoff"});
+  Light l;
+  if (j.has("position")) l.position = j.at("position").vec4();
+  if (j.has("ambient")) l.ambient = j.at("ambient").color3();
+  if (j.has("diffuse")) l.diffuse = j.at("diffuse").color3();
+  if (j.has("specular")) l.specular = j.at("specular").color3();
+  if (j.has("attenuation")) {
+    const JsonReader a = j.at("attenuation");
+    a.numbers(3);
+    l.attenuation = {a.item(0).number(0, kBig), a.item(1).number(0, kBig), a.item(2).number(0, kBig)};
+    if (l.attenuation == Vec3(0)) a.fail("expected at least one positive coefficient (1/(0+0d+0d²) is infinite)");
+  }
+  if (j.has("spot_direction")) {
+    l.spotDirection = j.at("spot_direction").vec3();
+    if (glm::length(l.spotDirection) == 0) j.at("spot_direction").fail("expected a non-zero direction");
+  }
+  if (j.has("spot_exponent")) l.spotExponent = j.at("spot_exponent").number(0, 128);
+  if (j.has("spot_cutoff")) {
+    l.spotCutoff = j.at("spot_cutoff").number(0, 180);
+    if (l.spotCutoff > 90 && l.spotCutoff != 180) j.at("spot_cutoff").fail("expected an angle in [0, 90] or 180, got " + j.at("spot_cutoff").value().dump());
+  }
+  return l;
+}
+
+Material readMaterial(const JsonReader& j) {
+  j.expectObject({"ambient", "diffuse", "specular", "emission", "shininess"});
+  Material m;
+  if (j.has("ambient")) m.ambient = j.at("ambient").color34();
+  if (j.has("diffuse")) m.diffuse = j.at("diffuse").color34();
+  if (j.has("specular")) m.specular = j.at("specular").color34();
+  if (j.has("emission")) m.emission = j.at("emission").color34();
+  if (j.has("shininess")) m.shininess = j.at("shininess").number(0, kBig);
+  return m;
+}
+
+Mat4 readTransform(const JsonReader& j) {
+  Mat4 m(1);
+  const std::size_t n = j.arraySize();
+  for (std::size_t i = 0; i < n; ++i) {
+    const JsonReader step = j.item(i);
+    step.expectObject({"translate", "rotate", "scale"});
+    if (step.value().size() != 1) step.fail("expected exactly one of translate, rotate or scale");
+    // Each step multiplies on the right, like glTranslate/glRotate/glScale after the view matrix.
+    if (step.has("translate")) {
+      m = glm::translate(m, step.at("translate").vec3());
+    } else if (step.has("rotate")) {
+      const Vec4 r = step.at("rotate").vec4();
+      const Vec3 axis(r.y, r.z, r.w);
+      if (glm::length(axis) == 0) step.at("rotate").fail("expected a non-zero rotation axis");
+      m = glm::rotate(m, glm::radians(r.x), glm::normalize(axis));
+    } else {
+      const Vec3 s = step.at("scale").vec3();
+      if (s.x == 0 || s.y == 0 || s.z == 0) step.at("scale").fail("expected non-zero scale factors (a flat object has no normals)");
+      m = glm::scale(m, s);
+    }
+  }
+  return m;
+}
+
+Mesh readTriangles(const JsonReader& j) {
+  j.expectObject({"type", "positions", "normals", "indices"});
+  if (!j.has("positions")) j.fail("expected \"positions\": [x,y,z,...]");
+  if (!j.has("indices")) j.fail("expected \"indices\": [i,j,k,...]");
+  Mesh mesh;
+  const JsonReader p = j.at("positions");
+  const std::size_t np = p.arraySize();
+  if (np % 3 != 0) p.fail("expected a multiple of 3 numbers, got " + std::to_string(np));
+  for (std::size_t i = 0; i < np; i += 3)
+    mesh.positions.push_back({p.item(i).number(-kBig, kBig), p.item(i + 1).number(-kBig, kBig), p.item(i + 2).number(-kBig, kBig)});
+  const JsonReader idx = j.at("indices");
+  const std::size_t ni = idx.arraySize();
+  if (ni % 3 != 0) idx.fail("expected a multiple of 3 indices, got " + std::to_string(ni));
+  const int maxIndex = int(std::min<std::size_t>(mesh.positions.size(), std::size_t(std::numeric_limits<int>::max()))) - 1;
+  for (std::size_t i = 0; i < ni; ++i) {
+    if (maxIndex < 0) idx.fail("expected no indices, since there are no positions");
+    mesh.indices.push_back(std::uint32_t(idx.item(i).integer(0, maxIndex)));
+  }
+  if (j.has("normals")) {
+    const JsonReader n = j.at("normals");
+    if (n.arraySize() != np) n.fail("expected " + std::to_string(np) + " numbers (one normal per position), got " + std::to_string(n.arraySize()));
+    for (std::size_t i = 0; i < np; i += 3) {
+      const Vec3 v(n.item(i).number(-kBig, kBig), n.item(i + 1).number(-kBig, kBig), n.item(i + 2).number(-kBig, kBig));
+      if (glm::length(v) == 0) n.item(i).fail("expected a non-zero normal");
+      mesh.normals.push_back(glm::normalize(v));
+    }
+  } else {
+    mesh.normals = generateSmoothNormals(mesh.positions, mesh.indices);
+  }
+  return mesh;
+}
+
+Mesh readMesh(const JsonReader& j, const std::filesystem::path& baseDir) {
+  if (!j.value().is_object()) j.fail("expected an object, got something else");
+  if (!j.has("type")) j.fail("expected a \"type\": sphere, cube, torus, cone, teapot, triangles or file");
+  const std::string type = j.at("type").string();
+  if (type == "sphere") {
+    j.expectObject({"type", "radius", "slices", "stacks"});
+    const Real radius = j.has("radius") ? j.at("radius").positive() : Real(1);
+    const int slices = j.has("slices") ? j.at("slices").integer(3, kMaxTessellation) : 20;
+    const int stacks = j.has("stacks") ? j.at("stacks").integer(2, kMaxTessellation) : 16;
+    return makeSphere(radius, slices, stacks);
+  }
+  if (type == "cube") {
+    j.expectObject({"type", "size"});
+    return makeCube(j.has("size") ? j.at("size").positive() : Real(1));
+  }
+  if (type == "torus") {
+    j.expectObject({"type", "inner_radius", "outer_radius", "sides", "rings"});
+    const Real inner = j.has("inner_radius") ? j.at("inner_radius").positive() : Real(0.3);
+    const Real outer = j.has("outer_radius") ? j.at("outer_radius").positive() : Real(1);
+    const int sides = j.has("sides") ? j.at("sides").integer(3, kMaxTessellation) : 16;
+    const int rings = j.has("rings") ? j.at("rings").integer(3, kMaxTessellation) : 32;
+    return makeTorus(inner, outer, sides, rings);
+  }
+  if (type == "cone") {
+    j.expectObject({"type", "base", "height", "slices", "stacks"});
+    const Real base = j.has("base") ? j.at("base").positive() : Real(1);
+    const Real height = j.has("height") ? j.at("height").positive() : Real(2);
+    const int slices = j.has("slices") ? j.at("slices").integer(3, kMaxTessellation) : 20;
+    const int stacks = j.has("stacks") ? j.at("stacks").integer(1, kMaxTessellation) : 8;
+    return makeCone(base, height, slices, stacks);
+  }
+  if (type == "teapot") {
+    j.expectObject({"type", "size"});
+    return makeTeapot(j.has("size") ? j.at("size").positive() : Real(1));
+  }
+  if (type == "triangles") return readTriangles(j);
+  if (type == "file") {
+    j.expectObject({"type", "path"});
+    if (!j.has("path")) j.fail("expected a \"path\" to a model file");
+    const std::filesystem::path rel = j.at("path").string();
+    const std::filesystem::path full = rel.is_absolute() ? rel : baseDir / rel;
+    try {
+      return importMergedMesh(full);
+    } catch (const InputError& e) {
+      j.at("path").fail(e.what());
+    }
+  }
+  j.at("type").fail("expected one of sphere, cube, torus, cone, teapot, triangles, file; got \"" + type + "\"");
+}
+
+Object readObject(const JsonReader& j, const std::filesystem::path& baseDir) {
+  j.expectObject({"mesh", "transform", "material"});
+  Object o;
+  o.mesh = std::make_shared<Mesh>(j.has("mesh") ? readMesh(j.at("mesh"), baseDir) : makeSphere(1, 20, 16));
+  if (j.has("transform")) o.worldFromObject = readTransform(j.at("transform"));
+  if (j.has("material")) o.material = readMaterial(j.at("material"));
+  return o;
+}
+
+std::string describeParseError(const Json::parse_error& e, const std::string& text) {
+  // Turn the byte offset into a line and column a text editor shows.
+  std::size_t line = 1, column = 1;
+  for (std::size_t i = 0; i + 1 < e.byte && i < text.size(); ++i) {
+    if (text[i] == '\n') { ++line; column = 1; } else { ++column; }
+  }
+  std::string why = e.what();
+  if (auto p = why.find("error while parsing"); p != std::string::npos) why = why.substr(p);
+  else if (auto q = why.find(": "); q != std::string::npos) why = why.substr(q + 2);
+  return "line " + std::to_string(line) + ", column " + std::to_string(column) + ": invalid JSON: " + why;
+}
+
+}  // namespace
+
+Scene parseScene(const std::string& text, const std::string& name, const std::filesystem::path& baseDir) {
+  Json root;
+  try {
+    root = Json::parse(text);
+  } catch (const Json::parse_error& e) {
+    throw InputError(name + ": " + describeParseError(e, text));
+  }
+  const JsonReader j(root, name);
+  j.expectObject({"version", "width", "height", "background", "model", "shading", "camera",
+                  "light_model", "lights", "objects"});
+  Scene s;
+  if (j.has("version") && j.at("version").integer(1, 1000) != 1) j.at("version").fail("expected version 1");
+  if (j.has("width")) s.width = j.at("width").integer(1, kMaxImageSize);
+  if (j.has("height")) s.height = j.at("height").integer(1, kMaxImageSize);
+  if (j.has("background")) s.background = j.at("background").color34();
+  if (j.has("model")) {
+    const std::string m = j.at("model").string();
+    const auto model = parseLightingModel(m);
+    if (!model) j.at("model").fail("expected \"blinn-phong\", \"phong\" or \"lambert\", got \"" + m + "\"");
+    s.model = *model;
+  }
+  if (j.has("shading")) {
+    const std::string m = j.at("shading").string();
+    const auto shading = parseShading(m);
+    if (!shading) j.at("shading").fail("expected \"flat\", \"gouraud\" or \"phong\", got \"" + m + "\"");
+    s.shading = *shading;
+  }
+  if (j.has("camera")) readCamera(j.at("camera"), s.camera);
+  if (j.has("light_model")) readLightModel(j.at("light_model"), s.lightModel);
+  if (j.has("lights")) {
+    const JsonReader lights = j.at("lights");
+    s.lights.clear();
+    for (std::size_t i = 0, n = lights.arraySize(); i < n; ++i) s.lights.push_back(readLight(lights.item(i)));
+  }
+  if (j.has("objects")) {
+    const JsonReader objects = j.at("objects");
+    for (std::size_t i = 0, n = objects.arraySize(); i < n; ++i) s.objects.push_back(readObject(objects.item(i), baseDir));
+  }
+  return s;
+}
+
+Scene loadSceneFile(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path.string() + ": cannot open the scene file (does it exist and is it readable?)");
+  std::ostringstream buf;
+  buf << in.rdbuf();
+  if (in.bad()) throw InputError(path.string() + ": cannot read the scene file");
+  return parseScene(buf.str(), path.string(), path.parent_path());
+}
+
+}  // namespace illum

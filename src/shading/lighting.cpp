@@ -1,0 +1,130 @@
+// The OpenGL 2.1 §2.14.1 lighting equation:
+//   c = e_cm + a_cm·a_cs + Σ_i att_i · spot_i · [a_cm·a_cli + (n⊙VP)·d_cm·d_cli + f_i·(n⊙ĥ)^s·s_cm·s_cli]
+// computed per channel in eye space.
+#include <illum/lighting.h>
+
+#include "shading/brdf.h"
+
+#include <cmath>
+
+namespace illum {
+
+std::string_view toString(LightingModel model) {
+  switch (model) {
+    case LightingModel::BlinnPhong: return "blinn-phong";
+    case LightingModel::Phong: return "phong";
+    case LightingModel::Lambert: return "lambert";
+  }
+  return "?";
+}
+
+std::string_view toString(Shading shading) {
+  switch (shading) {
+    case Shading::Flat: return "flat";
+    case Shading::Gouraud: return "gouraud";
+    case Shading::Phong: return "phong";
+  }
+  return "?";
+}
+
+std::optional<LightingModel> parseLightingModel(std::string_view name) {
+  if (name == "blinn-phong") return LightingModel::BlinnPhong;
+  if (name == "phong") return LightingModel::Phong;
+  if (name == "lambert") return LightingModel::Lambert;
+  return std::nullopt;
+}
+
+std::optional<Shading> parseShading(std::string_view name) {
+  if (name == "flat") return Shading::Flat;
+  if (name == "gouraud") return Shading::Gouraud;
+  if (name == "phong") return Shading::Phong;
+  return std::nullopt;
+}
+
+EyeLight toEyeSpace(const Light& light, const Mat4& viewFromWorld) {
+  EyeLight eye;
+  // glLightfv(GL_POSITION) transforms the position by GL_MODELVIEW.
+  eye.position = viewFromWorld * light.position;
+  // GL_SPOT_DIRECTION is transformed by the upper-left 3×3 of GL_MODELVIEW (§2.14.1).
+  Vec3 s = Mat3(viewFromWorld) * light.spotDirection;
+  Real len = glm::length(s);
+  eye.spotDirection = len > 0 ? s / len : Vec3(0, 0, -1);
+  eye.ambient = light.ambient;
+  eye.diffuse = light.diffuse;
+  eye.specular = light.specular;
+  eye.attenuation = light.attenuation;
+  eye.spotExponent = light.spotExponent;
+  eye.spotCutoff = light.spotCutoff;
+  eye.spotCosCutoff = light.spotCutoff == 180 ? Real(-2)
+                                              : std::cos(glm::radians(light.spotCutoff));
+  return eye;
+}
+
+Vec3 viewerDirection(const Vec3& eyePosition, bool localViewer) {
+  if (!localViewer) return Vec3(0, 0, 1);
+  Real len = glm::length(eyePosition);
+  // A point at the eye itself has no direction to the viewer; take the infinite viewer's.
+  return len > 0 ? -eyePosition / len : Vec3(0, 0, 1);
+}
+
+void accumulateLight(LightingTerms& terms, const EyeLight& light, const Material& material,
+                     LightingModel model, const SurfaceGeometry& surface) {
+  const Vec3& N = surface.normal;
+  const Vec3& V = surface.toViewer;
+
+  // Compute the unit vector towards the light and the attenuation.
+  Vec3 L;
+  Real attenuation = 1;
+  if (light.isPositional()) {
+    Vec3 toLight = Vec3(light.position) / light.position.w - surface.position;
+    Real d = glm::length(toLight);
+    L = d > 0 ? toLight / d : N;  // a light exactly at the point shines along the normal
+    attenuation = distanceAttenuation(light.attenuation, d);
+  } else {
+    Real len = glm::length(Vec3(light.position));
+    L = len > 0 ? Vec3(light.position) / len : Vec3(0, 0, 1);
+  }
+
+  // The spot factor applies to directional lights too, as GL specifies.
+  Real spot = light.isSpot() ? spotFactor(glm::dot(-L, light.spotDirection), light.spotCosCutoff,
+                                          light.spotExponent)
+                             : Real(1);
+  Real scale = attenuation * spot;
+  if (scale == 0) return;
+
+  Real NoL = glm::dot(N, L);
+  terms.ambient += scale * Color3(material.ambient) * light.ambient;
+  terms.diffuse += scale * Fd_Lambert(NoL) * Color3(material.diffuse) * light.diffuse;
+
+  // f_i = 0 when the light is behind the surface: no highlight without direct light.
+  if (model == LightingModel::Lambert || NoL <= 0) return;
+  Real lobe = 0;
+  if (model == LightingModel::BlinnPhong) {
+    Vec3 H = L + V;
+    Real len = glm::length(H);
+    // L = −V leaves H undefined; illum takes N·H = 0 (so only 0^0 = 1 survives).
+    Real NoH = len > 0 ? glm::dot(N, H) / len : Real(0);
+    lobe = Fs_BlinnPhong(NoH, material.shininess);
+  } else {
+    Vec3 R = Real(2) * NoL * N - L;
+    lobe = Fs_Phong(glm::dot(R, V), material.shininess);
+  }
+  terms.specular += scale * lobe * Color3(material.specular) * light.specular;
+}
+
+LightingTerms evaluateTerms(std::span<const EyeLight> lights, const LightModel& lightModel,
+                            const Material& material, LightingModel model,
+                            const SurfaceGeometry& surface) {
+  LightingTerms terms;
+  terms.emission = Color3(material.emission);
+  terms.ambient = lightModel.ambient * Color3(material.ambient);
+  for (const EyeLight& light : lights) accumulateLight(terms, light, material, model, surface);
+  return terms;
+}
+
+Color4 clampedColor(const LightingTerms& terms, const Material& material) {
+  Color3 c = glm::clamp(terms.sum(), Color3(0), Color3(1));
+  return Color4(c, glm::clamp(material.diffuse.a, Real(0), Real(1)));
+}
+
+}  // namespace illum

@@ -1,0 +1,281 @@
+// Closed forms for every rule of the OpenGL 2.1 §2.14.1 lighting equation.
+#include <illum/lighting.h>
+
+#include "shading/brdf.h"
+
+#include <gtest/gtest.h>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
+
+namespace illum {
+namespace {
+
+constexpr Real kTol = Real(1e-5);
+
+Vec3 dirAt(Real degrees) {  // unit vector in the XZ plane, `degrees` away from +Z towards +X
+  const Real t = glm::radians(degrees);
+  return {std::sin(t), 0, std::cos(t)};
+}
+
+EyeLight directional(const Vec3& towards) {
+  EyeLight l;
+  l.position = Vec4(towards, 0);
+  return l;
+}
+
+Material whiteMaterial(Real shininess = 0) {
+  Material m;
+  m.ambient = {0, 0, 0, 1};
+  m.diffuse = {1, 1, 1, 1};
+  m.specular = {1, 1, 1, 1};
+  m.shininess = shininess;
+  return m;
+}
+
+LightingTerms oneLight(const EyeLight& light, const Material& m, LightingModel model, const SurfaceGeometry& s) {
+  LightModel lm;
+  lm.ambient = Color3(0);
+  return evaluateTerms({&light, 1}, lm, m, model, s);
+}
+
+void expectColor(const Color3& actual, const Color3& expected, Real tol = kTol) {
+  EXPECT_NEAR(actual.r, expected.r, tol);
+  EXPECT_NEAR(actual.g, expected.g, tol);
+  EXPECT_NEAR(actual.b, expected.b, tol);
+}
+
+TEST(Lambert, SixtyDegreesIsHalfOfZero) {
+  const SurfaceGeometry s{Vec3(0), Vec3(0, 0, 1), Vec3(0, 0, 1)};
+  const Real at0 = oneLight(directional(dirAt(0)), whiteMaterial(), LightingModel::Lambert, s).diffuse.r;
+  const Real at60 = oneLight(directional(dirAt(60)), whiteMaterial(), LightingModel::Lambert, s).diffuse.r;
+  EXPECT_NEAR(at0, 1, kTol);
+  EXPECT_NEAR(at60, 0.5, kTol);
+}
+
+TEST(Lambert, NoLightFromBehindAndNoSpecular) {
+  const SurfaceGeometry s{Vec3(0), Vec3(0, 0, 1), Vec3(0, 0, 1)};
+  const auto t = oneLight(directional(dirAt(120)), whiteMaterial(10), LightingModel::Lambert, s);
+  expectColor(t.diffuse, Color3(0));
+  const auto front = oneLight(directional(dirAt(0)), whiteMaterial(10), LightingModel::Lambert, s);
+  expectColor(front.specular, Color3(0));
+}
+
+TEST(Lambert, NamedTermClampsNegativeCosines) {
+  EXPECT_EQ(Fd_Lambert(Real(-0.3)), 0);
+  EXPECT_NEAR(Fd_Lambert(Real(0.25)), 0.25, kTol);
+}
+
+// The exercise at the end of the "Colored light" part of seed 003: D = 1, θ(N,L) = 30°,
+// φ(R,V) = 0°, shininess 2, per-channel light and material colours.
+TEST(SeedExercise, ColoredLightTable) {
+  EyeLight light;
+  const Vec3 L = dirAt(30);
+  light.position = Vec4(L, 1);  // positional at distance 1
+  light.ambient = {0.4, 0.9, 0.2};
+  light.diffuse = {0.3, 1.0, 1.0};
+  light.specular = {1.0, 1.0, 1.0};
+  Material m;
+  m.ambient = {0.9, 0.9, 0.1, 1};
+  m.diffuse = {0.8, 1.0, 0.8, 1};
+  m.specular = {0.0, 1.0, 0.6, 1};
+  m.shininess = 2;
+  const Vec3 R(-L.x, 0, L.z);  // viewer on the mirror direction: φ = 0
+  const SurfaceGeometry s{Vec3(0), Vec3(0, 0, 1), R};
+  const auto t = oneLight(light, m, LightingModel::Phong, s);
+  const Real c30 = std::sqrt(Real(3)) / 2;
+  expectColor(t.emission, {0, 0, 0});
+  expectColor(t.ambient, {0.36, 0.81, 0.02});
+  expectColor(t.diffuse, {0.24 * c30, 1.0 * c30, 0.8 * c30});
+  expectColor(t.specular, {0.0, 1.0, 0.6});
+  expectColor(Color3(clampedColor(t, m)), {0.36 + 0.24 * c30, 1, 1});
+}
+
+TEST(BlinnPhong, PeakWhereNEqualsH) {
+  // Light 40° from N; sweep the viewer in the plane of incidence. N·H = 1 exactly when V is L
+  // mirrored about N, at −40°.
+  const EyeLight light = directional(dirAt(40));
+  Real best = -1, bestAngle = 0;
+  for (int a = -89; a <= 89; ++a) {
+    const SurfaceGeometry s{Vec3(0), Vec3(0, 0, 1), dirAt(Real(a))};
+    const Real spec = oneLight(light, whiteMaterial(30), LightingModel::BlinnPhong, s).specular.r;
+    if (spec > best) { best = spec; bestAngle = Real(a); }
+  }
+  EXPECT_EQ(bestAngle, -40);
+  EXPECT_NEAR(best, 1, kTol);
+}
+
+TEST(BlinnPhong, HalfwayVectorClosedForm) {
+  // L at 60°, V at 0°: H is 30° from N, so the lobe is cos(30°)^n.
+  const SurfaceGeometry s{Vec3(0), Vec3(0, 0, 1), Vec3(0, 0, 1)};
+  const Real spec = oneLight(directional(dirAt(60)), whiteMaterial(8), LightingModel::BlinnPhong, s).specular.r;
+  EXPECT_NEAR(spec, std::pow(std::cos(glm::radians(Real(30))), Real(8)), kTol);
+}
+
+TEST(Phong, ReflectionVectorClosedForm) {
+  // L at 30°: R at −30°; V at 0° is 30° from R, so the lobe is cos(30°)^n.
+  const SurfaceGeometry s{Vec3(0), Vec3(0, 0, 1), Vec3(0, 0, 1)};
+  const Real spec = oneLight(directional(dirAt(30)), whiteMaterial(5), LightingModel::Phong, s).specular.r;
+  EXPECT_NEAR(spec, std::pow(std::cos(glm::radians(Real(30))), Real(5)), kTol);
+  // Beyond 90° between R and V nothing is reflected.
+  const SurfaceGeometry far{Vec3(0), Vec3(0, 0, 1), dirAt(80)};
+  EXPECT_EQ(oneLight(directional(dirAt(30)), whiteMaterial(5), LightingModel::Phong, far).specular.r, 0);
+}
+
+TEST(Specular, ZeroWhenLightIsBehindTheSurface) {
+  // N·L < 0: f = 0, even with shininess 0 where the lobe alone would be 0^0 = 1.
+  const SurfaceGeometry s{Vec3(0), Vec3(0, 0, 1), Vec3(0, 0, 1)};
+  for (LightingModel model : {LightingModel::BlinnPhong, LightingModel::Phong}) {
+    EXPECT_EQ(oneLight(directional(dirAt(100)), whiteMaterial(0), model, s).specular.r, 0);
+    EXPECT_EQ(oneLight(directional(dirAt(90)), whiteMaterial(0), model, s).specular.r, 0);
+  }
+}
+
+TEST(Specular, ZeroToTheZeroIsOne) {
+  // Shininess 0 with N·H = 0 (H ⟂ N): GL defines 0^0 = 1, so the full specular colour shows.
+  EXPECT_EQ(Fs_BlinnPhong(0, 0), 1);
+  EXPECT_EQ(Fs_Phong(0, 0), 1);
+  EXPECT_EQ(Fs_BlinnPhong(Real(-0.5), 0), 1);
+  // L at 45° and V at 135° give H = (L+V)/|L+V| ⟂ N.
+  const SurfaceGeometry s{Vec3(0), Vec3(0, 0, 1), dirAt(135)};
+  const auto t = oneLight(directional(dirAt(45)), whiteMaterial(0), LightingModel::BlinnPhong, s);
+  EXPECT_NEAR(t.specular.r, 1, kTol);
+  // With any positive shininess the same geometry reflects nothing.
+  EXPECT_NEAR(oneLight(directional(dirAt(45)), whiteMaterial(1), LightingModel::BlinnPhong, s).specular.r, 0, kTol);
+}
+
+TEST(Specular, LightOppositeViewerIsDefined) {
+  // L = −V leaves H undefined; illum takes N·H = 0: no NaN, no highlight for n > 0.
+  const SurfaceGeometry s{Vec3(0), Vec3(0, 0, 1), -dirAt(30)};
+  const auto t = oneLight(directional(dirAt(30)), whiteMaterial(10), LightingModel::BlinnPhong, s);
+  EXPECT_EQ(t.specular.r, 0);
+  EXPECT_FALSE(std::isnan(t.sum().r));
+}
+
+TEST(Attenuation, AtDistanceTwo) {
+  EXPECT_NEAR(distanceAttenuation({1, 0, 0}, 2), 1, kTol);
+  EXPECT_NEAR(distanceAttenuation({0, 1, 0}, 2), 0.5, kTol);
+  EXPECT_NEAR(distanceAttenuation({0, 0, 1}, 2), 0.25, kTol);  // the inverse-square law I/r²
+  EXPECT_NEAR(distanceAttenuation({1, 1, 1}, 2), 1.0 / 7, kTol);
+  // Through the equation: a positional light 2 units straight above the point.
+  EyeLight light;
+  light.position = {0, 0, 2, 1};
+  light.attenuation = {0, 0, 1};
+  light.ambient = {1, 1, 1};
+  Material m = whiteMaterial();
+  m.ambient = {1, 1, 1, 1};
+  const auto t = oneLight(light, m, LightingModel::Lambert, {Vec3(0), Vec3(0, 0, 1), Vec3(0, 0, 1)});
+  EXPECT_NEAR(t.diffuse.r, 0.25, kTol);
+  EXPECT_NEAR(t.ambient.r, 0.25, kTol);  // the light's ambient is attenuated too
+}
+
+TEST(Attenuation, OnlyForPositionalLights) {
+  EyeLight light = directional(Vec3(0, 0, 5));
+  light.attenuation = {0, 0, 1};
+  const auto t = oneLight(light, whiteMaterial(), LightingModel::Lambert, {Vec3(0, 0, -10), Vec3(0, 0, 1), Vec3(0, 0, 1)});
+  EXPECT_NEAR(t.diffuse.r, 1, kTol);
+}
+
+EyeLight spotAbove(Real cutoff, Real exponent) {
+  Light l;
+  l.position = {0, 0, 1, 1};
+  l.spotDirection = {0, 0, -1};
+  l.spotCutoff = cutoff;
+  l.spotExponent = exponent;
+  l.ambient = {1, 1, 1};
+  return toEyeSpace(l, Mat4(1));
+}
+
+TEST(Spot, ConeEdge) {
+  // A spot 1 unit above the plane z = 0 pointing down with a 30° cone: the edge is at
+  // x = tan 30°. Just inside is lit with cos^e, just outside nothing, ambient included.
+  const EyeLight light = spotAbove(30, 2);
+  const Material m = whiteMaterial();
+  const Real edge = std::tan(glm::radians(Real(30)));
+  const auto inside = oneLight(light, m, LightingModel::Lambert, {Vec3(edge * Real(0.99), 0, 0), Vec3(0, 0, 1), Vec3(0, 0, 1)});
+  const auto outside = oneLight(light, m, LightingModel::Lambert, {Vec3(edge * Real(1.01), 0, 0), Vec3(0, 0, 1), Vec3(0, 0, 1)});
+  const Real cosInside = 1 / std::sqrt(1 + (edge * Real(0.99)) * (edge * Real(0.99)));
+  EXPECT_NEAR(inside.diffuse.r, cosInside * cosInside * cosInside, kTol);  // spot cos² × Lambert cos
+  EXPECT_EQ(outside.diffuse.r, 0);
+  EXPECT_EQ(outside.ambient.r, 0);  // the light's ambient is spotted too
+  EXPECT_EQ(spotFactor(Real(0.5), Real(0.6), 1), 0);
+  EXPECT_NEAR(spotFactor(Real(0.7), Real(0.6), 2), 0.49, kTol);
+}
+
+TEST(Spot, AppliesToDirectionalLights) {
+  Light l;
+  l.position = {0, 0, 1, 0};
+  l.spotCutoff = 45;
+  l.spotDirection = {1, 0, 0};  // −L·S = 0: outside a 45° cone
+  const auto t = oneLight(toEyeSpace(l, Mat4(1)), whiteMaterial(), LightingModel::Lambert, {Vec3(0), Vec3(0, 0, 1), Vec3(0, 0, 1)});
+  EXPECT_EQ(t.diffuse.r, 0);
+  l.spotDirection = {0, 0, -1};  // −L·S = 1: on the axis
+  const auto lit = oneLight(toEyeSpace(l, Mat4(1)), whiteMaterial(), LightingModel::Lambert, {Vec3(0), Vec3(0, 0, 1), Vec3(0, 0, 1)});
+  EXPECT_NEAR(lit.diffuse.r, 1, kTol);
+}
+
+TEST(Spot, NoSpotAtCutoff180) {
+  const EyeLight light = spotAbove(180, 128);
+  const auto t = oneLight(light, whiteMaterial(), LightingModel::Lambert, {Vec3(100, 0, 0), Vec3(-1, 0, 0), Vec3(0, 0, 1)});
+  EXPECT_GT(t.diffuse.r, 0);
+}
+
+TEST(Viewer, LocalVersusInfinite) {
+  EXPECT_EQ(viewerDirection(Vec3(3, 4, -5), false), Vec3(0, 0, 1));
+  const Vec3 v = viewerDirection(Vec3(3, 0, -4), true);
+  expectColor(v, {-0.6, 0, 0.8});
+  // At the eye itself the direction is undefined; the infinite viewer's is taken.
+  EXPECT_EQ(viewerDirection(Vec3(0), true), Vec3(0, 0, 1));
+}
+
+TEST(Equation, EmissionAndGlobalAmbientAndClamp) {
+  Material m;
+  m.emission = {0.1, 0.2, 0.3, 1};
+  m.ambient = {0.5, 0.5, 0.5, 1};
+  m.diffuse = {1, 1, 1, 0.25};
+  LightModel lm;  // default global ambient 0.2
+  const EyeLight light = directional({0, 0, 1});
+  const auto t = evaluateTerms({&light, 1}, lm, m, LightingModel::BlinnPhong, {Vec3(0), Vec3(0, 0, 1), Vec3(0, 0, 1)});
+  expectColor(t.emission, {0.1, 0.2, 0.3});
+  expectColor(t.ambient, {0.1, 0.1, 0.1});
+  const Color4 c = clampedColor(t, m);
+  EXPECT_EQ(c.r, 1);  // 0.1 + 0.1 + 1 clamps
+  EXPECT_NEAR(c.a, 0.25, kTol);  // alpha is the diffuse material's
+}
+
+TEST(Equation, SeveralColouredLightsAddPerChannel) {
+  EyeLight red = directional({0, 0, 1}), blue = directional({0, 0, 1});
+  red.diffuse = {1, 0, 0};
+  blue.diffuse = {0, 0, 0.5};
+  const std::vector<EyeLight> lights = {red, blue};
+  LightModel lm;
+  lm.ambient = Color3(0);
+  const auto t = evaluateTerms(lights, lm, whiteMaterial(), LightingModel::Lambert, {Vec3(0), Vec3(0, 0, 1), Vec3(0, 0, 1)});
+  expectColor(t.diffuse, {1, 0, 0.5});
+}
+
+TEST(Lights, TransformedToEyeSpaceLikeGlLight) {
+  // A view that turns the world 90° about Y and moves it 5 units away.
+  Mat4 view = glm::translate(Mat4(1), Vec3(0, 0, -5));
+  view = glm::rotate(view, glm::radians(Real(90)), Vec3(0, 1, 0));
+  Light l;
+  l.position = {1, 0, 0, 1};
+  l.spotDirection = {0, 0, -2};
+  const EyeLight e = toEyeSpace(l, view);
+  EXPECT_NEAR(e.position.x, 0, kTol);
+  EXPECT_NEAR(e.position.z, -6, kTol);
+  EXPECT_NEAR(e.position.w, 1, kTol);
+  expectColor(e.spotDirection, {-1, 0, 0});  // upper 3×3 only, then normalized
+  EXPECT_NEAR(e.spotCosCutoff, -2, kTol);  // no spot
+}
+
+TEST(Models, ParseAndName) {
+  EXPECT_EQ(parseLightingModel("phong"), LightingModel::Phong);
+  EXPECT_EQ(parseLightingModel("Phong"), std::nullopt);
+  EXPECT_EQ(toString(LightingModel::BlinnPhong), "blinn-phong");
+  EXPECT_EQ(parseShading("gouraud"), Shading::Gouraud);
+  EXPECT_EQ(toString(Shading::Flat), "flat");
+}
+
+}  // namespace
+}  // namespace illum
