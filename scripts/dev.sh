@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# One entry point for a fresh Debian 12 machine:
+#   scripts/dev.sh run    install what is missing, build Release, render the built-in scene
+#   scripts/dev.sh test   install what is missing, build, run the whole test suite
+#                         (Release, then again under -fsanitize=address,undefined)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+# Debian packages only (docs/dependencies.md): nothing vendored, nothing downloaded at build time.
+PACKAGES=(
+  g++ cmake make pkg-config
+  libglm-dev nlohmann-json3-dev libcli11-dev libstb-dev libassimp-dev
+  libgtest-dev libosmesa6-dev assimp-testmodels
+)
+
+install_packages() {
+  local missing=()
+  for p in "${PACKAGES[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+  [ ${#missing[@]} -eq 0 ] && return 0
+  echo "illum: installing ${missing[*]}"
+  local sudo=()
+  [ "$(id -u)" -ne 0 ] && sudo=(sudo)
+  "${sudo[@]}" apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+}
+
+jobs=$(nproc 2>/dev/null || echo 2)
+
+build() {  # build DIR [cmake args...]
+  local dir=$1
+  shift
+  cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
+  cmake --build "$dir" -j "$jobs"
+}
+
+case "${1:-}" in
+  run)
+    install_packages
+    build build
+    ./build/apps/illum/illum render -o illum.png
+    ;;
+  test)
+    install_packages
+    build build
+    (cd build && ctest --output-on-failure -j "$jobs")
+    echo "illum: the same suite under AddressSanitizer and UndefinedBehaviorSanitizer"
+    build build-asan -DILLUM_SANITIZE=ON
+    (cd build-asan && ASAN_OPTIONS=detect_leaks=1 LSAN_OPTIONS=suppressions=$PWD/../tests/lsan.supp \
+      UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j "$jobs")
+    ;;
+  *)
+    echo "usage: scripts/dev.sh run|test" >&2
+    exit 2
+    ;;
+esac
