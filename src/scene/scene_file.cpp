@@ -222,12 +222,18 @@ Scene parseScene(const std::string& text, const std::string& name, const std::fi
     root = Json::parse(text);
   } catch (const Json::parse_error& e) {
     throw InputError(name + ": " + describeParseError(e, text));
+  } catch (const Json::out_of_range& e) {
+    // nlohmann reports a number too large for a double (1e999) this way.
+    std::string why = e.what();
+    if (auto p = why.find("] "); p != std::string::npos) why = why.substr(p + 2);
+    throw InputError(name + ": invalid JSON: " + why + " (expected a finite number)");
   }
   const JsonReader j(root, name);
   j.expectObject({"version", "width", "height", "background", "model", "shading", "camera",
                   "light_model", "lights", "objects"});
   Scene s;
-  if (j.has("version") && j.at("version").integer(1, 1000) != 1) j.at("version").fail("expected version 1");
+  if (j.has("version") && j.at("version").integer(0, std::numeric_limits<int>::max()) != 1)
+    j.at("version").fail("expected version 1");
   if (j.has("width")) s.width = j.at("width").integer(1, kMaxImageSize);
   if (j.has("height")) s.height = j.at("height").integer(1, kMaxImageSize);
   if (j.has("background")) s.background = j.at("background").color34();

@@ -102,8 +102,8 @@ void accumulateLight(LightingTerms& terms, const EyeLight& light, const Material
   if (model == LightingModel::BlinnPhong) {
     Vec3 H = L + V;
     Real len = glm::length(H);
-    // L = −V leaves H undefined; illum takes N·H = 0 (so only 0^0 = 1 survives).
-    Real NoH = len > 0 ? glm::dot(N, H) / len : Real(0);
+    // L = −V (up to rounding) leaves H undefined; illum takes N·H = 0 (so only 0^0 = 1 survives).
+    Real NoH = len > Real(1e-6) ? glm::dot(N, H) / len : Real(0);
     lobe = Fs_BlinnPhong(NoH, material.shininess);
   } else {
     Vec3 R = Real(2) * NoL * N - L;

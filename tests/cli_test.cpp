@@ -1,0 +1,184 @@
+// The CLI as a user runs it: exit codes, messages, output files.
+#include <illum/image.h>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sys/wait.h>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct RunResult {
+  int exitCode = -1;
+  std::string out, err;
+};
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+RunResult run(const std::string& args) {
+  const fs::path errFile = fs::temp_directory_path() / ("illum_cli_err_" + std::to_string(::getpid()));
+  const std::string cmd = std::string(ILLUM_CLI) + " " + args + " 2>" + errFile.string();
+  RunResult r;
+  FILE* pipe = ::popen(cmd.c_str(), "r");
+  std::array<char, 4096> buf{};
+  std::size_t n = 0;
+  while ((n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0) r.out.append(buf.data(), n);
+  const int status = ::pclose(pipe);
+  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.err = slurp(errFile);
+  fs::remove(errFile);
+  return r;
+}
+
+class TempDir {
+ public:
+  TempDir() {
+    path_ = fs::temp_directory_path() / ("illum_cli_" + std::to_string(::getpid()) + "_" +
+                                         testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(path_);
+    fs::create_directories(path_);
+  }
+  ~TempDir() { fs::remove_all(path_); }
+  fs::path operator/(const std::string& name) const { return path_ / name; }
+  std::size_t fileCount() const { return std::size_t(std::distance(fs::directory_iterator(path_), fs::directory_iterator())); }
+
+ private:
+  fs::path path_;
+};
+
+const char* kSeedExercise =
+    "eval --model phong --distance 1 --angle-nl 30 --angle-rv 0 --light-ambient 0.4,0.9,0.2 "
+    "--light-diffuse 0.3,1,1 --light-specular 1,1,1 --material-ambient 0.9,0.9,0.1 "
+    "--material-diffuse 0.8,1,0.8 --material-specular 0,1,0.6 --shininess 2";
+
+TEST(CliEval, AnswersTheSeedExercise) {
+  const RunResult r = run(kSeedExercise);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("Emission      0.0000    0.0000    0.0000"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("Ambient       0.3600    0.8100    0.0200"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("Diffuse       0.2078    0.8660    0.6928"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("Specular      0.0000    1.0000    0.6000"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("Total         0.5678    1.0000    1.0000"), std::string::npos) << r.out;
+}
+
+TEST(CliEval, JsonTermsUnclampedTotalClamped) {
+  const RunResult r = run(std::string(kSeedExercise) + " --json");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_NEAR(j["diffuse"][1].get<double>(), std::sqrt(3.0) / 2, 1e-5);
+  EXPECT_NEAR(j["specular"][2].get<double>(), 0.6, 1e-6);
+  EXPECT_NEAR(j["total"][0].get<double>(), 0.36 + 0.24 * std::sqrt(3.0) / 2, 1e-5);
+  EXPECT_EQ(j["total"][1].get<double>(), 1.0);
+}
+
+TEST(CliEval, BlinnPhongAnglesAndAttenuation) {
+  // N·H at 0° puts the highlight at its peak; 1/(0 + 0·2 + 1·2²) = 1/4.
+  const RunResult r = run("eval --angle-nl 60 --angle-nh 0 --material-specular 1,1,1 --shininess 10 "
+                          "--material-ambient 0,0,0 --distance 2 --attenuation 0,0,1 --json");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_NEAR(j["specular"][0].get<double>(), 0.25, 1e-6);
+  EXPECT_NEAR(j["diffuse"][0].get<double>(), 0.8 * 0.5 * 0.25, 1e-6);
+}
+
+TEST(CliEval, VectorsAreNormalized) {
+  const RunResult r = run("eval --model lambert --normal 0,0,2 --to-light 0,3,3 --to-viewer 0,0,5 --json");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NEAR(nlohmann::json::parse(r.out)["diffuse"][0].get<double>(), 0.8 * std::sqrt(0.5), 1e-6);
+}
+
+TEST(CliEval, LightOppositeViewerIsDefined) {
+  const RunResult r = run("eval --normal 0,0,1 --to-light 1,0,1 --to-viewer -1,0,-1 --material-specular 1,1,1 "
+                          "--shininess 5 --json");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(r.out.find("nan"), std::string::npos);
+  EXPECT_EQ(nlohmann::json::parse(r.out)["specular"][0].get<double>(), 0.0);
+}
+
+TEST(CliEval, BadInputIsRefusedClearly) {
+  const RunResult zero = run("eval --normal 0,0,0");
+  EXPECT_EQ(zero.exitCode, 2);
+  EXPECT_EQ(zero.err, "illum: error: --normal: expected a non-zero vector, got \"0,0,0\"\n");
+  const RunResult wrongAngle = run("eval --model phong --angle-nh 10");
+  EXPECT_EQ(wrongAngle.exitCode, 2);
+  EXPECT_NE(wrongAngle.err.find("--angle-nh"), std::string::npos);
+  const RunResult impossible = run("eval --angle-nl 10 --angle-nh 120");
+  EXPECT_EQ(impossible.exitCode, 2);
+  EXPECT_NE(impossible.err.find("within 90° of L"), std::string::npos);
+  const RunResult colour = run("eval --light-diffuse 1,1");
+  EXPECT_EQ(colour.exitCode, 2);
+  EXPECT_NE(colour.err.find("--light-diffuse: expected a colour R,G,B"), std::string::npos);
+  const RunResult mixed = run("eval --angle-nl 10 --normal 0,0,1");
+  EXPECT_EQ(mixed.exitCode, 2);
+  const RunResult unknown = run("eval --frobnicate");
+  EXPECT_EQ(unknown.exitCode, 2);
+  EXPECT_EQ(unknown.err.rfind("illum: error: ", 0), 0u);
+}
+
+TEST(CliRender, DefaultSceneWritesAPng) {
+  TempDir dir;
+  const RunResult r = run("render -o " + (dir / "out.png").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const illum::Image img = illum::readPng(dir / "out.png");
+  EXPECT_EQ(img.width, 960);
+  EXPECT_EQ(img.height, 540);
+  EXPECT_EQ(dir.fileCount(), 1u);  // no temporary file left behind
+}
+
+TEST(CliRender, OverridesApply) {
+  TempDir dir;
+  const RunResult r = run("render --width 64 --height 32 --model lambert --shading flat --background 1,0,0 -o " +
+                          (dir / "small.png").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const illum::Image img = illum::readPng(dir / "small.png");
+  EXPECT_EQ(img.width, 64);
+  EXPECT_EQ(img.height, 32);
+  EXPECT_EQ(img.pixel(0, 0)[0], 255);  // the red background in the top-left corner
+}
+
+TEST(CliRender, BadSceneFailsCleanlyAndKeepsTheOldOutput) {
+  TempDir dir;
+  std::ofstream(dir / "bad.json") << R"({"lights": [{}, {}, {"attenuation": [1, 0]}]})";
+  std::ofstream(dir / "out.png") << "previous picture";
+  const RunResult r = run("render " + (dir / "bad.json").string() + " -o " + (dir / "out.png").string());
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_EQ(r.err, "illum: error: " + (dir / "bad.json").string() + ": /lights/2/attenuation: expected 3 numbers, got 2\n");
+  EXPECT_EQ(slurp(dir / "out.png"), "previous picture");
+  EXPECT_EQ(dir.fileCount(), 2u);
+}
+
+TEST(CliRender, MissingSceneFails) {
+  TempDir dir;
+  const RunResult r = run("render " + (dir / "nope.json").string() + " -o " + (dir / "out.png").string());
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("cannot open the scene file"), std::string::npos);
+  EXPECT_FALSE(fs::exists(dir / "out.png"));
+}
+
+TEST(CliRender, UnwritableOutputFailsCleanly) {
+  TempDir dir;
+  const RunResult r = run("render --width 8 --height 8 -o " + (dir / "no/such/folder/out.png").string());
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find("does not exist"), std::string::npos) << r.err;
+  const RunResult d = run("render --width 8 --height 8 -o " + (dir / "").string());
+  EXPECT_EQ(d.exitCode, 1);
+  EXPECT_EQ(dir.fileCount(), 0u);
+}
+
+TEST(CliRender, SameBytesEveryRun) {
+  TempDir dir;
+  ASSERT_EQ(run("render -o " + (dir / "a.png").string()).exitCode, 0);
+  ASSERT_EQ(run("render -o " + (dir / "b.png").string()).exitCode, 0);
+  EXPECT_EQ(slurp(dir / "a.png"), slurp(dir / "b.png"));
+}
+
+}  // namespace
