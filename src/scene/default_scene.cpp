@@ -38,7 +38,7 @@ Scene defaultScene() {
   key.position = {-4, 5, 6, 1};
   key.diffuse = {1.0, 0.93, 0.8};
   key.specular = {1, 1, 1};
-  key.attenuation = {0.6, 0.03, 0.004};
+  key.attenuation = {0.7, 0.04, 0.008};
   Light fill;  // cool directional fill from the right
   fill.position = {1, 0.3, 0.4, 0};
   fill.diffuse = {0.2, 0.3, 0.5};
@@ -77,7 +77,7 @@ Scene defaultScene() {
   floor.normals.assign(4, Vec3(0, 1, 0));
   floor.indices = {0, 3, 2, 0, 2, 1};
   s.objects.push_back(object(std::move(floor), Mat4(1),
-                             material({0.15, 0.15, 0.15}, {0.55, 0.55, 0.55}, {0.2, 0.2, 0.2}, 20)));
+                             material({0.12, 0.12, 0.13}, {0.42, 0.42, 0.45}, {0.25, 0.25, 0.25}, 30)));
   return s;
 }
 
