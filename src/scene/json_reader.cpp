@@ -80,6 +80,12 @@ Real JsonReader::positive() const {
   return v;
 }
 
+Real JsonReader::nonNegative() const {
+  const Real v = number(-std::numeric_limits<Real>::max(), std::numeric_limits<Real>::max());
+  if (!(v >= 0)) fail("expected a number ≥ 0, got " + formatReal(v));
+  return v;
+}
+
 int JsonReader::integer(int min, int max) const {
   if (!value_.is_number()) fail("expected an integer, got " + describe());
   const double v = value_.get<double>();

@@ -36,6 +36,7 @@ class JsonReader {
   // Scalars.
   Real number(Real min, Real max) const;  // inclusive range, finite
   Real positive() const;                  // > 0, finite
+  Real nonNegative() const;               // ≥ 0, finite
   int integer(int min, int max) const;
   bool boolean() const;
   std::string string() const;

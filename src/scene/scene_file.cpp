@@ -61,7 +61,7 @@ Light readLight(const JsonReader& j) {
   if (j.has("attenuation")) {
     const JsonReader a = j.at("attenuation");
     a.numbers(3);
-    l.attenuation = {a.item(0).number(0, kBig), a.item(1).number(0, kBig), a.item(2).number(0, kBig)};
+    l.attenuation = {a.item(0).nonNegative(), a.item(1).nonNegative(), a.item(2).nonNegative()};
     if (l.attenuation == Vec3(0)) a.fail("expected at least one positive coefficient (1/(0+0d+0d²) is infinite)");
   }
   if (j.has("spot_direction")) {
@@ -83,7 +83,7 @@ Material readMaterial(const JsonReader& j) {
   if (j.has("diffuse")) m.diffuse = j.at("diffuse").color34();
   if (j.has("specular")) m.specular = j.at("specular").color34();
   if (j.has("emission")) m.emission = j.at("emission").color34();
-  if (j.has("shininess")) m.shininess = j.at("shininess").number(0, kBig);
+  if (j.has("shininess")) m.shininess = j.at("shininess").nonNegative();
   return m;
 }
 

@@ -141,8 +141,9 @@ TEST(SceneRejects, WrongTypes) {
 TEST(SceneRejects, NonFiniteNumbers) {
   EXPECT_EQ(errorOf(R"({"camera": {"eye": [0, 0, 1e999]}})"),
             "scene.json: invalid JSON: number overflow parsing '1e999' (expected a finite number)");
-  EXPECT_EQ(errorOf(R"({"lights": [{"position": [0, 0, 1e40, 0]}]})"),
-            "scene.json: /lights/0/position/2: expected a finite number");  // overflows float
+  if constexpr (sizeof(Real) == sizeof(float))
+    EXPECT_EQ(errorOf(R"({"lights": [{"position": [0, 0, 1e40, 0]}]})"),
+              "scene.json: /lights/0/position/2: expected a finite number");  // overflows float
 }
 
 TEST(SceneRejects, NegativeSizesAndOutOfRange) {
@@ -161,9 +162,9 @@ TEST(SceneRejects, NegativeSizesAndOutOfRange) {
                 "scene.json: /lights/0/attenuation: expected at least one positive coefficient", 0),
             0u);
   EXPECT_EQ(errorOf(R"({"lights": [{"attenuation": [1, -1, 0]}]})"),
-            "scene.json: /lights/0/attenuation/1: expected a number in [0, 3.40282e+38], got -1");
+            "scene.json: /lights/0/attenuation/1: expected a number ≥ 0, got -1");
   EXPECT_EQ(errorOf(R"({"objects": [{"material": {"shininess": -2}}]})"),
-            "scene.json: /objects/0/material/shininess: expected a number in [0, 3.40282e+38], got -2");
+            "scene.json: /objects/0/material/shininess: expected a number ≥ 0, got -2");
   EXPECT_EQ(errorOf(R"({"objects": [{"mesh": {"type": "sphere", "slices": 2}}]})"),
             "scene.json: /objects/0/mesh/slices: expected an integer in [3, 4096], got 2");
   EXPECT_EQ(errorOf(R"({"version": 2})"), "scene.json: /version: expected version 1");
