@@ -57,16 +57,14 @@ Vec3 parseVec3(const std::string& option, const std::string& text) {
 
 Vec3 parseColor(const std::string& option, const std::string& text, bool unitRange) {
   if (!text.empty() && text[0] == '#') {
-    // #rrggbb: sRGB-encoded bytes, decoded to the linear values the lighting uses.
+    // #rrggbb: the bytes themselves. illum, like GL without an sRGB framebuffer, writes colours
+    // to the image as round(c·255), so #rrggbb gives exactly those bytes back.
     unsigned value = 0;
     auto [ptr, ec] = std::from_chars(text.data() + 1, text.data() + text.size(), value, 16);
     if (text.size() != 7 || ec != std::errc() || ptr != text.data() + text.size())
       throw InputError(option + ": expected a colour R,G,B or #rrggbb, got \"" + text + "\"");
     Vec3 c;
-    for (int i = 0; i < 3; ++i) {
-      const double s = double((value >> (16 - 8 * i)) & 0xffu) / 255.0;
-      c[i] = Real(s <= 0.04045 ? s / 12.92 : std::pow((s + 0.055) / 1.055, 2.4));
-    }
+    for (int i = 0; i < 3; ++i) c[i] = Real((value >> (16 - 8 * i)) & 0xffu) / Real(255);
     return c;
   }
   const auto parts = split(text);

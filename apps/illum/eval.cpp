@@ -167,7 +167,7 @@ Command addEvalCommand(CLI::App& app) {
       "  illum eval --model phong --distance 1 --angle-nl 30 --angle-rv 0 \\\n"
       "    --light-ambient 0.4,0.9,0.2 --light-diffuse 0.3,1,1 --light-specular 1,1,1 \\\n"
       "    --material-ambient 0.9,0.9,0.1 --material-diffuse 0.8,1,0.8 --material-specular 0,1,0.6 --shininess 2\n"
-      "Colours are R,G,B (linear, each ≥ 0) or #rrggbb (sRGB, decoded to linear).");
+      "Colours are R,G,B (each ≥ 0) or #rrggbb (bytes / 255).");
   cmd->add_option("--model", o->model, "Lighting model: blinn-phong, phong or lambert")->capture_default_str();
   cmd->add_option("--light-ambient", o->lightAmbient, "Light ambient colour R,G,B [0,0,0]");
   cmd->add_option("--light-diffuse", o->lightDiffuse, "Light diffuse colour R,G,B [1,1,1]");

@@ -1,4 +1,5 @@
-// `illum render [SCENE.json] [-o OUT.png]`: render a scene file, or the built-in scene, to PNG.
+// `illum render [SCENE.json | MODEL] [-o OUT.png]`: render a scene file, a model file (any format
+// assimp reads, framed and lit automatically), or with neither the built-in scene, to PNG.
 #include <illum/error.h>
 #include <illum/image.h>
 #include <illum/render.h>
@@ -6,7 +7,12 @@
 
 #include "cli_values.h"
 #include "commands.h"
+#include <illum/framing.h>
+#include <illum/import.h>
 
+#include <sys/resource.h>
+
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -15,19 +21,179 @@
 namespace illum::cli {
 namespace {
 
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
 struct RenderOptions {
-  std::string scene;
+  std::string input;
   std::string output = "illum.png";
   std::optional<int> width, height;
+  std::string resolution;
   std::string model, shading, background;
+  bool noBackground = false;
+  // Model files (f3d's names).
+  std::string up, cameraPosition, cameraFocalPoint, cameraViewUp;
+  std::optional<double> viewAngle, azimuth, elevation, zoom, lightIntensity, creaseAngle;
+  bool orthographic = false;
+  std::string normals;
   bool verbose = false;
 };
 
-int runRender(const RenderOptions& o) {
-  const auto start = std::chrono::steady_clock::now();
-  Scene scene = o.scene.empty() ? defaultScene() : loadSceneFile(o.scene);
-  if (o.width) scene.width = *o.width;
-  if (o.height) scene.height = *o.height;
+bool isSceneFile(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext == ".json";
+}
+
+Vec3 parseUp(const std::string& text) {
+  if (text.size() == 2 && (text[0] == '+' || text[0] == '-')) {
+    const Real s = text[0] == '+' ? 1 : -1;
+    switch (std::toupper(static_cast<unsigned char>(text[1]))) {
+      case 'X': return {s, 0, 0};
+      case 'Y': return {0, s, 0};
+      case 'Z': return {0, 0, s};
+      default: break;
+    }
+  }
+  throw InputError("--up: expected one of +X, -X, +Y, -Y, +Z, -Z, got \"" + text + "\"");
+}
+
+void parseResolution(const std::string& text, RenderOptions& o) {
+  const auto comma = text.find(',');
+  const auto dimension = [&](const std::string& part) {
+    const Real v = parseNumber("--resolution", part, 1, 16384);
+    if (v != std::floor(v)) throw InputError("--resolution: expected whole pixels W,H, got \"" + text + "\"");
+    return int(v);
+  };
+  if (comma == std::string::npos) throw InputError("--resolution: expected W,H, got \"" + text + "\"");
+  o.width = dimension(text.substr(0, comma));
+  o.height = dimension(text.substr(comma + 1));
+}
+
+Real finitePositive(const char* option, double v) {
+  if (!std::isfinite(v) || v <= 0) throw InputError(std::string(option) + ": expected a positive number, got " + std::to_string(v));
+  return Real(v);
+}
+
+ImportOptions importOptions(const RenderOptions& o) {
+  ImportOptions io;
+  if (!o.normals.empty()) {
+    if (o.normals == "auto") io.normals = NormalMode::Auto;
+    else if (o.normals == "flat") io.normals = NormalMode::Flat;
+    else if (o.normals == "smooth") io.normals = NormalMode::Smooth;
+    else if (o.normals == "file") io.normals = NormalMode::File;
+    else throw InputError("--normals: expected auto, flat, smooth or file, got \"" + o.normals + "\"");
+  }
+  if (o.creaseAngle) {
+    if (!std::isfinite(*o.creaseAngle) || *o.creaseAngle < 0 || *o.creaseAngle > 180)
+      throw InputError("--crease-angle: expected degrees in [0, 180]");
+    io.creaseAngle = Real(*o.creaseAngle);
+  }
+  return io;
+}
+
+ViewOptions viewOptions(const RenderOptions& o) {
+  ViewOptions v;
+  if (!o.up.empty()) v.up = parseUp(o.up);
+  if (o.azimuth) v.azimuth = Real(*o.azimuth);
+  if (o.elevation) v.elevation = Real(*o.elevation);
+  if (o.zoom) v.zoom = finitePositive("--camera-zoom-factor", *o.zoom);
+  if (o.viewAngle) {
+    v.viewAngle = Real(*o.viewAngle);
+    if (!(v.viewAngle > 0 && v.viewAngle < 180)) throw InputError("--camera-view-angle: expected degrees strictly between 0 and 180");
+  }
+  v.orthographic = o.orthographic;
+  return v;
+}
+
+// Options that place the camera explicitly apply to scene files too.
+void applyExplicitCamera(const RenderOptions& o, Camera& cam) {
+  if (!o.cameraPosition.empty()) cam.eye = parseVec3("--camera-position", o.cameraPosition);
+  if (!o.cameraFocalPoint.empty()) cam.center = parseVec3("--camera-focal-point", o.cameraFocalPoint);
+  if (!o.cameraViewUp.empty()) cam.up = parseVec3("--camera-view-up", o.cameraViewUp);
+  if (o.viewAngle) cam.fovy = viewOptions(o).viewAngle;
+  if (o.orthographic && cam.projection != Projection::Orthographic) {
+    // Keep the picture's scale at the focal point: the height the perspective view shows there.
+    cam.viewHeight = 2 * glm::length(cam.center - cam.eye) * std::tan(glm::radians(cam.fovy) / 2);
+    cam.projection = Projection::Orthographic;
+  }
+  const Vec3 forward = cam.center - cam.eye;
+  if (glm::length(forward) == 0) throw InputError("--camera-position: expected a point apart from the focal point");
+  if (glm::length(glm::cross(forward, cam.up)) <= Real(1e-6) * glm::length(forward) * glm::length(cam.up))
+    throw InputError("--camera-view-up: expected a direction not parallel to the view direction");
+}
+
+Scene modelScene(const RenderOptions& o, ImportedModel& model) {
+  Scene s;
+  s.width = o.width.value_or(1000);
+  s.height = o.height.value_or(600);
+  s.background = {0.18, 0.19, 0.21, 1};
+  ViewOptions view = viewOptions(o);
+  if (!o.cameraPosition.empty()) view.position = parseVec3("--camera-position", o.cameraPosition);
+  if (!o.cameraFocalPoint.empty()) view.focalPoint = parseVec3("--camera-focal-point", o.cameraFocalPoint);
+  if (!o.cameraViewUp.empty()) view.viewUp = parseVec3("--camera-view-up", o.cameraViewUp);
+  s.camera = frameBounds(model.boundsMin, model.boundsMax, view, Real(s.width) / Real(s.height));
+  applyExplicitCamera(RenderOptions{}, s.camera);  // validates the framed camera
+  const Real intensity = o.lightIntensity ? Real(*o.lightIntensity) : Real(1);
+  if (!std::isfinite(intensity) || intensity < 0) throw InputError("--light-intensity: expected a number ≥ 0");
+  s.lights = cameraLightRig(s.camera, intensity);
+  s.lightModel.ambient = cameraRigAmbient(intensity);
+  // Flipped faces are common in the wild; light both sides so they are never black.
+  s.lightModel.twoSided = true;
+  s.objects = std::move(model.objects);
+  return s;
+}
+
+void rejectModelOnlyOptions(const RenderOptions& o) {
+  const auto reject = [](bool given, const char* name) {
+    if (given) throw InputError(std::string(name) + ": applies to model files, not scene files (the scene sets it)");
+  };
+  reject(!o.up.empty(), "--up");
+  reject(o.azimuth.has_value(), "--camera-azimuth-angle");
+  reject(o.elevation.has_value(), "--camera-elevation-angle");
+  reject(o.zoom.has_value(), "--camera-zoom-factor");
+  reject(o.lightIntensity.has_value(), "--light-intensity");
+  reject(!o.normals.empty(), "--normals");
+  reject(o.creaseAngle.has_value(), "--crease-angle");
+}
+
+std::string withSeparators(std::size_t n) {
+  std::string s = std::to_string(n);
+  for (int i = int(s.size()) - 3; i > 0; i -= 3) s.insert(std::size_t(i), ",");
+  return s;
+}
+
+double peakMemoryMiB() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return double(usage.ru_maxrss) / 1024.0;  // Linux reports kilobytes
+}
+
+int runRender(RenderOptions o) {
+  if (!o.resolution.empty()) parseResolution(o.resolution, o);
+  const auto start = Clock::now();
+  Scene scene;
+  std::optional<ImportedModel> model;
+  if (o.input.empty() || isSceneFile(o.input)) {
+    rejectModelOnlyOptions(o);
+    scene = o.input.empty() ? defaultScene() : loadSceneFile(o.input);
+    if (o.width) scene.width = *o.width;
+    if (o.height) scene.height = *o.height;
+    applyExplicitCamera(o, scene.camera);
+  } else {
+    model = importModel(o.input, importOptions(o));
+    for (const std::string& w : model->warnings) std::fprintf(stderr, "illum: warning: %s\n", w.c_str());
+    if (o.verbose) {
+      std::fprintf(stderr, "illum: %s: %s vertices, %s triangles, %zu materials, %zu textures\n", o.input.c_str(),
+                   withSeparators(model->vertexCount).c_str(), withSeparators(model->triangleCount).c_str(),
+                   model->materialCount, model->textureCount);
+      const Vec3 &lo = model->boundsMin, &hi = model->boundsMax;
+      std::fprintf(stderr, "illum: bounds [%g, %g, %g] .. [%g, %g, %g]\n", double(lo.x), double(lo.y), double(lo.z),
+                   double(hi.x), double(hi.y), double(hi.z));
+    }
+    scene = modelScene(o, *model);
+  }
+  const auto loaded = Clock::now();
   if (!o.model.empty()) {
     const auto m = parseLightingModel(o.model);
     if (!m) throw InputError("--model: expected blinn-phong, phong or lambert, got \"" + o.model + "\"");
@@ -38,15 +204,21 @@ int runRender(const RenderOptions& o) {
     if (!s) throw InputError("--shading: expected flat, gouraud or phong, got \"" + o.shading + "\"");
     scene.shading = *s;
   }
-  if (!o.background.empty()) scene.background = Color4(parseColor("--background", o.background, true), 1);
+  if (!o.background.empty()) scene.background = Color4(parseColor("--background-color", o.background, true), 1);
+  if (o.noBackground) scene.background.a = 0;
 
   RenderStats stats;
   const Image image = renderScene(scene, &stats);
+  const auto rendered = Clock::now();
   writePng(o.output, image);
   if (o.verbose) {
-    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    std::fprintf(stderr, "illum: %dx%d, %zu triangles in, %zu drawn, %zu fragments shaded, %.1f ms\n",
-                 scene.width, scene.height, stats.trianglesIn, stats.trianglesDrawn, stats.fragmentsShaded, ms);
+    const auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
+    std::fprintf(stderr,
+                 "illum: loaded in %.1f ms; rendered %dx%d in %.1f ms (%s triangles in, %s drawn, %s fragments shaded); "
+                 "peak memory %.0f MiB\n",
+                 ms(start, loaded), scene.width, scene.height, ms(loaded, rendered),
+                 withSeparators(stats.trianglesIn).c_str(), withSeparators(stats.trianglesDrawn).c_str(),
+                 withSeparators(stats.fragmentsShaded).c_str(), peakMemoryMiB());
   }
   std::printf("%s\n", o.output.c_str());
   return 0;
@@ -56,15 +228,34 @@ int runRender(const RenderOptions& o) {
 
 Command addRenderCommand(CLI::App& app) {
   auto o = std::make_shared<RenderOptions>();
-  CLI::App* cmd = app.add_subcommand("render", "Render a scene file (or, with none, the built-in scene) to PNG");
-  cmd->add_option("scene", o->scene, "Scene file (JSON, docs/scene-format.md); none renders the built-in scene");
+  CLI::App* cmd = app.add_subcommand(
+      "render", "Render a scene file, a model file, or with neither the built-in scene, to PNG");
+  cmd->footer(
+      "A .json input is a scene file (docs/scene-format.md); anything else is a model file read by\n"
+      "assimp (OBJ+MTL, PLY, STL, glTF/GLB, FBX, Collada, 3DS, ...), framed and lit automatically.\n"
+      "Colours are R,G,B in [0,1] or #rrggbb; both are written to the image as they are (docs/cli.md).");
+  cmd->add_option("input", o->input, "Scene (.json) or model file; none renders the built-in scene");
   cmd->add_option("-o,--output", o->output, "Output PNG, written atomically")->capture_default_str();
   cmd->add_option("--width", o->width, "Image width in pixels")->check(CLI::Range(1, 16384));
   cmd->add_option("--height", o->height, "Image height in pixels")->check(CLI::Range(1, 16384));
+  cmd->add_option("--resolution", o->resolution, "Image size W,H (models: 1000,600)");
   cmd->add_option("--model", o->model, "Lighting model: blinn-phong, phong or lambert");
   cmd->add_option("--shading", o->shading, "Shading frequency: flat, gouraud or phong");
-  cmd->add_option("--background", o->background, "Background colour R,G,B in [0,1] (linear) or #rrggbb (sRGB)");
-  cmd->add_flag("-v,--verbose", o->verbose, "Print triangle and fragment counts and the time taken");
+  cmd->add_option("--background-color,--background", o->background, "Background colour R,G,B or #rrggbb");
+  cmd->add_flag("--no-background", o->noBackground, "Transparent background (alpha 0)");
+  cmd->add_option("--up", o->up, "Model files: the up axis, +Y (default), -Y, +Z, -Z, +X or -X");
+  cmd->add_option("--camera-position", o->cameraPosition, "Camera position x,y,z");
+  cmd->add_option("--camera-focal-point", o->cameraFocalPoint, "Point the camera looks at x,y,z (models: the bounds' centre)");
+  cmd->add_option("--camera-view-up", o->cameraViewUp, "Camera up direction x,y,z (models: the up axis)");
+  cmd->add_option("--camera-view-angle", o->viewAngle, "Vertical view angle in degrees (models: 30)");
+  cmd->add_option("--camera-azimuth-angle", o->azimuth, "Model files: turn the view about the up axis, degrees [35]");
+  cmd->add_option("--camera-elevation-angle", o->elevation, "Model files: raise the view towards the up axis, degrees [25]");
+  cmd->add_option("--camera-zoom-factor", o->zoom, "Model files: zoom in (> 1) or out (< 1) from the framing [1]");
+  cmd->add_flag("--orthographic", o->orthographic, "Orthographic projection");
+  cmd->add_option("--light-intensity", o->lightIntensity, "Model files: scale the default light rig [1]");
+  cmd->add_option("--normals", o->normals, "Model files: auto (default), flat, smooth or file");
+  cmd->add_option("--crease-angle", o->creaseAngle, "Model files: generated normals stay sharp above this angle [40]");
+  cmd->add_flag("-v,--verbose", o->verbose, "Print model statistics, bounds, times and peak memory on stderr");
   return [o] { return runRender(*o); };
 }
 

@@ -12,6 +12,8 @@ struct Mesh {
   std::vector<Vec3> positions;
   std::vector<Vec3> normals;  // one per position, unit length
   std::vector<std::uint32_t> indices;  // three per triangle; the LAST is GL's provoking vertex
+  std::vector<Vec2> uvs;       // optional: texture coordinates, one per position (GL: v up)
+  std::vector<Vec4> colors;    // optional: vertex colours, one per position (GL_COLOR_MATERIAL)
 
   std::size_t triangleCount() const { return indices.size() / 3; }
 };
@@ -22,6 +24,17 @@ Mesh makeCube(Real size);
 Mesh makeTorus(Real innerRadius, Real outerRadius, int sides, int rings);
 Mesh makeCone(Real base, Real height, int slices, int stacks);
 Mesh makeTeapot(Real size);
+
+// How an importer chooses normals.
+enum class NormalMode { Auto, Flat, Smooth, File };
+
+// Replaces the normals: each corner gets the angle-weighted mean of the faces around its position
+// (vertices are welded by position) whose normals lie within `creaseAngleDegrees` of its own face,
+// so edges sharper than the crease angle stay sharp. Vertices are split where needed;
+// uvs and colours travel with them. A crease angle of 180 smooths everything.
+void generateCreaseNormals(Mesh& mesh, Real creaseAngleDegrees);
+// Replaces the normals by face normals: every triangle gets its own three vertices.
+void generateFlatNormals(Mesh& mesh);
 
 // Smooth vertex normals: the angle-weighted mean of the faces around each vertex.
 // Vertices whose faces cancel out get the normal of their first face.

@@ -4,6 +4,7 @@
 
 #include <illum/lighting.h>
 #include <illum/mesh.h>
+#include <illum/texture.h>
 
 #include <filesystem>
 #include <memory>
@@ -33,6 +34,10 @@ struct Object {
   std::shared_ptr<const Mesh> mesh;
   Mat4 worldFromObject{1};
   Material material;
+  // Modulates the lit colour (GL_MODULATE) where the mesh has uvs.
+  std::shared_ptr<const Texture> diffuseTexture;
+  // Where the mesh has vertex colours they replace the material's ambient and diffuse colours
+  // (GL_COLOR_MATERIAL with GL_AMBIENT_AND_DIFFUSE).
 };
 
 struct Scene {

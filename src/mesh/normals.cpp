@@ -2,6 +2,8 @@
 #include <illum/mesh.h>
 
 #include <cmath>
+#include <cstring>
+#include <unordered_map>
 
 namespace illum {
 
@@ -33,6 +35,108 @@ std::vector<Vec3> generateSmoothNormals(const std::vector<Vec3>& positions,
     else normals[i] = Vec3(0, 0, 1);  // a vertex on no proper triangle is never lit
   }
   return normals;
+}
+
+}  // namespace illum
+
+namespace illum {
+namespace {
+
+struct PositionKey {
+  Real x, y, z;
+  bool operator==(const PositionKey&) const = default;
+};
+struct PositionHash {
+  std::size_t operator()(const PositionKey& k) const {
+    const std::hash<Real> h;
+    return h(k.x) * 73856093u ^ h(k.y) * 19349663u ^ h(k.z) * 83492791u;
+  }
+};
+
+// Copies vertex `from` of `src` (position, uv, colour) to the end of `dst` with normal `n`.
+std::uint32_t appendVertex(const Mesh& src, std::uint32_t from, const Vec3& n, Mesh& dst) {
+  dst.positions.push_back(src.positions[from]);
+  dst.normals.push_back(n);
+  if (!src.uvs.empty()) dst.uvs.push_back(src.uvs[from]);
+  if (!src.colors.empty()) dst.colors.push_back(src.colors[from]);
+  return std::uint32_t(dst.positions.size() - 1);
+}
+
+Vec3 faceNormal(const Mesh& m, std::size_t t) {
+  const Vec3& a = m.positions[m.indices[t]];
+  const Vec3 n = glm::cross(m.positions[m.indices[t + 1]] - a, m.positions[m.indices[t + 2]] - a);
+  const Real len = glm::length(n);
+  return len > 0 && std::isfinite(len) ? n / len : Vec3(0);
+}
+
+}  // namespace
+
+void generateFlatNormals(Mesh& mesh) {
+  Mesh out;
+  out.positions.reserve(mesh.indices.size());
+  for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+    Vec3 n = faceNormal(mesh, t);
+    if (n == Vec3(0)) n = Vec3(0, 0, 1);
+    for (int c = 0; c < 3; ++c) out.indices.push_back(appendVertex(mesh, mesh.indices[t + std::size_t(c)], n, out));
+  }
+  mesh = std::move(out);
+}
+
+void generateCreaseNormals(Mesh& mesh, Real creaseAngleDegrees) {
+  const std::size_t triangles = mesh.indices.size() / 3;
+  // Weld by position so that faces meeting at split vertices (uv seams, STL soups) still share.
+  std::unordered_map<PositionKey, std::uint32_t, PositionHash> ids;
+  std::vector<std::uint32_t> positionId(mesh.positions.size());
+  for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+    const Vec3& p = mesh.positions[i];
+    positionId[i] = ids.try_emplace(PositionKey{p.x, p.y, p.z}, std::uint32_t(ids.size())).first->second;
+  }
+  // Face normals and corner angles.
+  std::vector<Vec3> faceN(triangles);
+  std::vector<Real> cornerAngle(triangles * 3);
+  for (std::size_t f = 0; f < triangles; ++f) {
+    faceN[f] = faceNormal(mesh, f * 3);
+    for (int c = 0; c < 3; ++c) {
+      const Vec3& p = mesh.positions[mesh.indices[f * 3 + std::size_t(c)]];
+      const Vec3 e1 = mesh.positions[mesh.indices[f * 3 + std::size_t((c + 1) % 3)]] - p;
+      const Vec3 e2 = mesh.positions[mesh.indices[f * 3 + std::size_t((c + 2) % 3)]] - p;
+      const Real l = glm::length(e1) * glm::length(e2);
+      cornerAngle[f * 3 + std::size_t(c)] = l > 0 ? std::acos(glm::clamp(glm::dot(e1, e2) / l, Real(-1), Real(1))) : Real(0);
+    }
+  }
+  // Faces around each welded position (compressed rows).
+  std::vector<std::uint32_t> start(ids.size() + 1, 0), faces(triangles * 3);
+  for (std::uint32_t v : mesh.indices) ++start[positionId[v] + 1];
+  for (std::size_t i = 1; i < start.size(); ++i) start[i] += start[i - 1];
+  std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+  for (std::size_t k = 0; k < mesh.indices.size(); ++k) faces[fill[positionId[mesh.indices[k]]]++] = std::uint32_t(k);
+
+  const Real cosCrease = std::cos(glm::radians(glm::clamp(creaseAngleDegrees, Real(0), Real(180))));
+  Mesh out;
+  out.positions.reserve(mesh.positions.size());
+  std::unordered_map<std::uint64_t, std::uint32_t> corners;  // (vertex, normal) → new vertex
+  for (std::size_t k = 0; k < mesh.indices.size(); ++k) {
+    const std::size_t f = k / 3;
+    const std::uint32_t v = mesh.indices[k];
+    Vec3 sum(0);
+    const std::uint32_t pid = positionId[v];
+    for (std::uint32_t r = start[pid]; r < start[pid + 1]; ++r) {
+      const std::size_t g = faces[r] / 3;
+      if (faceN[f] == Vec3(0) || glm::dot(faceN[f], faceN[g]) >= cosCrease - Real(1e-6)) sum += cornerAngle[faces[r]] * faceN[g];
+    }
+    const Real len = glm::length(sum);
+    const Vec3 n = len > Real(1e-20) ? sum / len : (faceN[f] != Vec3(0) ? faceN[f] : Vec3(0, 0, 1));
+    // Corners of one vertex that end up with the same normal share a new vertex.
+    std::uint32_t bits[3];
+    std::memcpy(bits, &n, sizeof bits < sizeof n ? sizeof bits : sizeof n);
+    const std::uint64_t key = (std::uint64_t(v) << 32) ^ (std::uint64_t(bits[0]) * 2654435761u) ^
+                              (std::uint64_t(bits[1]) * 40503u) ^ std::uint64_t(bits[2]);
+    auto [it, inserted] = corners.try_emplace(key, 0);
+    if (inserted || out.normals[it->second] != n || out.positions[it->second] != mesh.positions[v])
+      it->second = appendVertex(mesh, v, n, out);
+    out.indices.push_back(it->second);
+  }
+  mesh = std::move(out);
 }
 
 }  // namespace illum

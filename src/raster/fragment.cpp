@@ -2,9 +2,12 @@
 
 namespace illum {
 
-Color4 shadePhongFragment(const FrameContext& frame, const Material& material, const TriangleSetup& t,
-                          const std::array<Real, 3>& w) {
+Color4 shadePhongFragment(const FrameContext& frame, const Material& baseMaterial, bool vertexColors,
+                          const TriangleSetup& t, const std::array<Real, 3>& w) {
   const auto& v = t.vertex;
+  const Material material =
+      vertexColors ? withVertexColor(baseMaterial, w[0] * v[0]->color + w[1] * v[1]->color + w[2] * v[2]->color)
+                   : baseMaterial;
   const Vec3 position = w[0] * v[0]->eyePosition + w[1] * v[1]->eyePosition + w[2] * v[2]->eyePosition;
   Vec3 normal = w[0] * v[0]->eyeNormal + w[1] * v[1]->eyeNormal + w[2] * v[2]->eyeNormal;
   const Real len = glm::length(normal);
@@ -13,6 +16,25 @@ Color4 shadePhongFragment(const FrameContext& frame, const Material& material, c
   if (frame.lightModel.twoSided && !t.frontFacing) normal = -normal;
   const SurfaceGeometry s{position, normal, viewerDirection(position, frame.lightModel.localViewer)};
   return clampedColor(evaluateTerms(frame.lights, frame.lightModel, material, frame.model, s), material);
+}
+
+}  // namespace illum
+
+namespace illum {
+
+Vec4 sampleDiffuseTexture(const Texture& texture, const TriangleSetup& t, Real l0, Real l1, Real l2) {
+  const auto uvAt = [&](Real a, Real b, Real c) {
+    const auto w = perspectiveWeights(t, a, b, c);
+    return w[0] * t.vertex[0]->uv + w[1] * t.vertex[1]->uv + w[2] * t.vertex[2]->uv;
+  };
+  // Screen-space barycentrics are linear: one pixel right adds a·256/area, one up adds b·256/area.
+  const Real step = Real(kSubpixelOne) / Real(t.area2);
+  const Vec2 uv = uvAt(l0, l1, l2);
+  const Vec2 dx = uvAt(l0 + Real(t.edge[0].a) * step, l1 + Real(t.edge[1].a) * step, l2 + Real(t.edge[2].a) * step) - uv;
+  const Vec2 dy = uvAt(l0 + Real(t.edge[0].b) * step, l1 + Real(t.edge[1].b) * step, l2 + Real(t.edge[2].b) * step) - uv;
+  const Vec2 size(Real(texture.width()), Real(texture.height()));
+  const Real footprint = std::max(glm::length(dx * size), glm::length(dy * size));
+  return texture.sample(uv, footprint);
 }
 
 }  // namespace illum

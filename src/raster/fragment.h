@@ -7,6 +7,8 @@
 #include "raster/frame_context.h"
 #include "raster/setup.h"
 
+#include <illum/texture.h>
+
 namespace illum {
 
 // Screen-space barycentrics → perspective-correct weights (λi/wi normalized).
@@ -16,9 +18,14 @@ inline std::array<Real, 3> perspectiveWeights(const TriangleSetup& t, Real l0, R
   return {q0 * inv, q1 * inv, q2 * inv};
 }
 
-// The per-pixel lighting of Phong shading. `frontFacing` picks N or −N under two-sided lighting.
-Color4 shadePhongFragment(const FrameContext& frame, const Material& material, const TriangleSetup& t,
-                          const std::array<Real, 3>& w);
+// The per-pixel lighting of Phong shading. `frontFacing` picks N or −N under two-sided lighting;
+// `vertexColors` substitutes the interpolated vertex colour for the ambient and diffuse material.
+Color4 shadePhongFragment(const FrameContext& frame, const Material& material, bool vertexColors,
+                          const TriangleSetup& t, const std::array<Real, 3>& w);
+
+// The texel that modulates the pixel (x, y), trilinearly filtered for the pixel's footprint,
+// which is found by evaluating the perspective-correct uv one pixel to the right and one up.
+Vec4 sampleDiffuseTexture(const Texture& texture, const TriangleSetup& t, Real l0, Real l1, Real l2);
 
 // Gouraud: interpolated vertex colours of the visible side.
 inline Color4 shadeGouraudFragment(const FrameContext& frame, const TriangleSetup& t, const std::array<Real, 3>& w) {

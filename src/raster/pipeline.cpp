@@ -19,21 +19,27 @@ struct TriangleColor {
 void drawTriangle(const FrameContext& frame, const Object& object, const TriangleSetup& t,
                   const TriangleColor& flat, Framebuffer& fb, RenderStats& stats) {
   const bool back = frame.lightModel.twoSided && !t.frontFacing;
+  const bool vertexColors = !object.mesh->colors.empty();
+  const Texture* texture = object.mesh->uvs.empty() ? nullptr : object.diffuseTexture.get();
   rasterizeTriangle(t, [&](int x, int y, Real l0, Real l1, Real l2) {
     const Real z = l0 * t.z[0] + l1 * t.z[1] + l2 * t.z[2];
     if (!fb.depthTest(x, y, z)) return;
     ++stats.fragmentsShaded;
+    Color4 c;
     switch (frame.shading) {
       case Shading::Flat:
-        fb.writeColor(x, y, back ? flat.back : flat.front);
+        c = back ? flat.back : flat.front;
         break;
       case Shading::Gouraud:
-        fb.writeColor(x, y, shadeGouraudFragment(frame, t, perspectiveWeights(t, l0, l1, l2)));
+        c = shadeGouraudFragment(frame, t, perspectiveWeights(t, l0, l1, l2));
         break;
       case Shading::Phong:
-        fb.writeColor(x, y, shadePhongFragment(frame, object.material, t, perspectiveWeights(t, l0, l1, l2)));
+        c = shadePhongFragment(frame, object.material, vertexColors, t, perspectiveWeights(t, l0, l1, l2));
         break;
     }
+    // GL_MODULATE: the lit colour times the texel, alpha included.
+    if (texture) c *= sampleDiffuseTexture(*texture, t, l0, l1, l2);
+    fb.writeColor(x, y, c);
   });
 }
 

@@ -10,6 +10,7 @@ void runVertexStage(const FrameContext& frame, const Object& object, std::vector
   const Mat4 clipFromObject = frame.clipFromView * viewFromObject;
   const Mat3 normalFromObject = normalMatrix(viewFromObject);
   const bool lightVertices = frame.shading != Shading::Phong;
+  const bool hasUvs = !mesh.uvs.empty(), hasColors = !mesh.colors.empty();
   out.resize(mesh.positions.size());
   for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
     ShadedVertex& v = out[i];
@@ -19,14 +20,15 @@ void runVertexStage(const FrameContext& frame, const Object& object, std::vector
     const Vec3 n = normalFromObject * mesh.normals[i];
     const Real len = glm::length(n);
     v.eyeNormal = len > 0 ? n / len : n;
+    if (hasUvs) v.uv = mesh.uvs[i];
+    if (hasColors) v.color = mesh.colors[i];
     if (!lightVertices) continue;
+    const Material material = hasColors ? withVertexColor(object.material, v.color) : object.material;
     SurfaceGeometry s{v.eyePosition, v.eyeNormal, viewerDirection(v.eyePosition, frame.lightModel.localViewer)};
-    v.front = clampedColor(evaluateTerms(frame.lights, frame.lightModel, object.material, frame.model, s),
-                           object.material);
+    v.front = clampedColor(evaluateTerms(frame.lights, frame.lightModel, material, frame.model, s), material);
     if (frame.lightModel.twoSided) {
       s.normal = -s.normal;
-      v.back = clampedColor(evaluateTerms(frame.lights, frame.lightModel, object.material, frame.model, s),
-                            object.material);
+      v.back = clampedColor(evaluateTerms(frame.lights, frame.lightModel, material, frame.model, s), material);
     }
   }
 }
@@ -38,6 +40,8 @@ ShadedVertex lerp(const ShadedVertex& a, const ShadedVertex& b, Real t) {
   v.eyeNormal = a.eyeNormal + t * (b.eyeNormal - a.eyeNormal);
   v.front = a.front + t * (b.front - a.front);
   v.back = a.back + t * (b.back - a.back);
+  v.uv = a.uv + t * (b.uv - a.uv);
+  v.color = a.color + t * (b.color - a.color);
   return v;
 }
 

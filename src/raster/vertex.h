@@ -14,7 +14,16 @@ struct ShadedVertex {
   Vec3 eyeNormal{0};  // unit length (GL_NORMALIZE)
   Color4 front{0};    // lit with N (flat, Gouraud)
   Color4 back{0};     // lit with −N (two-sided lighting only)
+  Vec2 uv{0};         // texture coordinates, when the mesh has them
+  Color4 color{1};    // the vertex colour, when the mesh has them (GL_COLOR_MATERIAL)
 };
+
+// The material GL uses at a vertex with colour `c` under GL_COLOR_MATERIAL(GL_AMBIENT_AND_DIFFUSE).
+inline Material withVertexColor(Material m, const Color4& c) {
+  m.ambient = c;
+  m.diffuse = c;
+  return m;
+}
 
 // The object's vertices through the vertex stage; `out` is resized to the mesh's vertex count.
 void runVertexStage(const FrameContext& frame, const Object& object, std::vector<ShadedVertex>& out);

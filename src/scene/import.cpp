@@ -1,94 +1,327 @@
-#include "scene/import.h"
+#include <illum/import.h>
 
 #include <illum/error.h>
 
+#include <assimp/DefaultLogger.hpp>
 #include <assimp/Importer.hpp>
+#include <assimp/LogStream.hpp>
+#include <assimp/material.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+#include <stb_image.h>
 
+#include <algorithm>
 #include <cmath>
+#include <map>
+#include <optional>
 #include <system_error>
 
 namespace illum {
 namespace {
 
+namespace fs = std::filesystem;
+
 Mat4 toMat4(const aiMatrix4x4& a) {
-  // assimp stores row-major; glm is column-major.
-  Mat4 m;
+  Mat4 m;  // assimp is row-major, glm column-major
   for (int r = 0; r < 4; ++r)
     for (int c = 0; c < 4; ++c) m[c][r] = Real(a[r][c]);
   return m;
 }
 
-void appendNode(const aiScene& scene, const aiNode& node, const Mat4& parent, Mesh& out,
-                const std::filesystem::path& path) {
-  const Mat4 worldFromNode = parent * toMat4(node.mTransformation);
-  const Mat3 normalFromNode = glm::transpose(glm::inverse(Mat3(worldFromNode)));
-  for (unsigned k = 0; k < node.mNumMeshes; ++k) {
-    const aiMesh& m = *scene.mMeshes[node.mMeshes[k]];
-    if (!(m.mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) continue;
-    const auto base = std::uint32_t(out.positions.size());
-    const bool hasNormals = m.mNormals != nullptr;
-    for (unsigned v = 0; v < m.mNumVertices; ++v) {
-      const aiVector3D& p = m.mVertices[v];
-      if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-        throw InputError(path.string() + ": mesh \"" + m.mName.C_Str() + "\" vertex " + std::to_string(v) +
-                         ": expected a finite position");
-      out.positions.push_back(Vec3(worldFromNode * Vec4(p.x, p.y, p.z, 1)));
-      Vec3 n(0);
-      if (hasNormals) {
-        const aiVector3D& a = m.mNormals[v];
-        if (std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z)) n = normalFromNode * Vec3(a.x, a.y, a.z);
-      }
-      out.normals.push_back(n);
-    }
-    for (unsigned f = 0; f < m.mNumFaces; ++f) {
-      const aiFace& face = m.mFaces[f];
-      if (face.mNumIndices != 3) continue;  // points and lines are not surfaces
-      for (int c = 0; c < 3; ++c) {
-        if (face.mIndices[c] >= m.mNumVertices)
-          throw InputError(path.string() + ": mesh \"" + m.mName.C_Str() + "\" face " + std::to_string(f) +
-                           ": index " + std::to_string(face.mIndices[c]) + " is out of range (" +
-                           std::to_string(m.mNumVertices) + " vertices)");
-        out.indices.push_back(base + face.mIndices[c]);
-      }
+bool finite(const aiVector3D& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+std::string lowerExtension(const fs::path& p) {
+  std::string e = p.extension().string();
+  std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return e;
+}
+
+// One assimp mesh as an illum mesh, with normals chosen by `options`.
+Mesh convertMesh(const aiMesh& m, const fs::path& path, const ImportOptions& options, bool normalsArePerFace) {
+  const std::string where = path.string() + ": mesh \"" + m.mName.C_Str() + "\"";
+  Mesh mesh;
+  mesh.positions.reserve(m.mNumVertices);
+  bool normalsSane = m.mNormals != nullptr && !normalsArePerFace;
+  for (unsigned v = 0; v < m.mNumVertices; ++v) {
+    if (!finite(m.mVertices[v]))
+      throw InputError(where + " vertex " + std::to_string(v) + ": expected a finite position");
+    mesh.positions.push_back({m.mVertices[v].x, m.mVertices[v].y, m.mVertices[v].z});
+    if (m.mNormals) {
+      const aiVector3D& n = m.mNormals[v];
+      const Vec3 nv(n.x, n.y, n.z);
+      const Real len = finite(n) ? glm::length(nv) : Real(0);
+      normalsSane = normalsSane && len > Real(1e-12) && std::isfinite(len);
+      mesh.normals.push_back(len > Real(1e-12) && std::isfinite(len) ? nv / len : Vec3(0));
     }
   }
-  for (unsigned c = 0; c < node.mNumChildren; ++c) appendNode(scene, *node.mChildren[c], worldFromNode, out, path);
+  if (m.mTextureCoords[0]) {
+    mesh.uvs.reserve(m.mNumVertices);
+    for (unsigned v = 0; v < m.mNumVertices; ++v) mesh.uvs.push_back({m.mTextureCoords[0][v].x, m.mTextureCoords[0][v].y});
+  }
+  if (m.mColors[0]) {
+    mesh.colors.reserve(m.mNumVertices);
+    for (unsigned v = 0; v < m.mNumVertices; ++v) {
+      const aiColor4D& c = m.mColors[0][v];
+      mesh.colors.push_back(glm::clamp(Vec4(c.r, c.g, c.b, c.a), Vec4(0), Vec4(1)));
+    }
+  }
+  mesh.indices.reserve(std::size_t(m.mNumFaces) * 3);
+  for (unsigned f = 0; f < m.mNumFaces; ++f) {
+    const aiFace& face = m.mFaces[f];
+    if (face.mNumIndices != 3) continue;  // points and lines are not surfaces
+    for (unsigned c = 0; c < 3; ++c) {
+      if (face.mIndices[c] >= m.mNumVertices)
+        throw InputError(where + " face " + std::to_string(f) + ": index " + std::to_string(face.mIndices[c]) +
+                         " is out of range (" + std::to_string(m.mNumVertices) + " vertices)");
+      mesh.indices.push_back(face.mIndices[c]);
+    }
+  }
+
+  switch (options.normals) {
+    case NormalMode::Flat: generateFlatNormals(mesh); break;
+    case NormalMode::Smooth: generateCreaseNormals(mesh, 180); break;
+    case NormalMode::File:
+      if (m.mNormals && normalsSane) break;
+      [[fallthrough]];  // no usable normals in the file: generate them as Auto would
+    case NormalMode::Auto:
+      if (!normalsSane) generateCreaseNormals(mesh, options.creaseAngle);
+      break;
+  }
+  return mesh;
+}
+
+FileMaterialValues readMaterial(const aiMaterial& m) {
+  FileMaterialValues v;
+  aiColor4D c;
+  if (m.Get(AI_MATKEY_BASE_COLOR, c) == AI_SUCCESS || m.Get(AI_MATKEY_COLOR_DIFFUSE, c) == AI_SUCCESS)
+    v.diffuse = {c.r, c.g, c.b, c.a};
+  if (m.Get(AI_MATKEY_COLOR_AMBIENT, c) == AI_SUCCESS) {
+    v.hasAmbient = true;
+    v.ambient = {c.r, c.g, c.b};
+  }
+  if (m.Get(AI_MATKEY_COLOR_SPECULAR, c) == AI_SUCCESS) {
+    v.hasSpecular = true;
+    v.specular = {c.r, c.g, c.b};
+  }
+  if (m.Get(AI_MATKEY_COLOR_EMISSIVE, c) == AI_SUCCESS) v.emission = {c.r, c.g, c.b};
+  float f = 0;
+  if (m.Get(AI_MATKEY_SHININESS, f) == AI_SUCCESS) v.shininess = f;
+  if (m.Get(AI_MATKEY_OPACITY, f) == AI_SUCCESS) v.opacity = f;
+  if (m.Get(AI_MATKEY_METALLIC_FACTOR, f) == AI_SUCCESS) {
+    v.isMetallicRoughness = true;
+    v.metallic = f;
+    v.roughness = m.Get(AI_MATKEY_ROUGHNESS_FACTOR, f) == AI_SUCCESS ? f : 1.0f;
+  }
+  return v;
+}
+
+// A texture named by a material: embedded ("*0" or by file name) or a file beside the model.
+std::shared_ptr<const Texture> loadTexture(const aiScene& scene, const std::string& name, const fs::path& modelDir,
+                                           std::vector<std::string>& warnings, const fs::path& path) {
+  int w = 0, h = 0, n = 0;
+  stbi_uc* data = nullptr;
+  if (const aiTexture* embedded = scene.GetEmbeddedTexture(name.c_str())) {
+    if (embedded->mHeight == 0) {
+      data = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(embedded->pcData), int(embedded->mWidth), &w, &h, &n, 4);
+    } else {
+      Image img(int(embedded->mWidth), int(embedded->mHeight));
+      for (std::size_t i = 0; i < std::size_t(embedded->mWidth) * embedded->mHeight; ++i) {
+        const aiTexel& t = embedded->pcData[i];
+        img.rgba[i * 4] = t.r, img.rgba[i * 4 + 1] = t.g, img.rgba[i * 4 + 2] = t.b, img.rgba[i * 4 + 3] = t.a;
+      }
+      return std::make_shared<const Texture>(img);
+    }
+  } else {
+    std::string file = name;
+    std::replace(file.begin(), file.end(), '\\', '/');
+    fs::path p = fs::path(file).is_absolute() ? fs::path(file) : modelDir / file;
+    std::error_code ec;
+    if (!fs::is_regular_file(p, ec)) p = modelDir / fs::path(file).filename();  // exporters often keep absolute paths
+    data = stbi_load(p.c_str(), &w, &h, &n, 4);
+  }
+  if (!data) {
+    warnings.push_back(path.string() + ": texture \"" + name + "\" cannot be loaded (" +
+                       (stbi_failure_reason() ? stbi_failure_reason() : "unknown reason") + "); rendering untextured");
+    return nullptr;
+  }
+  Image img(w, h);
+  std::copy(data, data + img.rgba.size(), img.rgba.begin());
+  stbi_image_free(data);
+  return std::make_shared<const Texture>(img);
+}
+
+// Collects assimp's warnings while one file is read. Some importers repair broken input with no
+// more than a warning (faces with out-of-range indices are dropped); illum refuses such files.
+class AssimpWarnings : public Assimp::LogStream {
+ public:
+  AssimpWarnings() {
+    Assimp::DefaultLogger::create("", Assimp::Logger::NORMAL, 0);
+    Assimp::DefaultLogger::get()->attachStream(this, Assimp::Logger::Warn | Assimp::Logger::Err);
+  }
+  ~AssimpWarnings() override {
+    Assimp::DefaultLogger::get()->detachStream(this, Assimp::Logger::Warn | Assimp::Logger::Err);
+    Assimp::DefaultLogger::kill();
+  }
+  AssimpWarnings(const AssimpWarnings&) = delete;
+  AssimpWarnings& operator=(const AssimpWarnings&) = delete;
+
+  void write(const char* message) override { messages_.emplace_back(message); }
+  // The first message that contains `text`, without assimp's "Warn,  T0: " prefix and newline.
+  std::optional<std::string> find(const std::string& text) const {
+    for (std::string m : messages_) {
+      if (m.find(text) == std::string::npos) continue;
+      if (auto p = m.find(": "); p != std::string::npos) m = m.substr(p + 2);
+      while (!m.empty() && (m.back() == '\n' || m.back() == '\r')) m.pop_back();
+      return m;
+    }
+    return std::nullopt;
+  }
+
+ private:
+  std::vector<std::string> messages_;
+};
+
+// Faces as the file gave them: every face needs vertices, and every index a vertex.
+void checkFaces(const aiScene& scene, const fs::path& path) {
+  for (unsigned i = 0; i < scene.mNumMeshes; ++i) {
+    const aiMesh& m = *scene.mMeshes[i];
+    for (unsigned f = 0; f < m.mNumFaces; ++f) {
+      const aiFace& face = m.mFaces[f];
+      const std::string where = path.string() + ": mesh \"" + m.mName.C_Str() + "\" face " + std::to_string(f);
+      if (face.mNumIndices == 0 || !face.mIndices)
+        throw InputError(where + " has no vertices (is the file truncated?)");
+      for (unsigned c = 0; c < face.mNumIndices; ++c)
+        if (face.mIndices[c] >= m.mNumVertices)
+          throw InputError(where + ": index " + std::to_string(face.mIndices[c]) + " is out of range (" +
+                           std::to_string(m.mNumVertices) + " vertices)");
+    }
+  }
 }
 
 }  // namespace
 
-Mesh importMergedMesh(const std::filesystem::path& path) {
+Material defaultModelMaterial() {
+  Material m;
+  m.diffuse = {0.72, 0.72, 0.74, 1};
+  m.ambient = m.diffuse;
+  m.specular = {0.3, 0.3, 0.3, 1};
+  m.shininess = 40;
+  return m;
+}
+
+Material materialFromFile(const FileMaterialValues& v) {
+  Material m;
+  m.diffuse = Color4(Color3(v.diffuse), glm::clamp(v.diffuse.a * v.opacity, Real(0), Real(1)));
+  m.emission = Color4(v.emission, 1);
+  // Files without an ambient colour (glTF, most PLY/STL) reflect ambient light in their diffuse colour.
+  m.ambient = Color4(v.hasAmbient ? v.ambient : Color3(v.diffuse), 1);
+  if (v.isMetallicRoughness) {
+    // glTF metallic-roughness onto Blinn-Phong: the specular colour is the Fresnel reflectance at
+    // normal incidence (4% for dielectrics, the base colour for metals), dimmed by roughness;
+    // the exponent matches Beckmann's lobe width, n = 2/α² − 2 with α = roughness².
+    const Real a = std::max(v.roughness * v.roughness, Real(0.03));
+    const Color3 f0 = glm::mix(Color3(0.04), Color3(v.diffuse), v.metallic);
+    m.specular = Color4(f0 * (1 - Real(0.5) * v.roughness), 1);
+    m.shininess = std::clamp(2 / (a * a) - 2, Real(1), Real(2048));
+    m.diffuse = Color4(Color3(v.diffuse) * (1 - Real(0.5) * v.metallic), m.diffuse.a);
+  } else {
+    m.specular = Color4(v.hasSpecular ? v.specular : Color3(0), 1);
+    m.shininess = std::max(v.shininess, Real(0));  // MTL Ns is the exponent itself
+  }
+  for (Color4* c : {&m.ambient, &m.diffuse, &m.specular, &m.emission}) *c = glm::clamp(*c, Color4(0), Color4(1));
+  return m;
+}
+
+ImportedModel importModel(const fs::path& path, const ImportOptions& options) {
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec))
-    throw InputError(path.string() + ": no such model file");
-  if (std::filesystem::file_size(path, ec) == 0) throw InputError(path.string() + ": the model file is empty");
+  if (!fs::exists(path, ec)) throw InputError(path.string() + ": no such model file");
+  if (!fs::is_regular_file(path, ec)) throw InputError(path.string() + ": not a regular file");
+  if (fs::file_size(path, ec) == 0) throw InputError(path.string() + ": the model file is empty");
 
+  AssimpWarnings assimpWarnings;
   Assimp::Importer importer;
-  const aiScene* scene = importer.ReadFile(
-      path.string(), aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_SortByPType |
-                         aiProcess_ValidateDataStructure);
-  if (!scene || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !scene->mRootNode)
-    throw InputError(path.string() + ": cannot read the model: " + importer.GetErrorString());
+  // Keep lines and points out of the triangles; the validation step rejects broken index buffers.
+  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+  // Read and validate first: assimp's later steps assert (and abort) on some broken input.
+  const aiScene* scene = importer.ReadFile(path.string(), aiProcess_ValidateDataStructure);
+  if (!scene) throw InputError(path.string() + ": cannot read the model: " + importer.GetErrorString());
+  checkFaces(*scene, path);
+  scene = importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_SortByPType);
+  if (!scene) throw InputError(path.string() + ": cannot read the model: " + importer.GetErrorString());
+  if ((scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !scene->mRootNode || scene->mNumMeshes == 0)
+    throw InputError(path.string() + ": the model has no triangles");
+  if (auto w = assimpWarnings.find("out-of-range")) throw InputError(path.string() + ": indices out of range: " + *w);
 
-  Mesh mesh;
-  appendNode(*scene, *scene->mRootNode, Mat4(1), mesh, path);
-  if (mesh.indices.empty()) throw InputError(path.string() + ": the model has no triangles");
+  ImportedModel model;
+  const bool stl = lowerExtension(path) == ".stl";  // STL stores one normal per facet
+  std::vector<std::shared_ptr<const Mesh>> meshes(scene->mNumMeshes);
+  for (unsigned i = 0; i < scene->mNumMeshes; ++i) {
+    const aiMesh& m = *scene->mMeshes[i];
+    if (!(m.mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) continue;
+    meshes[i] = std::make_shared<const Mesh>(convertMesh(m, path, options, stl));
+  }
+  std::vector<Material> materials;
+  std::vector<std::shared_ptr<const Texture>> textures;
+  std::map<std::string, std::shared_ptr<const Texture>> textureByName;
+  // PLY and STL carry no materials, and an OBJ without MTL neither: assimp fills in placeholders
+  // (white diffuse, specular and ambient) that would wash the picture out; use illum's neutral one.
+  const std::string ext = lowerExtension(path);
+  const bool formatHasMaterials = ext != ".stl" && ext != ".ply";
+  for (unsigned i = 0; i < scene->mNumMaterials; ++i) {
+    const aiMaterial& am = *scene->mMaterials[i];
+    const bool placeholder = !formatHasMaterials || am.GetName() == aiString(AI_DEFAULT_MATERIAL_NAME);
+    materials.push_back(placeholder ? defaultModelMaterial() : materialFromFile(readMaterial(am)));
+    aiString name;
+    std::shared_ptr<const Texture> tex;
+    if (am.GetTexture(aiTextureType_BASE_COLOR, 0, &name) == AI_SUCCESS ||
+        am.GetTexture(aiTextureType_DIFFUSE, 0, &name) == AI_SUCCESS) {
+      auto [it, inserted] = textureByName.try_emplace(name.C_Str(), nullptr);
+      if (inserted) it->second = loadTexture(*scene, name.C_Str(), path.parent_path(), model.warnings, path);
+      tex = it->second;
+    }
+    textures.push_back(tex);
+  }
+  model.materialCount = materials.size();
+  model.textureCount = std::size_t(std::count_if(textureByName.begin(), textureByName.end(),
+                                                 [](const auto& kv) { return kv.second != nullptr; }));
 
-  // Keep the file's normals where they are sane; fill in the rest from the geometry.
-  bool missing = false;
-  for (Vec3& n : mesh.normals) {
-    const Real len = glm::length(n);
-    if (len > Real(1e-20) && std::isfinite(len)) n /= len;
-    else missing = true;
+  // Walk the node tree; every (node, mesh) pair is an object with the node's world transform.
+  Vec3 lo(std::numeric_limits<Real>::max()), hi(-std::numeric_limits<Real>::max());
+  std::vector<std::pair<const aiNode*, Mat4>> stack = {{scene->mRootNode, Mat4(1)}};
+  std::size_t visited = 0;
+  while (!stack.empty()) {
+    auto [node, parent] = stack.back();
+    stack.pop_back();
+    if (++visited > 1000000) throw InputError(path.string() + ": the node hierarchy is too deep or cyclic");
+    const Mat4 world = parent * toMat4(node->mTransformation);
+    for (unsigned k = 0; k < node->mNumMeshes; ++k) {
+      const unsigned mi = node->mMeshes[k];
+      if (mi >= meshes.size() || !meshes[mi] || meshes[mi]->indices.empty()) continue;
+      Object o;
+      o.mesh = meshes[mi];
+      o.worldFromObject = world;
+      const unsigned mat = scene->mMeshes[mi]->mMaterialIndex;
+      if (mat < materials.size()) {
+        o.material = materials[mat];
+        o.diffuseTexture = textures[mat];
+      }
+      for (const Vec3& p : o.mesh->positions) {
+        const Vec3 w = Vec3(world * Vec4(p, 1));
+        lo = glm::min(lo, w);
+        hi = glm::max(hi, w);
+      }
+      model.vertexCount += o.mesh->positions.size();
+      model.triangleCount += o.mesh->triangleCount();
+      model.objects.push_back(std::move(o));
+    }
+    for (unsigned c = 0; c < node->mNumChildren; ++c) stack.push_back({node->mChildren[c], world});
   }
-  if (missing) {
-    const std::vector<Vec3> generated = generateSmoothNormals(mesh.positions, mesh.indices);
-    for (std::size_t i = 0; i < mesh.normals.size(); ++i)
-      if (!(glm::length(mesh.normals[i]) > Real(0.5))) mesh.normals[i] = generated[i];
-  }
-  return mesh;
+  if (model.objects.empty()) throw InputError(path.string() + ": the model has no triangles");
+  if (!std::isfinite(lo.x + lo.y + lo.z + hi.x + hi.y + hi.z))
+    throw InputError(path.string() + ": the node transforms place the model at infinity");
+  model.boundsMin = lo;
+  model.boundsMax = hi;
+  return model;
 }
 
 }  // namespace illum

@@ -2,13 +2,14 @@
 #include <illum/error.h>
 #include <illum/scene.h>
 
-#include "scene/import.h"
+#include <illum/import.h>
 #include "scene/json_reader.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <fstream>
 #include <limits>
+#include <optional>
 #include <sstream>
 
 namespace illum {
@@ -143,7 +144,23 @@ Mesh readTriangles(const JsonReader& j) {
   return mesh;
 }
 
-Mesh readMesh(const JsonReader& j, const std::filesystem::path& baseDir) {
+ImportedModel readModelFile(const JsonReader& j, const std::filesystem::path& baseDir) {
+  j.expectObject({"type", "path"});
+  if (!j.has("path")) j.fail("expected a \"path\" to a model file");
+  const std::filesystem::path rel = j.at("path").string();
+  const std::filesystem::path full = rel.is_absolute() ? rel : baseDir / rel;
+  try {
+    return importModel(full, ImportOptions{});
+  } catch (const InputError& e) {
+    j.at("path").fail(e.what());
+  }
+}
+
+bool isModelFile(const JsonReader& j) {
+  return j.value().is_object() && j.has("type") && j.value()["type"] == "file";
+}
+
+Mesh readMesh(const JsonReader& j) {
   if (!j.value().is_object()) j.fail("expected an object, got something else");
   if (!j.has("type")) j.fail("expected a \"type\": sphere, cube, torus, cone, teapot, triangles or file");
   const std::string type = j.at("type").string();
@@ -179,27 +196,29 @@ Mesh readMesh(const JsonReader& j, const std::filesystem::path& baseDir) {
     return makeTeapot(j.has("size") ? j.at("size").positive() : Real(1));
   }
   if (type == "triangles") return readTriangles(j);
-  if (type == "file") {
-    j.expectObject({"type", "path"});
-    if (!j.has("path")) j.fail("expected a \"path\" to a model file");
-    const std::filesystem::path rel = j.at("path").string();
-    const std::filesystem::path full = rel.is_absolute() ? rel : baseDir / rel;
-    try {
-      return importMergedMesh(full);
-    } catch (const InputError& e) {
-      j.at("path").fail(e.what());
-    }
-  }
   j.at("type").fail("expected one of sphere, cube, torus, cone, teapot, triangles, file; got \"" + type + "\"");
 }
 
-Object readObject(const JsonReader& j, const std::filesystem::path& baseDir) {
+// One object of the scene; a model file brings one object per mesh instance, each placed by its
+// node transforms after the object's transform, in the file's materials unless one is given.
+void readObject(const JsonReader& j, const std::filesystem::path& baseDir, std::vector<Object>& out) {
   j.expectObject({"mesh", "transform", "material"});
+  const Mat4 worldFromObject = j.has("transform") ? readTransform(j.at("transform")) : Mat4(1);
+  std::optional<Material> material;
+  if (j.has("material")) material = readMaterial(j.at("material"));
+  if (j.has("mesh") && isModelFile(j.at("mesh"))) {
+    for (Object& o : readModelFile(j.at("mesh"), baseDir).objects) {
+      o.worldFromObject = worldFromObject * o.worldFromObject;
+      if (material) o.material = *material;
+      out.push_back(std::move(o));
+    }
+    return;
+  }
   Object o;
-  o.mesh = std::make_shared<Mesh>(j.has("mesh") ? readMesh(j.at("mesh"), baseDir) : makeSphere(1, 20, 16));
-  if (j.has("transform")) o.worldFromObject = readTransform(j.at("transform"));
-  if (j.has("material")) o.material = readMaterial(j.at("material"));
-  return o;
+  o.mesh = std::make_shared<Mesh>(j.has("mesh") ? readMesh(j.at("mesh")) : makeSphere(1, 20, 16));
+  o.worldFromObject = worldFromObject;
+  if (material) o.material = *material;
+  out.push_back(std::move(o));
 }
 
 std::string describeParseError(const Json::parse_error& e, const std::string& text) {
@@ -258,7 +277,7 @@ Scene parseScene(const std::string& text, const std::string& name, const std::fi
   }
   if (j.has("objects")) {
     const JsonReader objects = j.at("objects");
-    for (std::size_t i = 0, n = objects.arraySize(); i < n; ++i) s.objects.push_back(readObject(objects.item(i), baseDir));
+    for (std::size_t i = 0, n = objects.arraySize(); i < n; ++i) readObject(objects.item(i), baseDir, s.objects);
   }
   return s;
 }

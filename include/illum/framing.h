@@ -1,0 +1,33 @@
+// Looking at a model with no scene file: a camera that frames its bounds, and a light rig that
+// follows the camera (key, fill and rim lights plus ambient), in f3d's spirit.
+#pragma once
+
+#include <illum/scene.h>
+
+#include <optional>
+#include <vector>
+
+namespace illum {
+
+struct ViewOptions {
+  Vec3 up{0, 1, 0};                 // the model's up axis (--up)
+  std::optional<Vec3> position;     // --camera-position
+  std::optional<Vec3> focalPoint;   // --camera-focal-point
+  std::optional<Vec3> viewUp;       // --camera-view-up
+  Real viewAngle = 30;              // --camera-view-angle, vertical, degrees
+  Real azimuth = 35;                // --camera-azimuth-angle: turn about the up axis, degrees
+  Real elevation = 25;              // --camera-elevation-angle: raise towards the up axis, degrees
+  Real zoom = 1;                    // --camera-zoom-factor
+  bool orthographic = false;        // --orthographic
+};
+
+// The camera that shows the whole of [boundsMin, boundsMax] from the options' direction.
+Camera frameBounds(const Vec3& boundsMin, const Vec3& boundsMax, const ViewOptions& options, Real aspect);
+
+// The default light rig, fixed to the camera: a warm key light from the upper left, a cool fill
+// from the right, a rim light from behind. `intensity` scales every light.
+std::vector<Light> cameraLightRig(const Camera& camera, Real intensity);
+// The light-model ambient that goes with the rig.
+Color3 cameraRigAmbient(Real intensity);
+
+}  // namespace illum

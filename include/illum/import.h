@@ -1,0 +1,41 @@
+// Model files through assimp (OBJ+MTL, PLY, STL, glTF 2.0, FBX, Collada, 3DS and the rest of what
+// assimp reads), with their node transforms, materials, vertex colours and diffuse textures.
+#pragma once
+
+#include <illum/scene.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace illum {
+
+struct ImportOptions {
+  NormalMode normals = NormalMode::Auto;
+  Real creaseAngle = 40;  // degrees, for generated normals
+};
+
+struct ImportedModel {
+  std::vector<Object> objects;  // one per (node, mesh) instance, in world space
+  Vec3 boundsMin{0}, boundsMax{0};
+  std::size_t vertexCount = 0, triangleCount = 0, materialCount = 0, textureCount = 0;
+  std::vector<std::string> warnings;  // e.g. a texture that could not be loaded
+};
+
+// Throws InputError for a missing, empty, truncated or malformed file, out-of-range indices or
+// non-finite positions.
+ImportedModel importModel(const std::filesystem::path& path, const ImportOptions& options = {});
+
+// The material illum derives from a file's: see docs/models.md for the mapping.
+struct FileMaterialValues {
+  bool hasAmbient = false, hasSpecular = false, isMetallicRoughness = false;
+  Color4 diffuse{0.8, 0.8, 0.8, 1};
+  Color3 ambient{0}, specular{0}, emission{0};
+  Real shininess = 0, opacity = 1, metallic = 0, roughness = 1;
+};
+Material materialFromFile(const FileMaterialValues& values);
+// The material of models whose format has none (PLY, STL, OBJ without MTL): a light neutral grey
+// with a soft highlight.
+Material defaultModelMaterial();
+
+}  // namespace illum

@@ -1,0 +1,34 @@
+// Textures: an RGBA image with its mipmap chain, sampled like GL_LINEAR_MIPMAP_LINEAR with
+// GL_REPEAT. Texel values are used as stored (GL without sRGB decoding), scaled to [0,1].
+#pragma once
+
+#include <illum/image.h>
+#include <illum/real.h>
+
+#include <vector>
+
+namespace illum {
+
+class Texture {
+ public:
+  explicit Texture(const Image& image);
+
+  int width() const { return levels_.front().width; }
+  int height() const { return levels_.front().height; }
+  int levelCount() const { return int(levels_.size()); }
+
+  // Trilinear sample at `uv` (GL convention: v = 0 is the image's bottom row) for a footprint of
+  // `texelsPerPixel` base-level texels per pixel (the mip level is log2 of it).
+  Vec4 sample(const Vec2& uv, Real texelsPerPixel) const;
+  // Bilinear sample of one mip level.
+  Vec4 sampleLevel(const Vec2& uv, int level) const;
+
+ private:
+  struct Level {
+    int width, height;
+    std::vector<Vec4> texels;  // rows bottom to top, as GL stores them
+  };
+  std::vector<Level> levels_;
+};
+
+}  // namespace illum
