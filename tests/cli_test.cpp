@@ -1,4 +1,6 @@
 // The CLI as a user runs it: exit codes, messages, output files.
+#include "cli_support.h"
+
 #include <illum/image.h>
 
 #include <gtest/gtest.h>
@@ -13,47 +15,11 @@
 namespace {
 
 namespace fs = std::filesystem;
+using illum::test::RunResult;
+using illum::test::slurp;
+using illum::test::TempDir;
 
-struct RunResult {
-  int exitCode = -1;
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-RunResult run(const std::string& args) {
-  const fs::path errFile = fs::temp_directory_path() / ("illum_cli_err_" + std::to_string(::getpid()));
-  const std::string cmd = std::string(ILLUM_CLI) + " " + args + " 2>" + errFile.string();
-  RunResult r;
-  FILE* pipe = ::popen(cmd.c_str(), "r");
-  std::array<char, 4096> buf{};
-  std::size_t n = 0;
-  while ((n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0) r.out.append(buf.data(), n);
-  const int status = ::pclose(pipe);
-  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.err = slurp(errFile);
-  fs::remove(errFile);
-  return r;
-}
-
-class TempDir {
- public:
-  TempDir() {
-    path_ = fs::temp_directory_path() / ("illum_cli_" + std::to_string(::getpid()) + "_" +
-                                         testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~TempDir() { fs::remove_all(path_); }
-  fs::path operator/(const std::string& name) const { return path_ / name; }
-  std::size_t fileCount() const { return std::size_t(std::distance(fs::directory_iterator(path_), fs::directory_iterator())); }
-
- private:
-  fs::path path_;
-};
+RunResult run(const std::string& args) { return illum::test::runIllum(args); }
 
 const char* kSeedExercise =
     "eval --model phong --distance 1 --angle-nl 30 --angle-rv 0 --light-ambient 0.4,0.9,0.2 "

@@ -132,7 +132,7 @@ Scene modelScene(const RenderOptions& o, ImportedModel& model) {
   if (!o.cameraPosition.empty()) view.position = parseVec3("--camera-position", o.cameraPosition);
   if (!o.cameraFocalPoint.empty()) view.focalPoint = parseVec3("--camera-focal-point", o.cameraFocalPoint);
   if (!o.cameraViewUp.empty()) view.viewUp = parseVec3("--camera-view-up", o.cameraViewUp);
-  s.camera = frameBounds(model.boundsMin, model.boundsMax, view, Real(s.width) / Real(s.height));
+  s.camera = framePoints(worldPoints(model.objects), view, Real(s.width) / Real(s.height));
   applyExplicitCamera(RenderOptions{}, s.camera);  // validates the framed camera
   const Real intensity = o.lightIntensity ? Real(*o.lightIntensity) : Real(1);
   if (!std::isfinite(intensity) || intensity < 0) throw InputError("--light-intensity: expected a number ≥ 0");

@@ -5,6 +5,7 @@
 #include <illum/scene.h>
 
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace illum {
@@ -21,8 +22,13 @@ struct ViewOptions {
   bool orthographic = false;        // --orthographic
 };
 
-// The camera that shows the whole of [boundsMin, boundsMax] from the options' direction.
-Camera frameBounds(const Vec3& boundsMin, const Vec3& boundsMax, const ViewOptions& options, Real aspect);
+// The camera that shows all of `points` (world space) from the options' direction: the focal
+// point is the centre of their bounds, and the distance the nearest at which every point lies
+// inside the view, with a small margin.
+Camera framePoints(std::span<const Vec3> points, const ViewOptions& options, Real aspect);
+
+// Every vertex of the objects in world space, for framing.
+std::vector<Vec3> worldPoints(const std::vector<Object>& objects);
 
 // The default light rig, fixed to the camera: a warm key light from the upper left, a cool fill
 // from the right, a rim light from behind. `intensity` scales every light.

@@ -53,6 +53,22 @@ struct PositionHash {
   }
 };
 
+struct CornerKey {
+  std::uint32_t position;
+  Vec3 normal;
+  Vec2 uv;
+  Vec4 color;
+  bool operator==(const CornerKey&) const = default;
+};
+struct CornerHash {
+  std::size_t operator()(const CornerKey& k) const {
+    const std::hash<Real> h;
+    return std::size_t(k.position) * 2654435761u ^ h(k.normal.x) * 73856093u ^ h(k.normal.y) * 19349663u ^
+           h(k.normal.z) * 83492791u ^ h(k.uv.x) * 3u ^ h(k.uv.y) * 5u ^ h(k.color.r) * 7u ^ h(k.color.g) * 11u ^
+           h(k.color.b) * 13u;
+  }
+};
+
 // Copies vertex `from` of `src` (position, uv, colour) to the end of `dst` with normal `n`.
 std::uint32_t appendVertex(const Mesh& src, std::uint32_t from, const Vec3& n, Mesh& dst) {
   dst.positions.push_back(src.positions[from]);
@@ -114,7 +130,8 @@ void generateCreaseNormals(Mesh& mesh, Real creaseAngleDegrees) {
   const Real cosCrease = std::cos(glm::radians(glm::clamp(creaseAngleDegrees, Real(0), Real(180))));
   Mesh out;
   out.positions.reserve(mesh.positions.size());
-  std::unordered_map<std::uint64_t, std::uint32_t> corners;  // (vertex, normal) → new vertex
+  // Corners at one position with the same normal, uv and colour share one new vertex.
+  std::unordered_map<CornerKey, std::uint32_t, CornerHash> corners;
   for (std::size_t k = 0; k < mesh.indices.size(); ++k) {
     const std::size_t f = k / 3;
     const std::uint32_t v = mesh.indices[k];
@@ -126,14 +143,9 @@ void generateCreaseNormals(Mesh& mesh, Real creaseAngleDegrees) {
     }
     const Real len = glm::length(sum);
     const Vec3 n = len > Real(1e-20) ? sum / len : (faceN[f] != Vec3(0) ? faceN[f] : Vec3(0, 0, 1));
-    // Corners of one vertex that end up with the same normal share a new vertex.
-    std::uint32_t bits[3];
-    std::memcpy(bits, &n, sizeof bits < sizeof n ? sizeof bits : sizeof n);
-    const std::uint64_t key = (std::uint64_t(v) << 32) ^ (std::uint64_t(bits[0]) * 2654435761u) ^
-                              (std::uint64_t(bits[1]) * 40503u) ^ std::uint64_t(bits[2]);
+    const CornerKey key{pid, n, mesh.uvs.empty() ? Vec2(0) : mesh.uvs[v], mesh.colors.empty() ? Vec4(0) : mesh.colors[v]};
     auto [it, inserted] = corners.try_emplace(key, 0);
-    if (inserted || out.normals[it->second] != n || out.positions[it->second] != mesh.positions[v])
-      it->second = appendVertex(mesh, v, n, out);
+    if (inserted) it->second = appendVertex(mesh, v, n, out);
     out.indices.push_back(it->second);
   }
   mesh = std::move(out);

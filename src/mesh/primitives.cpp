@@ -162,8 +162,8 @@ Mesh makeCone(Real base, Real height, int slices, int stacks) {
     }
   }
   const auto s = std::uint32_t(slices);
-  // The base is seen from below: fan it the other way round.
-  for (std::uint32_t j = 0; j < s; ++j) m.indices.insert(m.indices.end(), {1 + (j + 1) % s, 1 + j, 0});
+  // The ring runs clockwise seen from +Z, which is counter-clockwise seen from below the base.
+  for (std::uint32_t j = 0; j < s; ++j) m.indices.insert(m.indices.end(), {1 + j, 1 + (j + 1) % s, 0});
   for (int i = 0; i < stacks; ++i) {
     std::vector<std::uint32_t> strip;
     const auto offset = std::uint32_t(1 + slices + i * slices);

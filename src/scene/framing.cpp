@@ -23,7 +23,22 @@ Vec3 rotateAbout(const Vec3& v, Real degrees, const Vec3& axis) {
 
 }  // namespace
 
-Camera frameBounds(const Vec3& boundsMin, const Vec3& boundsMax, const ViewOptions& o, Real aspect) {
+std::vector<Vec3> worldPoints(const std::vector<Object>& objects) {
+  std::vector<Vec3> points;
+  for (const Object& o : objects)
+    for (const Vec3& p : o.mesh->positions) points.push_back(Vec3(o.worldFromObject * Vec4(p, 1)));
+  return points;
+}
+
+Camera framePoints(std::span<const Vec3> points, const ViewOptions& o, Real aspect) {
+  Vec3 boundsMin(0), boundsMax(0);
+  if (!points.empty()) {
+    boundsMin = boundsMax = points.front();
+    for (const Vec3& p : points) {
+      boundsMin = glm::min(boundsMin, p);
+      boundsMax = glm::max(boundsMax, p);
+    }
+  }
   const Vec3 center = (boundsMin + boundsMax) * Real(0.5);
   Real radius = glm::length(boundsMax - boundsMin) * Real(0.5);
   if (!(radius > 0)) radius = 1;  // a single point: any sensible frame will do
@@ -42,14 +57,12 @@ Camera frameBounds(const Vec3& boundsMin, const Vec3& boundsMax, const ViewOptio
     toViewer = rotateAbout(toViewer, o.azimuth, up);
     const Vec3 right = glm::normalize(glm::cross(up, toViewer));
     toViewer = glm::normalize(rotateAbout(toViewer, -o.elevation, right));
-    // The nearest distance at which all eight corners of the box lie inside the view, plus a margin.
+    // The nearest distance at which every point lies inside the view, plus a margin.
     const Vec3 viewRight = glm::normalize(glm::cross(cam.up, toViewer));
     const Vec3 viewUp = glm::cross(toViewer, viewRight);
     Real fit = 0;
-    for (int k = 0; k < 8; ++k) {
-      const Vec3 corner((k & 1) ? boundsMax.x : boundsMin.x, (k & 2) ? boundsMax.y : boundsMin.y,
-                        (k & 4) ? boundsMax.z : boundsMin.z);
-      const Vec3 c = corner - cam.center;
+    for (const Vec3& p : points) {
+      const Vec3 c = p - cam.center;
       const Real depth = glm::dot(c, toViewer);
       fit = std::max({fit, depth + std::abs(glm::dot(c, viewRight)) / tanX, depth + std::abs(glm::dot(c, viewUp)) / tanY});
     }
@@ -86,11 +99,11 @@ std::vector<Light> cameraLightRig(const Camera& cam, Real intensity) {
   };
   return {
       directional(-0.5f, 0.6f, 1.0f, {0.68, 0.66, 0.62}, {0.55, 0.55, 0.55}),  // key: upper left, in front
-      directional(0.8f, -0.2f, 0.6f, {0.22, 0.24, 0.28}, {0, 0, 0}),            // fill: right, a little below
+      directional(0.8f, -0.2f, 0.6f, {0.36, 0.38, 0.42}, {0, 0, 0}),            // fill: right, a little below
       directional(0.2f, 0.7f, -1.0f, {0.3, 0.3, 0.3}, {0.3, 0.3, 0.3}),         // rim: above, from behind
   };
 }
 
-Color3 cameraRigAmbient(Real intensity) { return glm::clamp(Color3(0.22) * intensity, Color3(0), Color3(1)); }
+Color3 cameraRigAmbient(Real intensity) { return glm::clamp(Color3(0.2) * intensity, Color3(0), Color3(1)); }
 
 }  // namespace illum

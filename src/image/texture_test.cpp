@@ -1,0 +1,53 @@
+#include <illum/texture.h>
+
+#include <gtest/gtest.h>
+
+namespace illum {
+namespace {
+
+Image checker2x2() {
+  // Top row (image row 0): red, green; bottom row: blue, white.
+  Image img(2, 2);
+  const std::uint8_t texels[4][4] = {{255, 0, 0, 255}, {0, 255, 0, 255}, {0, 0, 255, 255}, {255, 255, 255, 255}};
+  for (int i = 0; i < 4; ++i)
+    for (int c = 0; c < 4; ++c) img.rgba[std::size_t(i * 4 + c)] = texels[i][c];
+  return img;
+}
+
+TEST(Texture, TexelCentresAndGlOrientation) {
+  const Texture t(checker2x2());
+  // v = 0 is the image's bottom row (GL convention): texel centres at 1/4 and 3/4.
+  EXPECT_EQ(t.sampleLevel({0.25, 0.25}, 0), Vec4(0, 0, 1, 1));  // bottom left: blue
+  EXPECT_EQ(t.sampleLevel({0.25, 0.75}, 0), Vec4(1, 0, 0, 1));  // top left: red
+  EXPECT_EQ(t.sampleLevel({0.75, 0.75}, 0), Vec4(0, 1, 0, 1));  // top right: green
+}
+
+TEST(Texture, BilinearBetweenTexelsAndRepeat) {
+  const Texture t(checker2x2());
+  const Vec4 centre = t.sampleLevel({0.5, 0.5}, 0);
+  EXPECT_NEAR(centre.r, 0.5, 1e-6);
+  EXPECT_NEAR(centre.g, 0.5, 1e-6);
+  EXPECT_NEAR(centre.b, 0.5, 1e-6);
+  // GL_REPEAT: u = 1.25 is u = 0.25; at u = 0 the left and right columns blend.
+  EXPECT_EQ(t.sampleLevel({1.25, 0.25}, 0), t.sampleLevel({0.25, 0.25}, 0));
+  const Vec4 seam = t.sampleLevel({0.0, 0.25}, 0);
+  EXPECT_NEAR(seam.r, 0.5, 1e-6);  // blue and white
+  EXPECT_NEAR(seam.b, 1.0, 1e-6);
+}
+
+TEST(Texture, MipmapsAverageAndTrilinearPicksByFootprint) {
+  const Texture t(checker2x2());
+  EXPECT_EQ(t.levelCount(), 2);
+  const Vec4 mean(0.5, 0.5, 0.5, 1);
+  const Vec4 level1 = t.sampleLevel({0.3, 0.9}, 1);
+  for (int c = 0; c < 4; ++c) EXPECT_NEAR(level1[c], mean[c], 1e-6);
+  // A footprint of 2 texels per pixel is level 1 exactly; of 1 texel, level 0.
+  EXPECT_EQ(t.sample({0.25, 0.25}, 2), t.sampleLevel({0.25, 0.25}, 1));
+  EXPECT_EQ(t.sample({0.25, 0.25}, 1), t.sampleLevel({0.25, 0.25}, 0));
+  // Halfway (√2 texels) is the mean of both levels.
+  const Vec4 half = t.sample({0.25, 0.25}, std::sqrt(Real(2)));
+  EXPECT_NEAR(half.b, 0.5 * (1 + 0.5), 1e-5);
+}
+
+}  // namespace
+}  // namespace illum

@@ -1,0 +1,93 @@
+#include <illum/framing.h>
+#include <illum/import.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+namespace illum {
+namespace {
+
+TEST(FileMaterial, MtlValuesMapOntoGlMaterial) {
+  FileMaterialValues v;
+  v.hasAmbient = v.hasSpecular = true;
+  v.ambient = {0.1, 0.2, 0.3};
+  v.diffuse = {0.4, 0.5, 0.6, 1};
+  v.specular = {0.7, 0.8, 0.9};
+  v.emission = {0.05, 0, 0};
+  v.shininess = 500;  // MTL Ns is the exponent itself, not capped at 128
+  v.opacity = 0.5f;   // d
+  const Material m = materialFromFile(v);
+  EXPECT_EQ(Vec3(m.ambient), Vec3(0.1, 0.2, 0.3));
+  EXPECT_EQ(Vec3(m.diffuse), Vec3(0.4, 0.5, 0.6));
+  EXPECT_FLOAT_EQ(m.diffuse.a, 0.5f);
+  EXPECT_EQ(Vec3(m.specular), Vec3(0.7, 0.8, 0.9));
+  EXPECT_FLOAT_EQ(m.emission.r, 0.05f);
+  EXPECT_EQ(m.shininess, 500);
+}
+
+TEST(FileMaterial, GltfMetallicRoughness) {
+  FileMaterialValues v;
+  v.isMetallicRoughness = true;
+  v.diffuse = {0.8, 0.2, 0.1, 1};
+  v.roughness = 0.5f;
+  v.metallic = 0;
+  const Material dielectric = materialFromFile(v);
+  EXPECT_EQ(Vec3(dielectric.ambient), Vec3(0.8, 0.2, 0.1));  // no ambient in glTF: the base colour
+  EXPECT_NEAR(dielectric.specular.r, 0.04 * 0.75, 1e-6);      // F0 = 4%, dimmed by roughness
+  EXPECT_NEAR(dielectric.shininess, 2 / (0.25 * 0.25) - 2, 1e-3);  // α = roughness² = 0.25
+  v.metallic = 1;
+  const Material metal = materialFromFile(v);
+  EXPECT_NEAR(metal.specular.r, 0.8 * 0.75, 1e-6);  // metals reflect their base colour
+  EXPECT_NEAR(metal.diffuse.r, 0.4, 1e-6);
+}
+
+TEST(Import, NodeTransformsPlaceTheMeshes) {
+  // 2CylinderEngine's meshes sit in a node hierarchy; its bounds in world space are known.
+  const ImportedModel m = importModel("/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb");
+  EXPECT_EQ(m.triangleCount, 121496u);
+  EXPECT_EQ(m.materialCount, 35u);
+  EXPECT_NEAR(m.boundsMin.x, -371.692, 1e-2);
+  EXPECT_NEAR(m.boundsMax.y, 92.0416, 1e-2);
+  EXPECT_NEAR(m.boundsMax.z, 128, 1e-2);
+  const bool anyPlaced = std::any_of(m.objects.begin(), m.objects.end(), [](const Object& o) { return o.worldFromObject != Mat4(1); });
+  EXPECT_TRUE(anyPlaced);
+}
+
+TEST(Import, StlGetsCreaseNormalsAndObjGetsItsMtl) {
+  const ImportedModel stl = importModel("/usr/share/assimp/models/STL/Spider_binary.stl");
+  ASSERT_FALSE(stl.objects.empty());
+  // Generated normals are shared across smooth edges: fewer vertices than 3 per triangle.
+  EXPECT_LT(stl.vertexCount, stl.triangleCount * 3);
+  const ImportedModel obj = importModel("/usr/share/assimp/models/OBJ/cube_usemtl.obj");
+  // cube_usemtl.mtl: Ns 200 and Ks 0.05 for "mtl", Ns 16 and Ks 0.375 for "mtl2".
+  std::vector<Real> shininess;
+  for (const Object& o : obj.objects) shininess.push_back(o.material.shininess);
+  EXPECT_NE(std::find(shininess.begin(), shininess.end(), Real(200)), shininess.end());
+  EXPECT_NE(std::find(shininess.begin(), shininess.end(), Real(16)), shininess.end());
+}
+
+TEST(Framing, EveryPointInsideTheView) {
+  std::vector<Vec3> points;
+  for (int i = 0; i < 50; ++i) points.push_back({Real(i % 7) * 3 - 10, Real(i % 5) - 2, Real(i % 3) * 10 + 5});
+  for (Real aspect : {Real(0.5), Real(1), Real(2)}) {
+    ViewOptions o;
+    o.up = {0, 0, 1};
+    const Camera cam = framePoints(points, o, aspect);
+    const Mat4 clipFromWorld = cam.clipFromView(aspect) * cam.viewFromWorld();
+    Real widest = 0;
+    for (const Vec3& p : points) {
+      const Vec4 c = clipFromWorld * Vec4(p, 1);
+      const Vec3 ndc = Vec3(c) / c.w;
+      EXPECT_LE(std::abs(ndc.x), 1);
+      EXPECT_LE(std::abs(ndc.y), 1);
+      EXPECT_GT(ndc.z, -1);
+      EXPECT_LT(ndc.z, 1);
+      widest = std::max({widest, std::abs(ndc.x), std::abs(ndc.y)});
+    }
+    EXPECT_GT(widest, 0.85);  // and it fills the frame
+  }
+}
+
+}  // namespace
+}  // namespace illum

@@ -1,0 +1,272 @@
+// Real model files no one here wrote (Debian's assimp-testmodels), rendered as a user would:
+// `illum render MODEL`. Checks what the picture must show and that broken files are refused.
+#include "cli_support.h"
+
+#include <illum/image.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <numbers>
+
+namespace illum {
+namespace {
+
+using test::runIllum;
+using test::TempDir;
+namespace fs = std::filesystem;
+
+const fs::path kModels = "/usr/share/assimp/models";
+
+struct Coverage {
+  int minX, minY, maxX, maxY;  // bounding box of the pixels that differ from the background
+  int count;
+};
+
+Coverage foreground(const Image& img) {
+  const std::uint8_t* bg = img.pixel(0, 0);
+  Coverage c{img.width, img.height, -1, -1, 0};
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x) {
+      const std::uint8_t* p = img.pixel(x, y);
+      if (std::abs(p[0] - bg[0]) + std::abs(p[1] - bg[1]) + std::abs(p[2] - bg[2]) <= 3) continue;
+      c.minX = std::min(c.minX, x), c.maxX = std::max(c.maxX, x);
+      c.minY = std::min(c.minY, y), c.maxY = std::max(c.maxY, y);
+      ++c.count;
+    }
+  return c;
+}
+
+// Pixels whose colour is dominated by one channel: 0 red, 1 green, 2 blue.
+int dominated(const Image& img, int channel, int margin = 40) {
+  int n = 0;
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x) {
+      const std::uint8_t* p = img.pixel(x, y);
+      bool ok = true;
+      for (int c = 0; c < 3; ++c)
+        if (c != channel && int(p[channel]) < int(p[c]) + margin) ok = false;
+      n += ok ? 1 : 0;
+    }
+  return n;
+}
+
+Image renderModel(const fs::path& model, const std::string& extra = "") {
+  TempDir dir;
+  const auto r = runIllum("render " + model.string() + " --resolution=400,300 -o " + (dir / "out.png").string() + " " + extra);
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  if (r.exitCode != 0) return Image(400, 300);
+  return readPng(dir / "out.png");
+}
+
+class GoodModel : public testing::TestWithParam<std::string> {};
+
+TEST_P(GoodModel, IsFramedSensibly) {
+  const Image img = renderModel(kModels / GetParam());
+  const Coverage c = foreground(img);
+  ASSERT_GT(c.count, 0) << "nothing drawn";
+  // Nothing cut off at the borders, and the model fills most of the frame in one direction.
+  EXPECT_GT(c.minX, 0);
+  EXPECT_GT(c.minY, 0);
+  EXPECT_LT(c.maxX, img.width - 1);
+  EXPECT_LT(c.maxY, img.height - 1);
+  const double fillX = double(c.maxX - c.minX + 1) / img.width, fillY = double(c.maxY - c.minY + 1) / img.height;
+  EXPECT_GT(std::max(fillX, fillY), 0.6) << fillX << " " << fillY;
+  EXPECT_GT(c.count, img.width * img.height / 20);
+}
+
+INSTANTIATE_TEST_SUITE_P(AssimpTestModels, GoodModel,
+                         testing::Values("OBJ/spider.obj", "PLY/Wuson.ply", "STL/Spider_ascii.stl",
+                                         "STL/Spider_binary.stl",
+                                         "glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb",
+                                         "glTF/CesiumMilkTruck/CesiumMilkTruck.gltf", "FBX/spider.fbx",
+                                         "Collada/duck.dae", "3DS/cubes_with_alpha.3DS"),
+                         [](const auto& info) {
+                           std::string s = fs::path(info.param).filename().string();
+                           for (char& ch : s)
+                             if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+                           return s;
+                         });
+
+TEST(ModelMaterials, FileColoursAppear) {
+  // The engine's cylinder heads are blue in its glTF materials; the duck is yellow (red+green).
+  EXPECT_GT(dominated(renderModel(kModels / "glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb"), 2), 1000);
+  const Image cubes = renderModel(kModels / "3DS/cubes_with_alpha.3DS");
+  EXPECT_GT(dominated(cubes, 0), 1000);  // the red cube
+}
+
+TEST(ModelMaterials, TexturesAppear) {
+  // BoxTextured's texture is a white square with a green and blue logo; untextured it is grey.
+  for (const char* file : {"glTF2/BoxTextured-glTF-Binary/BoxTextured.glb", "glTF2/BoxTextured-glTF/BoxTextured.gltf",
+                           "glTF2/BoxTextured-glTF-Embedded/BoxTextured.gltf"}) {
+    const Image img = renderModel(kModels / file);
+    EXPECT_GT(dominated(img, 1, 30), 1000) << file;  // the logo's green
+    EXPECT_GT(dominated(img, 2, 30), 1000) << file;  // and its blue
+  }
+}
+
+TEST(ModelMaterials, VertexColoursDriveTheDiffuseColour) {
+  const Image img = renderModel(kModels / "Collada/kwxport_test_vcolors.dae", "--shading=gouraud");
+  EXPECT_GT(dominated(img, 0), 500);
+  EXPECT_GT(dominated(img, 1), 500);
+}
+
+TEST(ModelMaterials, MissingTextureWarnsAndRendersUntextured) {
+  TempDir dir;
+  const fs::path src = kModels / "glTF2/BoxTextured-glTF";
+  fs::copy_file(src / "BoxTextured.gltf", dir / "BoxTextured.gltf");
+  fs::copy_file(src / "BoxTextured0.bin", dir / "BoxTextured0.bin");  // but not the PNG
+  const auto r = runIllum("render " + (dir / "BoxTextured.gltf").string() + " --resolution=200,150 -o " + (dir / "out.png").string());
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("illum: warning: "), std::string::npos);
+  EXPECT_NE(r.err.find("CesiumLogoFlat.png"), std::string::npos) << r.err;
+  EXPECT_TRUE(fs::exists(dir / "out.png"));
+}
+
+TEST(ModelFiles, WorkInSceneFilesAfterTheObjectTransform) {
+  TempDir dir;
+  const auto widthAtScale = [&](double scale) {
+    std::ofstream(dir / "scene.json") << R"({"width": 200, "height": 150, "camera": {"eye": [0, 0, 600], "far": 2000},
+      "objects": [{"mesh": {"type": "file", "path": ")"
+        << (kModels / "glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb").string()
+        << R"("}, "transform": [{"scale": [)" << scale << "," << scale << "," << scale << "]}]}]}";
+    const auto r = runIllum("render " + (dir / "scene.json").string() + " -o " + (dir / "out.png").string());
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    const Coverage c = foreground(readPng(dir / "out.png"));
+    return c.maxX - c.minX + 1;
+  };
+  const int small = widthAtScale(0.15), large = widthAtScale(0.3);
+  EXPECT_GT(small, 20);
+  EXPECT_NEAR(double(large) / small, 2.0, 0.1);
+}
+
+TEST(ModelCli, F3dStyleOptions) {
+  const fs::path box = kModels / "glTF2/BoxTextured-glTF-Binary/BoxTextured.glb";
+  TempDir dir;
+  const auto r = runIllum("render " + box.string() + " --resolution=120,90 --up=+Z --camera-azimuth-angle=10 "
+                          "--camera-elevation-angle=40 --camera-zoom-factor=0.5 --camera-view-angle=40 "
+                          "--orthographic --light-intensity=1.2 --normals=flat --crease-angle=30 "
+                          "--background-color=#336699 --model=phong --shading=gouraud --verbose -o " +
+                          (dir / "a.png").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const Image img = readPng(dir / "a.png");
+  EXPECT_EQ(img.width, 120);
+  EXPECT_EQ(img.pixel(0, 0)[0], 0x33);  // #rrggbb gives exactly those bytes
+  EXPECT_EQ(img.pixel(0, 0)[2], 0x99);
+  EXPECT_NE(r.err.find("triangles"), std::string::npos);
+  EXPECT_NE(r.err.find("bounds"), std::string::npos);
+  EXPECT_NE(r.err.find("peak memory"), std::string::npos);
+  // Zoomed out to half: the box covers about a quarter of the area it covers at zoom 1.
+  const auto full = runIllum("render " + box.string() + " --resolution=120,90 -o " + (dir / "b.png").string());
+  const auto half = runIllum("render " + box.string() + " --resolution=120,90 --camera-zoom-factor=0.5 -o " + (dir / "c.png").string());
+  ASSERT_EQ(full.exitCode, 0);
+  ASSERT_EQ(half.exitCode, 0);
+  const double ratio = double(foreground(readPng(dir / "c.png")).count) / foreground(readPng(dir / "b.png")).count;
+  EXPECT_NEAR(ratio, 0.25, 0.08);
+  // A transparent background.
+  ASSERT_EQ(runIllum("render " + box.string() + " --resolution=40,30 --no-background -o " + (dir / "d.png").string()).exitCode, 0);
+  EXPECT_EQ(readPng(dir / "d.png").pixel(0, 0)[3], 0);
+  // An explicit camera.
+  const auto placed = runIllum("render " + box.string() + " --resolution=40,30 --camera-position=0,0,5 --camera-focal-point=0,0,0 "
+                               "--camera-view-up=0,1,0 -o " + (dir / "e.png").string());
+  EXPECT_EQ(placed.exitCode, 0) << placed.err;
+  const auto badUp = runIllum("render " + box.string() + " --up=Q -o " + (dir / "f.png").string());
+  EXPECT_EQ(badUp.exitCode, 2);
+  EXPECT_NE(badUp.err.find("--up: expected one of"), std::string::npos);
+  EXPECT_FALSE(fs::exists(dir / "f.png"));
+}
+
+struct BrokenCase {
+  std::string file;
+  std::string message;
+};
+
+class BrokenModel : public testing::TestWithParam<BrokenCase> {};
+
+TEST_P(BrokenModel, IsRefusedCleanly) {
+  TempDir dir;
+  std::ofstream(dir / "out.png") << "previous";
+  const auto r = runIllum("render " + (kModels / GetParam().file).string() + " -o " + (dir / "out.png").string());
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  EXPECT_EQ(r.err.rfind("illum: error: " + (kModels / GetParam().file).string() + ": ", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find(GetParam().message), std::string::npos) << r.err;
+  EXPECT_EQ(test::slurp(dir / "out.png"), "previous");
+  EXPECT_EQ(dir.fileCount(), 1u);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    AssimpTestModels, BrokenModel,
+    testing::Values(BrokenCase{"glTF2/IndexOutOfRange/IndexOutOfRange.gltf", "out of range"},
+                    BrokenCase{"glTF2/IndexOutOfRange/AllIndicesOutOfRange.gltf", "cannot read the model"},
+                    BrokenCase{"glTF2/BoxWithInfinites-glTF-Binary/BoxWithInfinites.glb", "expected a finite position"},
+                    BrokenCase{"glTF2/MissingBin/BoxTextured.gltf", "BoxTextured0.bin"},
+                    BrokenCase{"glTF2/SchemaFailures/sceneWrongType.gltf", "cannot read the model"},
+                    BrokenCase{"glTF2/RecursiveNodes/RecursiveNodes.gltf", "recursive"},
+                    BrokenCase{"OBJ/no_such_model.obj", "no such model file"}),
+    [](const auto& info) { return std::to_string(info.index); });
+
+class HandMadeBrokenFile : public testing::Test {
+ protected:
+  void expectRefused(const std::string& name, const std::string& bytes, const std::string& message) {
+    TempDir dir;
+    { std::ofstream(dir / name, std::ios::binary) << bytes; }
+    const auto r = runIllum("render " + (dir / name).string() + " -o " + (dir / "out.png").string());
+    EXPECT_EQ(r.exitCode, 2) << name << ": " << r.err;
+    EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "out.png"));
+  }
+};
+
+TEST_F(HandMadeBrokenFile, EmptyTruncatedMalformed) {
+  expectRefused("empty.obj", "", "the model file is empty");
+  expectRefused("index.obj", "v 0 0 0\nv 1 0 0\nf 1 2 7\n", "out of range");
+  expectRefused("nan.obj", "v 0 0 nan\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "expected a finite position");
+  const std::string ply = test::slurp(kModels / "PLY/Wuson.ply");
+  expectRefused("truncated.ply", ply.substr(0, 5000), "truncated");
+  const std::string stl = test::slurp(kModels / "STL/Spider_binary.stl");
+  expectRefused("truncated.stl", stl.substr(0, 2000), "cannot read the model");
+  const std::string glb = test::slurp(kModels / "glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb");
+  expectRefused("truncated.glb", glb.substr(0, 3000), "cannot read the model");
+  expectRefused("garbage.obj", "this is not a model\n", "cannot read the model");
+}
+
+// A 2-million-triangle binary PLY (a finely tessellated sphere without normals) loads and renders.
+TEST(BigModel, TwoMillionTrianglePly) {
+  TempDir dir;
+  const int n = 1000, m = 1000;  // n × m quads
+  {
+    std::ofstream f(dir / "big.ply", std::ios::binary);
+    f << "ply\nformat binary_little_endian 1.0\nelement vertex " << (n + 1) * (m + 1)
+      << "\nproperty float x\nproperty float y\nproperty float z\nelement face " << 2 * n * m
+      << "\nproperty list uchar int vertex_indices\nend_header\n";
+    for (int j = 0; j <= m; ++j)
+      for (int i = 0; i <= n; ++i) {
+        const double th = std::numbers::pi * j / m, ph = 2 * std::numbers::pi * i / n;
+        const float p[3] = {float(std::sin(th) * std::cos(ph)), float(std::cos(th)), float(std::sin(th) * std::sin(ph))};
+        f.write(reinterpret_cast<const char*>(p), sizeof p);
+      }
+    for (int j = 0; j < m; ++j)
+      for (int i = 0; i < n; ++i) {
+        const int a = j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
+        const int triangles[2][3] = {{a, c, b}, {b, c, d}};
+        for (const auto& t : triangles) {
+          const char count = 3;
+          f.write(&count, 1);
+          f.write(reinterpret_cast<const char*>(t), sizeof t);
+        }
+      }
+  }
+  const auto r = runIllum("render " + (dir / "big.ply").string() + " --resolution=200,150 --verbose -o " + (dir / "big.png").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("2,000,000 triangles"), std::string::npos) << r.err;
+  const Image img = readPng(dir / "big.png");
+  const Coverage c = foreground(img);
+  // A sphere seen from anywhere is a disc: its area is π/4 of its bounding square.
+  const double w = c.maxX - c.minX + 1, h = c.maxY - c.minY + 1;
+  EXPECT_NEAR(w, h, 2);
+  EXPECT_NEAR(c.count / (w * h), std::numbers::pi / 4, 0.03);
+}
+
+}  // namespace
+}  // namespace illum
