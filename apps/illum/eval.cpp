@@ -6,9 +6,9 @@
 #include "cli_values.h"
 #include "commands.h"
 
-#include <nlohmann/json.hpp>
-
 #include <cmath>
+#include <cstdlib>
+#include <limits>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -92,7 +92,14 @@ void printRow(const char* name, const Color3& c) {
   std::printf("%-10s %9.4f %9.4f %9.4f\n", name, double(c.r), double(c.g), double(c.b));
 }
 
-nlohmann::json triple(const Color3& c) { return {double(c.r), double(c.g), double(c.b)}; }
+// A JSON array of three numbers at the precision they were computed in (6 significant digits
+// for float, 15 for double), not the binary expansion of a float.
+std::string triple(const Color3& c) {
+  const int digits = std::numeric_limits<Real>::digits10;
+  char buf[128];
+  std::snprintf(buf, sizeof buf, "[%.*g,%.*g,%.*g]", digits, double(c.r), digits, double(c.g), digits, double(c.b));
+  return buf;
+}
 
 int runEval(const EvalOptions& o) {
   const auto model = parseLightingModel(o.model);
@@ -134,10 +141,9 @@ int runEval(const EvalOptions& o) {
   const LightingTerms terms = evaluateTerms({&light, 1}, lightModel, material, *model, surface);
   const Color3 total = Color3(clampedColor(terms, material));
   if (o.json) {
-    nlohmann::json j = {{"emission", triple(terms.emission)}, {"ambient", triple(terms.ambient)},
-                        {"diffuse", triple(terms.diffuse)},   {"specular", triple(terms.specular)},
-                        {"total", triple(total)}};
-    std::cout << j.dump() << "\n";
+    std::cout << "{\"emission\":" << triple(terms.emission) << ",\"ambient\":" << triple(terms.ambient)
+              << ",\"diffuse\":" << triple(terms.diffuse) << ",\"specular\":" << triple(terms.specular)
+              << ",\"total\":" << triple(total) << "}\n";
     return 0;
   }
   std::printf("%-10s %9s %9s %9s\n", "", "R", "G", "B");

@@ -7,6 +7,9 @@
 #include <exception>
 #include <iostream>
 #include <new>
+#include <string>
+#include <vector>
+#include <algorithm>
 
 int main(int argc, char** argv) {
   CLI::App app{"illum: the classic lighting models (Lambert, Phong, Blinn-Phong) as OpenGL defines them"};
@@ -16,8 +19,14 @@ int main(int argc, char** argv) {
   const illum::cli::Command eval = illum::cli::addEvalCommand(app);
   const illum::cli::Command render = illum::cli::addRenderCommand(app);
 
+  // f3d's habit: `illum model.glb` means `illum render model.glb`.
+  std::vector<std::string> args(argv + 1, argv + argc);
+  if (!args.empty() && args[0] != "eval" && args[0] != "render" && !args[0].empty() && args[0][0] != '-')
+    args.insert(args.begin(), "render");
+  std::reverse(args.begin(), args.end());  // CLI11 takes the arguments last first
+
   try {
-    app.parse(argc, argv);
+    app.parse(args);
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
