@@ -1,5 +1,7 @@
 #include "raster/clip.h"
 
+#include <cmath>
+
 namespace illum {
 namespace {
 
@@ -24,6 +26,10 @@ std::array<Plane, 6> clipPlanes(int width, int height) {
 ClipResult clipTriangle(const std::array<ShadedVertex, 3>& tri, int width, int height,
                         std::vector<ShadedVertex>& polygon) {
   const auto planes = clipPlanes(width, height);
+  // A vertex pushed to infinity (an overflowing transform) has no place on screen.
+  for (const ShadedVertex& v : tri)
+    if (!std::isfinite(v.clip.x) || !std::isfinite(v.clip.y) || !std::isfinite(v.clip.z) || !std::isfinite(v.clip.w))
+      return ClipResult::Outside;
   // Trivial accept and reject with per-vertex outcodes.
   unsigned orCodes = 0, andCodes = ~0u;
   for (const ShadedVertex& v : tri) {

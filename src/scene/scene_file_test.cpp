@@ -141,9 +141,10 @@ TEST(SceneRejects, WrongTypes) {
 TEST(SceneRejects, NonFiniteNumbers) {
   EXPECT_EQ(errorOf(R"({"camera": {"eye": [0, 0, 1e999]}})"),
             "scene.json: invalid JSON: number overflow parsing '1e999' (expected a finite number)");
-  if constexpr (sizeof(Real) == sizeof(float))
+  if constexpr (sizeof(Real) == sizeof(float)) {
     EXPECT_EQ(errorOf(R"({"lights": [{"position": [0, 0, 1e40, 0]}]})"),
               "scene.json: /lights/0/position/2: expected a finite number");  // overflows float
+  }
 }
 
 TEST(SceneRejects, NegativeSizesAndOutOfRange) {
