@@ -1,12 +1,12 @@
 #include "scene/json_reader.h"
 
 #include <cmath>
+#include <functional>
+#include <set>
 #include <sstream>
 
 namespace illum {
-namespace {
-
-std::string escapePointerToken(const std::string& key) {
+std::string jsonPointerToken(const std::string& key) {
   std::string out;
   for (char c : key) {
     if (c == '~') out += "~0";
@@ -15,6 +15,8 @@ std::string escapePointerToken(const std::string& key) {
   }
   return out;
 }
+
+namespace {
 
 std::string formatReal(Real v) {
   std::ostringstream s;
@@ -26,6 +28,73 @@ std::string formatReal(Real v) {
 
 void JsonReader::fail(const std::string& expected) const {
   throw InputError(file_ + ": " + (pointer_.empty() ? "/" : pointer_) + ": " + expected);
+}
+
+namespace {
+
+// Follows the parser's events to know the JSON pointer of every key, and the keys seen so far
+// in each open object.
+class DuplicateKeyCheck {
+ public:
+  explicit DuplicateKeyCheck(const std::string& name) : name_(name) {}
+
+  bool operator()(int, Json::parse_event_t event, Json& parsed) {
+    switch (event) {
+      case Json::parse_event_t::object_start:
+      case Json::parse_event_t::array_start: {
+        std::string token = nextToken();
+        stack_.push_back({event == Json::parse_event_t::array_start, 0, {}, std::move(token)});
+        break;
+      }
+      case Json::parse_event_t::object_end:
+      case Json::parse_event_t::array_end:
+        stack_.pop_back();
+        break;
+      case Json::parse_event_t::key: {
+        const std::string key = parsed.get<std::string>();
+        pendingKey_ = jsonPointerToken(key);
+        if (!stack_.back().keys.insert(key).second)
+          throw InputError(name_ + ": " + pointer() + "/" + pendingKey_ + ": duplicate key \"" + key +
+                           "\" (expected each key once; the first would be silently replaced)");
+        break;
+      }
+      case Json::parse_event_t::value:
+        nextToken();
+        break;
+    }
+    return true;
+  }
+
+ private:
+  struct Frame {
+    bool array;
+    std::size_t next;
+    std::set<std::string> keys;
+    std::string token;  // where this container sits in its parent
+  };
+
+  // The token of the value that starts now: the next index in an array, the last key in an object.
+  std::string nextToken() {
+    if (stack_.empty()) return "";
+    Frame& top = stack_.back();
+    return top.array ? std::to_string(top.next++) : pendingKey_;
+  }
+  std::string pointer() const {
+    std::string p;
+    for (std::size_t i = 1; i < stack_.size(); ++i) p += "/" + stack_[i].token;
+    return p;
+  }
+
+  const std::string& name_;
+  std::vector<Frame> stack_;
+  std::string pendingKey_;
+};
+
+}  // namespace
+
+Json parseJsonStrict(const std::string& text, const std::string& name) {
+  DuplicateKeyCheck check(name);
+  return Json::parse(text, std::ref(check));
 }
 
 std::string JsonReader::describe() const {
@@ -47,13 +116,13 @@ void JsonReader::expectObject(std::initializer_list<const char*> allowed) const 
     if (known) continue;
     std::string list;
     for (const char* a : allowed) list += std::string(list.empty() ? "" : ", ") + a;
-    JsonReader(unused, file_, pointer_ + "/" + escapePointerToken(key))
+    JsonReader(unused, file_, pointer_ + "/" + jsonPointerToken(key))
         .fail("unknown key \"" + key + "\" (expected one of: " + list + ")");
   }
 }
 
 JsonReader JsonReader::at(const char* key) const {
-  return JsonReader(value_.at(key), file_, pointer_ + "/" + escapePointerToken(key));
+  return JsonReader(value_.at(key), file_, pointer_ + "/" + jsonPointerToken(key));
 }
 
 JsonReader JsonReader::item(std::size_t index) const {

@@ -15,6 +15,13 @@ namespace illum {
 
 using Json = nlohmann::json;
 
+// A key as a JSON pointer token ("~" → "~0", "/" → "~1").
+std::string jsonPointerToken(const std::string& key);
+
+// Parses JSON text, refusing duplicate keys (which JSON parsers silently resolve, so that a
+// repeated key would render as if the first were never written). `name` is used in messages.
+Json parseJsonStrict(const std::string& text, const std::string& name);
+
 class JsonReader {
  public:
   JsonReader(const Json& value, std::string file, std::string pointer = "")

@@ -46,7 +46,7 @@ void readCamera(const JsonReader& j, Camera& cam) {
 
 void readLightModel(const JsonReader& j, LightModel& lm) {
   j.expectObject({"ambient", "local_viewer", "two_sided"});
-  if (j.has("ambient")) lm.ambient = j.at("ambient").color3();
+  if (j.has("ambient")) lm.ambient = Color3(j.at("ambient").color34());
   if (j.has("local_viewer")) lm.localViewer = j.at("local_viewer").boolean();
   if (j.has("two_sided")) lm.twoSided = j.at("two_sided").boolean();
 }
@@ -56,9 +56,9 @@ Light readLight(const JsonReader& j) {
                   "spot_exponent", "spot_cutoff"});
   Light l;
   if (j.has("position")) l.position = j.at("position").vec4();
-  if (j.has("ambient")) l.ambient = j.at("ambient").color3();
-  if (j.has("diffuse")) l.diffuse = j.at("diffuse").color3();
-  if (j.has("specular")) l.specular = j.at("specular").color3();
+  if (j.has("ambient")) l.ambient = Color3(j.at("ambient").color34());
+  if (j.has("diffuse")) l.diffuse = Color3(j.at("diffuse").color34());
+  if (j.has("specular")) l.specular = Color3(j.at("specular").color34());
   if (j.has("attenuation")) {
     const JsonReader a = j.at("attenuation");
     a.numbers(3);
@@ -238,7 +238,7 @@ std::string describeParseError(const Json::parse_error& e, const std::string& te
 Scene parseScene(const std::string& text, const std::string& name, const std::filesystem::path& baseDir) {
   Json root;
   try {
-    root = Json::parse(text);
+    root = parseJsonStrict(text, name);
   } catch (const Json::parse_error& e) {
     throw InputError(name + ": " + describeParseError(e, text));
   } catch (const Json::out_of_range& e) {

@@ -201,6 +201,25 @@ TEST(SceneRejects, BadTriangles) {
             "scene.json: /objects/0/mesh/path: ./no/such/model.obj: no such model file");
 }
 
+TEST(SceneRejects, DuplicateKeysWithPath) {
+  EXPECT_EQ(errorOf(R"({"width": 10, "width": 20})"),
+            "scene.json: /width: duplicate key \"width\" (expected each key once; the first would be silently replaced)");
+  EXPECT_EQ(errorOf(R"({"lights": [{}, {"diffuse": [1, 1, 1], "position": [0, 0, 1, 0], "diffuse": [0, 0, 0]}]})")
+                .rfind("scene.json: /lights/1/diffuse: duplicate key", 0),
+            0u);
+  EXPECT_EQ(errorOf(R"({"objects": [[], {"mesh": {"type": "cube", "size": 1, "size": 2}}]})")
+                .rfind("scene.json: /objects/1/mesh/size: duplicate key", 0),
+            0u);
+  // The same key in different objects is fine.
+  EXPECT_EQ(parse(R"({"lights": [{"diffuse": [1, 0, 0]}, {"diffuse": [0, 1, 0]}]})").lights.size(), 2u);
+}
+
+TEST(SceneFile, LightColoursMayCarryAlpha) {
+  const Scene s = parse(R"({"lights": [{"diffuse": [0.5, 0.25, 1, 1]}], "light_model": {"ambient": [0.1, 0.1, 0.1, 1]}})");
+  EXPECT_EQ(s.lights[0].diffuse, Color3(0.5, 0.25, 1));
+  EXPECT_FLOAT_EQ(s.lightModel.ambient.g, 0.1f);
+}
+
 TEST(SceneRejects, InvalidJsonNamesLineAndColumn) {
   const std::string e = errorOf("{\n  \"width\": 64,\n  \"height\": ,\n}");
   EXPECT_EQ(e.rfind("scene.json: line 3, column 13: invalid JSON", 0), 0u) << e;
