@@ -10,7 +10,7 @@ cd "$(dirname "$0")/.."
 PACKAGES=(
   g++ cmake make pkg-config
   libglm-dev nlohmann-json3-dev libcli11-dev libstb-dev libassimp-dev
-  libgtest-dev libosmesa6-dev assimp-testmodels
+  libgtest-dev libosmesa6-dev assimp-testmodels fonts-dejavu-core
 )
 
 install_packages() {

@@ -171,12 +171,25 @@ double peakMemoryMiB() {
 
 int runRender(RenderOptions o) {
   if (!o.resolution.empty()) parseResolution(o.resolution, o);
+  std::optional<LightingModel> lightingModel;
+  std::optional<Shading> shading;
+  if (!o.model.empty()) {
+    lightingModel = parseLightingModel(o.model);
+    if (!lightingModel) throw InputError("--model: expected blinn-phong, phong or lambert, got \"" + o.model + "\"");
+  }
+  if (!o.shading.empty()) {
+    shading = parseShading(o.shading);
+    if (!shading) throw InputError("--shading: expected flat, gouraud or phong, got \"" + o.shading + "\"");
+  }
   const auto start = Clock::now();
   Scene scene;
   std::optional<ImportedModel> model;
   if (o.input.empty() || isSceneFile(o.input)) {
     rejectModelOnlyOptions(o);
-    scene = o.input.empty() ? defaultScene() : loadSceneFile(o.input);
+    // The built-in scene's captions name the model and shading it is drawn with.
+    scene = o.input.empty() ? defaultScene(lightingModel.value_or(LightingModel::BlinnPhong),
+                                           shading.value_or(Shading::Phong))
+                            : loadSceneFile(o.input);
     if (o.width) scene.width = *o.width;
     if (o.height) scene.height = *o.height;
     applyExplicitCamera(o, scene.camera);
@@ -194,22 +207,17 @@ int runRender(RenderOptions o) {
     scene = modelScene(o, *model);
   }
   const auto loaded = Clock::now();
-  if (!o.model.empty()) {
-    const auto m = parseLightingModel(o.model);
-    if (!m) throw InputError("--model: expected blinn-phong, phong or lambert, got \"" + o.model + "\"");
-    scene.model = *m;
-  }
-  if (!o.shading.empty()) {
-    const auto s = parseShading(o.shading);
-    if (!s) throw InputError("--shading: expected flat, gouraud or phong, got \"" + o.shading + "\"");
-    scene.shading = *s;
-  }
+  if (lightingModel) scene.model = *lightingModel;
+  if (shading) scene.shading = *shading;
   if (!o.background.empty()) scene.background = Color4(parseColor("--background-color", o.background, true), 1);
   if (o.noBackground) scene.background.a = 0;
 
   RenderStats stats;
   const Image image = renderScene(scene, &stats);
   const auto rendered = Clock::now();
+  if (stats.labelsSkipped)
+    std::fprintf(stderr, "illum: warning: labels left out: the font /usr/share/fonts/truetype/dejavu/DejaVuSans.ttf "
+                         "(Debian package fonts-dejavu-core) is missing\n");
   writePng(o.output, image);
   if (o.verbose) {
     const auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };

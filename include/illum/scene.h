@@ -8,6 +8,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,16 @@ struct Object {
   // (GL_COLOR_MATERIAL with GL_AMBIENT_AND_DIFFUSE).
 };
 
+// Text drawn over the finished picture, centred on a point of the world or of the image, so that a
+// picture can say what it shows. Labels are not lit and not hidden by geometry.
+struct Label {
+  std::string text;
+  std::optional<Vec3> position;  // world space: the text is centred just below its projection
+  std::optional<Vec2> pixel;     // or image pixels from the top-left: the centre of the baseline
+  Color3 color{1, 1, 1};
+  Real size = 16;  // pixel height
+};
+
 struct Scene {
   int width = 640;
   int height = 480;
@@ -50,6 +61,7 @@ struct Scene {
   LightModel lightModel;
   std::vector<Light> lights{Light{}};
   std::vector<Object> objects;
+  std::vector<Label> labels;
 };
 
 // Reads a scene file; relative mesh paths are resolved against the file's folder.
@@ -61,7 +73,7 @@ Scene parseScene(const std::string& text, const std::string& name,
                  const std::filesystem::path& baseDir);
 
 // The built-in scene `illum render` draws with no arguments: GLUT's solids in several materials
-// under coloured lights, the seeds' story at a glance.
-Scene defaultScene();
+// under coloured lights, the seeds' story at a glance, labelled with what each part shows.
+Scene defaultScene(LightingModel model = LightingModel::BlinnPhong, Shading shading = Shading::Phong);
 
 }  // namespace illum

@@ -5,6 +5,7 @@
 #include "raster/fragment.h"
 #include "raster/frame_context.h"
 #include "raster/framebuffer.h"
+#include "raster/labels.h"
 #include "raster/rasterize.h"
 #include "raster/setup.h"
 #include "raster/vertex.h"
@@ -72,8 +73,10 @@ Image renderScene(const Scene& scene, RenderStats* statsOut) {
   Framebuffer fb(scene.width, scene.height, scene.background);
   RenderStats stats;
   for (const Object& object : scene.objects) drawObject(frame, object, fb, stats);
+  Image image = fb.toImage();
+  stats.labelsSkipped = !drawLabels(image, scene);
   if (statsOut) *statsOut = stats;
-  return fb.toImage();
+  return image;
 }
 
 }  // namespace illum

@@ -215,6 +215,35 @@ TEST(Shading, FlatUsesTheLastVertex) {
   EXPECT_EQ(img.pixel(8, 12)[0], std::lround(0.4 * 0.5 * 255));
 }
 
+TEST(Render, LabelsAreDrawnOverThePicture) {
+  Scene s;
+  s.width = 120;
+  s.height = 40;
+  Label title;
+  title.text = "N·L";
+  title.pixel = Vec2(60, 28);
+  title.size = 20;
+  s.labels.push_back(title);
+  Label behind;
+  behind.text = "behind the camera";
+  behind.position = Vec3(0, 0, 10);  // the default camera sits at z = 5 looking towards −Z
+  s.labels.push_back(behind);
+  RenderStats stats;
+  const Image img = renderScene(s, &stats);
+  ASSERT_FALSE(stats.labelsSkipped) << "install fonts-dejavu-core";
+  int lit = 0, minX = s.width, maxX = 0;
+  for (int y = 0; y < s.height; ++y)
+    for (int x = 0; x < s.width; ++x)
+      if (img.pixel(x, y)[0] > 128) {
+        ++lit;
+        minX = std::min(minX, x);
+        maxX = std::max(maxX, x);
+      }
+  EXPECT_GT(lit, 40);
+  EXPECT_NEAR((minX + maxX) / 2.0, 60, 3);  // centred on its pixel
+  EXPECT_LT(maxX - minX, 60);               // only the short title; nothing from behind the camera
+}
+
 TEST(Render, SameBytesEveryRun) {
   const Scene s = defaultScene();
   EXPECT_EQ(renderScene(s).rgba, renderScene(s).rgba);

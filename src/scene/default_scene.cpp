@@ -5,6 +5,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <memory>
+#include <string>
 
 namespace illum {
 namespace {
@@ -19,13 +20,33 @@ Material material(Color3 ambient, Color3 diffuse, Color3 specular, Real shinines
 }
 
 Object object(Mesh mesh, Mat4 worldFromObject, Material m) {
-  return {std::make_shared<const Mesh>(std::move(mesh)), worldFromObject, m};
+  return {std::make_shared<const Mesh>(std::move(mesh)), worldFromObject, m, nullptr};
+}
+
+std::string describe(LightingModel model) {
+  switch (model) {
+    case LightingModel::BlinnPhong: return "Blinn-Phong: ambient + diffuse (N·L) + specular (N·H)ⁿ";
+    case LightingModel::Phong: return "Phong: ambient + diffuse (N·L) + specular (R·V)ⁿ";
+    case LightingModel::Lambert: return "Lambert: ambient + diffuse (N·L), no specular";
+  }
+  return "";
+}
+
+std::string describe(Shading shading) {
+  switch (shading) {
+    case Shading::Flat: return "flat shading: one colour per triangle, lit at its last vertex";
+    case Shading::Gouraud: return "Gouraud shading: lit per vertex, colours interpolated";
+    case Shading::Phong: return "Phong shading: normals interpolated, lit per pixel";
+  }
+  return "";
 }
 
 }  // namespace
 
-Scene defaultScene() {
+Scene defaultScene(LightingModel model, Shading shading) {
   Scene s;
+  s.model = model;
+  s.shading = shading;
   s.width = 960;
   s.height = 540;
   s.background = {0.06, 0.07, 0.1, 1};
@@ -78,6 +99,32 @@ Scene defaultScene() {
   floor.indices = {0, 3, 2, 0, 2, 1};
   s.objects.push_back(object(std::move(floor), Mat4(1),
                              material({0.12, 0.12, 0.13}, {0.42, 0.42, 0.45}, {0.25, 0.25, 0.25}, 30)));
+
+  // Say what the picture shows.
+  const auto caption = [&](Real x, const char* text) {
+    Label l;
+    l.text = text;
+    l.position = Vec3(x, 0, 1.0f);
+    l.size = 15;
+    l.color = {0.92, 0.92, 0.92};
+    s.labels.push_back(l);
+  };
+  caption(-3.4f, "plastic, n = 60");
+  caption(-1.55f, "gold, n = 51");
+  caption(0.3f, "porcelain, n = 90");
+  caption(2.2f, "matte: no specular");
+  caption(3.7f, "dull, n = 8");
+  const auto title = [&](Real y, const std::string& text, Real size) {
+    Label l;
+    l.text = text;
+    l.pixel = Vec2(Real(s.width) / 2, y);
+    l.size = size;
+    s.labels.push_back(l);
+  };
+  title(30, describe(model), 20);
+  title(54, describe(shading), 16);
+  title(Real(s.height) - 14,
+        "lights: warm key, positional with 1/(a + bd + cd²) · cool fill, directional · magenta spot from behind", 14);
   return s;
 }
 

@@ -221,6 +221,22 @@ void readObject(const JsonReader& j, const std::filesystem::path& baseDir, std::
   out.push_back(std::move(o));
 }
 
+Label readLabel(const JsonReader& j) {
+  j.expectObject({"text", "position", "pixel", "color", "size"});
+  Label l;
+  if (!j.has("text")) j.fail("expected a \"text\"");
+  l.text = j.at("text").string();
+  if (j.has("position") == j.has("pixel")) j.fail("expected either \"position\" (world) or \"pixel\" (image), not both or neither");
+  if (j.has("position")) l.position = j.at("position").vec3();
+  if (j.has("pixel")) {
+    const auto v = j.at("pixel").numbers(2);
+    l.pixel = Vec2(v[0], v[1]);
+  }
+  if (j.has("color")) l.color = j.at("color").color3();
+  if (j.has("size")) l.size = j.at("size").number(4, 512);
+  return l;
+}
+
 std::string describeParseError(const Json::parse_error& e, const std::string& text) {
   // Turn the byte offset into a line and column a text editor shows.
   std::size_t line = 1, column = 1;
@@ -249,7 +265,7 @@ Scene parseScene(const std::string& text, const std::string& name, const std::fi
   }
   const JsonReader j(root, name);
   j.expectObject({"version", "width", "height", "background", "model", "shading", "camera",
-                  "light_model", "lights", "objects"});
+                  "light_model", "lights", "objects", "labels"});
   Scene s;
   if (j.has("version") && j.at("version").integer(0, std::numeric_limits<int>::max()) != 1)
     j.at("version").fail("expected version 1");
@@ -278,6 +294,10 @@ Scene parseScene(const std::string& text, const std::string& name, const std::fi
   if (j.has("objects")) {
     const JsonReader objects = j.at("objects");
     for (std::size_t i = 0, n = objects.arraySize(); i < n; ++i) readObject(objects.item(i), baseDir, s.objects);
+  }
+  if (j.has("labels")) {
+    const JsonReader labels = j.at("labels");
+    for (std::size_t i = 0, n = labels.arraySize(); i < n; ++i) s.labels.push_back(readLabel(labels.item(i)));
   }
   return s;
 }

@@ -220,6 +220,19 @@ TEST(SceneFile, LightColoursMayCarryAlpha) {
   EXPECT_FLOAT_EQ(s.lightModel.ambient.g, 0.1f);
 }
 
+TEST(SceneFile, Labels) {
+  const Scene s = parse(R"({"labels": [{"text": "key light", "position": [1, 2, 3]},
+                                       {"text": "title", "pixel": [320, 20], "color": [1, 0, 0], "size": 24}]})");
+  ASSERT_EQ(s.labels.size(), 2u);
+  EXPECT_EQ(*s.labels[0].position, Vec3(1, 2, 3));
+  EXPECT_EQ(s.labels[0].size, 16);
+  EXPECT_EQ(*s.labels[1].pixel, Vec2(320, 20));
+  EXPECT_EQ(s.labels[1].color, Color3(1, 0, 0));
+  EXPECT_EQ(errorOf(R"({"labels": [{"text": "x"}]})"),
+            "scene.json: /labels/0: expected either \"position\" (world) or \"pixel\" (image), not both or neither");
+  EXPECT_EQ(errorOf(R"({"labels": [{"position": [0, 0, 0]}]})"), "scene.json: /labels/0: expected a \"text\"");
+}
+
 TEST(SceneRejects, InvalidJsonNamesLineAndColumn) {
   const std::string e = errorOf("{\n  \"width\": 64,\n  \"height\": ,\n}");
   EXPECT_EQ(e.rfind("scene.json: line 3, column 13: invalid JSON", 0), 0u) << e;
