@@ -59,7 +59,7 @@ struct Scene {
   Shading shading = Shading::Phong;
   Camera camera;
   LightModel lightModel;
-  std::vector<Light> lights{Light{}};
+  std::vector<Light> lights = std::vector<Light>(1);  // one light with the defaults
   std::vector<Object> objects;
   std::vector<Label> labels;
 };

@@ -57,7 +57,9 @@ TEST(Rasterizer, TriangleFanHasNoCracksAndNoDoubleHits) {
   for (int y = 0; y < kH; ++y)
     for (int x = 0; x < kW; ++x) {
       const double px = x + 0.5 - cx, py = y + 0.5 - cy;
-      if (px * px + py * py < 15 * 15) EXPECT_EQ(hits[y * kW + x], 1) << x << "," << y;
+      if (px * px + py * py < 15 * 15) {
+        EXPECT_EQ(hits[y * kW + x], 1) << x << "," << y;
+      }
     }
   EXPECT_GT(covered, 900);
 }
