@@ -140,6 +140,8 @@ Scene modelScene(const RenderOptions& o, ImportedModel& model) {
   s.lightModel.ambient = cameraRigAmbient(intensity);
   // Flipped faces are common in the wild; light both sides so they are never black.
   s.lightModel.twoSided = true;
+  // Glass and other translucent materials (MTL d, glTF alpha) show what is behind them.
+  s.blend = true;
   s.objects = std::move(model.objects);
   return s;
 }

@@ -62,6 +62,9 @@ struct Scene {
   std::vector<Light> lights = std::vector<Light>(1);  // one light with the defaults
   std::vector<Object> objects;
   std::vector<Label> labels;
+  // GL_BLEND with glBlendFuncSeparate(SRC_ALPHA, ONE_MINUS_SRC_ALPHA, ONE, ONE_MINUS_SRC_ALPHA):
+  // translucent objects are drawn after the opaque ones, farthest first. Off, like GL, by default.
+  bool blend = false;
 };
 
 // Reads a scene file; relative mesh paths are resolved against the file's folder.

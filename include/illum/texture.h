@@ -16,6 +16,7 @@ class Texture {
   int width() const { return levels_.front().width; }
   int height() const { return levels_.front().height; }
   int levelCount() const { return int(levels_.size()); }
+  bool hasTransparency() const { return hasTransparency_; }  // any texel with alpha < 1
 
   // Trilinear sample at `uv` (GL convention: v = 0 is the image's bottom row) for a footprint of
   // `texelsPerPixel` base-level texels per pixel (the mip level is log2 of it).
@@ -29,6 +30,7 @@ class Texture {
     std::vector<Vec4> texels;  // rows bottom to top, as GL stores them
   };
   std::vector<Level> levels_;
+  bool hasTransparency_ = false;
 };
 
 }  // namespace illum

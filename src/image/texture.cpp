@@ -11,6 +11,7 @@ Texture::Texture(const Image& image) {
   for (int y = 0; y < image.height; ++y)
     for (int x = 0; x < image.width; ++x) {
       const std::uint8_t* p = image.pixel(x, image.height - 1 - y);
+      hasTransparency_ = hasTransparency_ || p[3] < 255;
       base.texels[std::size_t(y) * std::size_t(base.width) + std::size_t(x)] =
           Vec4(p[0], p[1], p[2], p[3]) / Real(255);
     }

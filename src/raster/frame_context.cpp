@@ -13,6 +13,7 @@ FrameContext FrameContext::fromScene(const Scene& scene) {
   f.lightModel = scene.lightModel;
   f.model = scene.model;
   f.shading = scene.shading;
+  f.blend = scene.blend;
   return f;
 }
 

@@ -16,6 +16,7 @@ struct FrameContext {
   LightModel lightModel;
   LightingModel model = LightingModel::BlinnPhong;
   Shading shading = Shading::Phong;
+  bool blend = false;
 
   static FrameContext fromScene(const Scene& scene);
 };

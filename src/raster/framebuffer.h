@@ -35,6 +35,14 @@ class Framebuffer {
     for (int i = 0; i < 4; ++i) p[i] = toUnorm8(c[i]);
   }
 
+  // Source-over blending: RGB by (SRC_ALPHA, ONE_MINUS_SRC_ALPHA), alpha by (ONE, ONE_MINUS_SRC_ALPHA).
+  void blendColor(int x, int y, const Color4& c) {
+    std::uint8_t* p = &color_[index(x, y) * 4];
+    const Real a = std::clamp(c.a, Real(0), Real(1));
+    for (int i = 0; i < 3; ++i) p[i] = toUnorm8(std::clamp(c[i], Real(0), Real(1)) * a + Real(p[i]) / 255 * (1 - a));
+    p[3] = toUnorm8(a + Real(p[3]) / 255 * (1 - a));
+  }
+
   // The picture as an image file stores it: row 0 at the top.
   Image toImage() const;
 

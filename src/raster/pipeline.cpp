@@ -10,6 +10,9 @@
 #include "raster/setup.h"
 #include "raster/vertex.h"
 
+#include <algorithm>
+#include <limits>
+
 namespace illum {
 namespace {
 
@@ -40,7 +43,8 @@ void drawTriangle(const FrameContext& frame, const Object& object, const Triangl
     }
     // GL_MODULATE: the lit colour times the texel, alpha included.
     if (texture) c *= sampleDiffuseTexture(*texture, t, l0, l1, l2);
-    fb.writeColor(x, y, c);
+    if (frame.blend) fb.blendColor(x, y, c);
+    else fb.writeColor(x, y, c);
   });
 }
 
@@ -66,13 +70,41 @@ void drawObject(const FrameContext& frame, const Object& object, Framebuffer& fb
   }
 }
 
+bool isTranslucent(const Object& o) {
+  return o.material.diffuse.a < 1 || (o.diffuseTexture && o.diffuseTexture->hasTransparency()) ||
+         std::any_of(o.mesh->colors.begin(), o.mesh->colors.end(), [](const Color4& c) { return c.a < 1; });
+}
+
+// Scene order, or with blending the opaque objects first and then the translucent ones from the
+// farthest to the nearest (by the eye-space depth of their bounds' centre). Ties keep scene order.
+std::vector<const Object*> drawingOrder(const Scene& scene, const FrameContext& frame) {
+  std::vector<const Object*> order;
+  for (const Object& o : scene.objects) order.push_back(&o);
+  if (!scene.blend) return order;
+  const auto depth = [&](const Object* o) {
+    Vec3 lo(std::numeric_limits<Real>::max()), hi(-std::numeric_limits<Real>::max());
+    for (const Vec3& p : o->mesh->positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    return (frame.viewFromWorld * o->worldFromObject * Vec4((lo + hi) * Real(0.5), 1)).z;
+  };
+  std::vector<std::pair<Real, const Object*>> translucent;
+  std::vector<const Object*> opaque;
+  for (const Object* o : order) {
+    if (isTranslucent(*o)) translucent.push_back({depth(o), o});
+    else opaque.push_back(o);
+  }
+  // Eye space looks down −Z: the most negative z is the farthest.
+  std::stable_sort(translucent.begin(), translucent.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (const auto& [unused, o] : translucent) opaque.push_back(o);
+  return opaque;
+}
+
 }  // namespace
 
 Image renderScene(const Scene& scene, RenderStats* statsOut) {
   const FrameContext frame = FrameContext::fromScene(scene);
   Framebuffer fb(scene.width, scene.height, scene.background);
   RenderStats stats;
-  for (const Object& object : scene.objects) drawObject(frame, object, fb, stats);
+  for (const Object* object : drawingOrder(scene, frame)) drawObject(frame, *object, fb, stats);
   Image image = fb.toImage();
   stats.labelsSkipped = !drawLabels(image, scene);
   if (statsOut) *statsOut = stats;

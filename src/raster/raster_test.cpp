@@ -246,6 +246,29 @@ TEST(Render, LabelsAreDrawnOverThePicture) {
   EXPECT_LT(maxX - minX, 60);               // only the short title; nothing from behind the camera
 }
 
+TEST(Render, BlendingDrawsTranslucentObjectsOverOpaqueOnes) {
+  // A half-transparent red quad in front of an opaque blue one, listed first in the scene.
+  Scene s;
+  s.width = s.height = 8;
+  s.blend = true;
+  Object front = emissive(quad({-5, -5, 1}, {5, -5, 1}, {5, 5, 1}, {-5, 5, 1}), {1, 0, 0});
+  front.material.diffuse.a = 0.5f;
+  s.objects.push_back(front);
+  s.objects.push_back(emissive(quad({-5, -5, -1}, {5, -5, -1}, {5, 5, -1}, {-5, 5, -1}), {0, 0, 1}));
+  const Image img = renderScene(s);
+  const std::uint8_t* p = img.pixel(4, 4);
+  EXPECT_EQ(p[0], 128);  // 1·0.5 + 0·0.5
+  EXPECT_EQ(p[2], 128);  // 0·0.5 + 1·0.5
+  EXPECT_EQ(p[3], 255);  // over an opaque background the result stays opaque
+  // Without blending GL writes the fragment as it is, alpha included; the front quad, drawn
+  // first, hides the blue one by the depth test.
+  s.blend = false;
+  const Image plain = renderScene(s);
+  EXPECT_EQ(plain.pixel(4, 4)[0], 255);
+  EXPECT_EQ(plain.pixel(4, 4)[2], 0);
+  EXPECT_EQ(plain.pixel(4, 4)[3], 128);
+}
+
 TEST(Render, SameBytesEveryRun) {
   const Scene s = defaultScene();
   EXPECT_EQ(renderScene(s).rgba, renderScene(s).rgba);

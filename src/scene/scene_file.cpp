@@ -265,7 +265,7 @@ Scene parseScene(const std::string& text, const std::string& name, const std::fi
   }
   const JsonReader j(root, name);
   j.expectObject({"version", "width", "height", "background", "model", "shading", "camera",
-                  "light_model", "lights", "objects", "labels"});
+                  "light_model", "lights", "objects", "labels", "blend"});
   Scene s;
   if (j.has("version") && j.at("version").integer(0, std::numeric_limits<int>::max()) != 1)
     j.at("version").fail("expected version 1");
@@ -295,6 +295,7 @@ Scene parseScene(const std::string& text, const std::string& name, const std::fi
     const JsonReader objects = j.at("objects");
     for (std::size_t i = 0, n = objects.arraySize(); i < n; ++i) readObject(objects.item(i), baseDir, s.objects);
   }
+  if (j.has("blend")) s.blend = j.at("blend").boolean();
   if (j.has("labels")) {
     const JsonReader labels = j.at("labels");
     for (std::size_t i = 0, n = labels.arraySize(); i < n; ++i) s.labels.push_back(readLabel(labels.item(i)));
