@@ -140,6 +140,30 @@ TEST(CliRender, UnwritableOutputFailsCleanly) {
   EXPECT_EQ(dir.fileCount(), 0u);
 }
 
+TEST(CliRender, DebugPixelExplainsThePixel) {
+  TempDir dir;
+  const RunResult r = run("render --debug-pixel 180,200 -o " + (dir / "out.png").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("pixel (180, 200): object 0"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("light 2 specular"), std::string::npos) << r.out;
+  // Per-pixel shading: the report's total is what was written, and the bytes are the image's.
+  const auto total = r.out.find("total (clamped)");
+  const auto bytes = r.out.find("= bytes ");
+  ASSERT_NE(total, std::string::npos);
+  ASSERT_NE(bytes, std::string::npos);
+  int b[4] = {0, 0, 0, 0};
+  ASSERT_EQ(std::sscanf(r.out.c_str() + bytes, "= bytes %d %d %d %d", &b[0], &b[1], &b[2], &b[3]), 4);
+  const illum::Image img = illum::readPng(dir / "out.png");
+  for (int c = 0; c < 4; ++c) EXPECT_EQ(img.pixel(180, 200)[c], b[c]);
+  double t[3], w[3];
+  ASSERT_EQ(std::sscanf(r.out.c_str() + total, "total (clamped) %lf %lf %lf", &t[0], &t[1], &t[2]), 3);
+  ASSERT_EQ(std::sscanf(r.out.c_str() + r.out.find("written: "), "written: %lf %lf %lf", &w[0], &w[1], &w[2]), 3);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(t[c], w[c], 1e-4);
+  const RunResult bg = run("render --debug-pixel 5,5 -o " + (dir / "out.png").string());
+  EXPECT_NE(bg.out.find("background"), std::string::npos);
+  EXPECT_EQ(run("render --debug-pixel 5000,5 -o " + (dir / "out.png").string()).exitCode, 2);
+}
+
 TEST(CliRender, SameBytesEveryRun) {
   TempDir dir;
   ASSERT_EQ(run("render -o " + (dir / "a.png").string()).exitCode, 0);

@@ -7,6 +7,7 @@
 
 #include "cli_values.h"
 #include "commands.h"
+#include "pixel_report.h"
 #include <illum/framing.h>
 #include <illum/import.h>
 
@@ -36,6 +37,7 @@ struct RenderOptions {
   std::optional<double> viewAngle, azimuth, elevation, zoom, lightIntensity, creaseAngle;
   bool orthographic = false;
   std::string normals;
+  std::string debugPixel;
   bool verbose = false;
 };
 
@@ -215,7 +217,15 @@ int runRender(RenderOptions o) {
   if (o.noBackground) scene.background.a = 0;
 
   RenderStats stats;
-  const Image image = renderScene(scene, &stats);
+  std::optional<PixelProbe> probe;
+  if (!o.debugPixel.empty()) {
+    const auto comma = o.debugPixel.find(',');
+    if (comma == std::string::npos) throw InputError("--debug-pixel: expected x,y, got \"" + o.debugPixel + "\"");
+    probe.emplace();
+    probe->x = int(parseNumber("--debug-pixel", o.debugPixel.substr(0, comma), 0, Real(scene.width - 1)));
+    probe->y = int(parseNumber("--debug-pixel", o.debugPixel.substr(comma + 1), 0, Real(scene.height - 1)));
+  }
+  const Image image = renderScene(scene, &stats, probe ? &*probe : nullptr);
   const auto rendered = Clock::now();
   if (stats.labelsSkipped)
     std::fprintf(stderr, "illum: warning: labels left out: the font /usr/share/fonts/truetype/dejavu/DejaVuSans.ttf "
@@ -231,6 +241,7 @@ int runRender(RenderOptions o) {
                  withSeparators(stats.fragmentsShaded).c_str(), peakMemoryMiB());
   }
   std::printf("%s\n", o.output.c_str());
+  if (probe) printPixelReport(scene, *probe);
   return 0;
 }
 
@@ -265,6 +276,7 @@ Command addRenderCommand(CLI::App& app) {
   cmd->add_option("--light-intensity", o->lightIntensity, "Model files: scale the default light rig [1]");
   cmd->add_option("--normals", o->normals, "Model files: auto (default), flat, smooth or file");
   cmd->add_option("--crease-angle", o->creaseAngle, "Model files: generated normals stay sharp above this angle [40]");
+  cmd->add_option("--debug-pixel", o->debugPixel, "Print every term of the lighting equation at pixel x,y (0,0 top-left)");
   cmd->add_flag("-v,--verbose", o->verbose, "Print model statistics, bounds, times and peak memory on stderr");
   return [o] { return runRender(*o); };
 }

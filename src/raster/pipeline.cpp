@@ -16,19 +16,56 @@
 namespace illum {
 namespace {
 
-struct TriangleColor {
-  Color4 front, back;  // flat shading: the provoking vertex's colours
+// Flat shading's colours and what they were lit with: GL's provoking vertex is the triangle's last.
+struct ProvokingVertex {
+  Color4 front, back;
+  Vec3 eyePosition, eyeNormal;
 };
 
-void drawTriangle(const FrameContext& frame, const Object& object, const TriangleSetup& t,
-                  const TriangleColor& flat, Framebuffer& fb, RenderStats& stats) {
+// What every triangle of a frame draws into.
+struct DrawTarget {
+  const FrameContext& frame;
+  Framebuffer& fb;
+  RenderStats& stats;
+  PixelProbe* probe;  // null unless a pixel is watched
+};
+
+// Records the fragment at the watched pixel: where it was lit and what it wrote.
+void recordProbe(const DrawTarget& target, const Object& object, std::size_t objectIndex, std::size_t triangle,
+                 const TriangleSetup& t, const ProvokingVertex& flat, const std::array<Real, 3>& w, const Color4& c) {
+  PixelProbe& p = *target.probe;
+  const auto& v = t.vertex;
+  const bool back = target.frame.lightModel.twoSided && !t.frontFacing;
+  p.hit = true;
+  p.object = objectIndex;
+  p.triangle = triangle;
+  p.frontFacing = t.frontFacing;
+  p.written = c;
+  p.material = object.material;
+  if (!object.mesh->colors.empty())
+    p.material = withVertexColor(object.material, w[0] * v[0]->color + w[1] * v[1]->color + w[2] * v[2]->color);
+  if (target.frame.shading == Shading::Flat) {
+    p.eyePosition = flat.eyePosition;
+    p.eyeNormal = flat.eyeNormal;
+  } else {
+    p.eyePosition = w[0] * v[0]->eyePosition + w[1] * v[1]->eyePosition + w[2] * v[2]->eyePosition;
+    const Vec3 n = w[0] * v[0]->eyeNormal + w[1] * v[1]->eyeNormal + w[2] * v[2]->eyeNormal;
+    p.eyeNormal = glm::length(n) > 0 ? glm::normalize(n) : Vec3(0, 0, 1);
+  }
+  if (back) p.eyeNormal = -p.eyeNormal;
+}
+
+void drawTriangle(const DrawTarget& target, const Object& object, std::size_t objectIndex, std::size_t triangle,
+                  const TriangleSetup& t, const ProvokingVertex& flat) {
+  const FrameContext& frame = target.frame;
   const bool back = frame.lightModel.twoSided && !t.frontFacing;
   const bool vertexColors = !object.mesh->colors.empty();
   const Texture* texture = object.mesh->uvs.empty() ? nullptr : object.diffuseTexture.get();
+  const int probeRow = target.probe ? frame.height - 1 - target.probe->y : -1;  // GL rows run bottom up
   rasterizeTriangle(t, [&](int x, int y, Real l0, Real l1, Real l2) {
     const Real z = l0 * t.z[0] + l1 * t.z[1] + l2 * t.z[2];
-    if (!fb.depthTest(x, y, z)) return;
-    ++stats.fragmentsShaded;
+    if (!target.fb.depthTest(x, y, z)) return;
+    ++target.stats.fragmentsShaded;
     Color4 c;
     switch (frame.shading) {
       case Shading::Flat:
@@ -43,29 +80,30 @@ void drawTriangle(const FrameContext& frame, const Object& object, const Triangl
     }
     // GL_MODULATE: the lit colour times the texel, alpha included.
     if (texture) c *= sampleDiffuseTexture(*texture, t, l0, l1, l2);
-    if (frame.blend) fb.blendColor(x, y, c);
-    else fb.writeColor(x, y, c);
+    if (frame.blend) target.fb.blendColor(x, y, c);
+    else target.fb.writeColor(x, y, c);
+    if (y == probeRow && x == target.probe->x)
+      recordProbe(target, object, objectIndex, triangle, t, flat, perspectiveWeights(t, l0, l1, l2), c);
   });
 }
 
-void drawObject(const FrameContext& frame, const Object& object, Framebuffer& fb, RenderStats& stats) {
+void drawObject(const DrawTarget& target, const Object& object, std::size_t objectIndex) {
   std::vector<ShadedVertex> vertices;
-  runVertexStage(frame, object, vertices);
+  runVertexStage(target.frame, object, vertices);
   std::vector<ShadedVertex> polygon;
   const auto& indices = object.mesh->indices;
   for (std::size_t i = 0; i + 2 < indices.size(); i += 3) {
-    ++stats.trianglesIn;
+    ++target.stats.trianglesIn;
     const std::array<ShadedVertex, 3> tri = {vertices[indices[i]], vertices[indices[i + 1]], vertices[indices[i + 2]]};
-    // GL's provoking vertex for flat shading is the triangle's last one.
-    const TriangleColor flat{tri[2].front, tri[2].back};
+    const ProvokingVertex flat{tri[2].front, tri[2].back, tri[2].eyePosition, tri[2].eyeNormal};
     polygon.clear();
-    if (clipTriangle(tri, frame.width, frame.height, polygon) == ClipResult::Outside) continue;
+    if (clipTriangle(tri, target.frame.width, target.frame.height, polygon) == ClipResult::Outside) continue;
     // The clipped polygon is convex: draw it as a fan.
     for (std::size_t k = 1; k + 1 < polygon.size(); ++k) {
       TriangleSetup setup;
-      if (!setupTriangle(polygon[0], polygon[k], polygon[k + 1], frame.width, frame.height, setup)) continue;
-      ++stats.trianglesDrawn;
-      drawTriangle(frame, object, setup, flat, fb, stats);
+      if (!setupTriangle(polygon[0], polygon[k], polygon[k + 1], target.frame.width, target.frame.height, setup)) continue;
+      ++target.stats.trianglesDrawn;
+      drawTriangle(target, object, objectIndex, i / 3, setup, flat);
     }
   }
 }
@@ -100,11 +138,14 @@ std::vector<const Object*> drawingOrder(const Scene& scene, const FrameContext& 
 
 }  // namespace
 
-Image renderScene(const Scene& scene, RenderStats* statsOut) {
+Image renderScene(const Scene& scene, RenderStats* statsOut, PixelProbe* probe) {
   const FrameContext frame = FrameContext::fromScene(scene);
   Framebuffer fb(scene.width, scene.height, scene.background);
   RenderStats stats;
-  for (const Object* object : drawingOrder(scene, frame)) drawObject(frame, *object, fb, stats);
+  if (probe) probe->hit = false;
+  const DrawTarget target{frame, fb, stats, probe};
+  for (const Object* object : drawingOrder(scene, frame))
+    drawObject(target, *object, std::size_t(object - scene.objects.data()));
   Image image = fb.toImage();
   stats.labelsSkipped = !drawLabels(image, scene);
   if (statsOut) *statsOut = stats;
