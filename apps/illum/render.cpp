@@ -119,6 +119,10 @@ void applyExplicitCamera(const RenderOptions& o, Camera& cam) {
     cam.viewHeight = 2 * glm::length(cam.center - cam.eye) * std::tan(glm::radians(cam.fovy) / 2);
     cam.projection = Projection::Orthographic;
   }
+}
+
+// The camera options can leave a camera with no view direction; say which option to change.
+void validateCamera(const Camera& cam) {
   const Vec3 forward = cam.center - cam.eye;
   if (glm::length(forward) == 0) throw InputError("--camera-position: expected a point apart from the focal point");
   if (glm::length(glm::cross(forward, cam.up)) <= Real(1e-6) * glm::length(forward) * glm::length(cam.up))
@@ -135,7 +139,7 @@ Scene modelScene(const RenderOptions& o, ImportedModel& model) {
   if (!o.cameraFocalPoint.empty()) view.focalPoint = parseVec3("--camera-focal-point", o.cameraFocalPoint);
   if (!o.cameraViewUp.empty()) view.viewUp = parseVec3("--camera-view-up", o.cameraViewUp);
   s.camera = framePoints(worldPoints(model.objects), view, Real(s.width) / Real(s.height));
-  applyExplicitCamera(RenderOptions{}, s.camera);  // validates the framed camera
+  validateCamera(s.camera);
   const Real intensity = o.lightIntensity ? Real(*o.lightIntensity) : Real(1);
   if (!std::isfinite(intensity) || intensity < 0) throw InputError("--light-intensity: expected a number ≥ 0");
   s.lights = cameraLightRig(s.camera, intensity);
@@ -197,6 +201,7 @@ int runRender(RenderOptions o) {
     if (o.width) scene.width = *o.width;
     if (o.height) scene.height = *o.height;
     applyExplicitCamera(o, scene.camera);
+    validateCamera(scene.camera);
   } else {
     model = importModel(o.input, importOptions(o));
     for (const std::string& w : model->warnings) std::fprintf(stderr, "illum: warning: %s\n", w.c_str());
