@@ -45,6 +45,7 @@ TEST_P(MesaParity, MatchesLlvmpipe) {
   const ImageDifference d = compareImages(ours, mesa, kTolerance);
   RecordProperty("psnr", std::to_string(d.psnr));
   RecordProperty("fraction_within", std::to_string(d.fractionWithin));
+  RecordProperty("max_error", std::to_string(d.maxError));
 
   const bool pass = d.fractionWithin >= kMinFractionWithin && d.psnr >= kMinPsnr;
   if (!pass) {
