@@ -28,25 +28,25 @@ install_packages() {
 
 jobs=$(nproc 2>/dev/null || echo 2)
 
-build() {  # build DIR [cmake args...]
-  local dir=$1
-  shift
+build() {  # build DIR [TARGET] -- [cmake args...]
+  local dir=$1 target=${2:-all}
+  shift 2 || shift $#
   cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
-  cmake --build "$dir" -j "$jobs"
+  cmake --build "$dir" -j "$jobs" --target "$target"
 }
 
 case "${1:-}" in
   run)
     install_packages
-    build build
+    build build illum_cli
     ./build/apps/illum/illum render -o illum.png
     ;;
   test)
     install_packages
-    build build
+    build build all
     (cd build && ctest --output-on-failure -j "$jobs")
     echo "illum: the same suite under AddressSanitizer and UndefinedBehaviorSanitizer"
-    build build-asan -DILLUM_SANITIZE=ON
+    build build-asan all -DILLUM_SANITIZE=ON
     (cd build-asan && ASAN_OPTIONS=detect_leaks=1 LSAN_OPTIONS=suppressions=$PWD/../tests/lsan.supp \
       UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j "$jobs")
     ;;

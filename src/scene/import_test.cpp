@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
 
 namespace illum {
 namespace {
@@ -65,6 +67,25 @@ TEST(Import, StlGetsCreaseNormalsAndObjGetsItsMtl) {
   for (const Object& o : obj.objects) shininess.push_back(o.material.shininess);
   EXPECT_NE(std::find(shininess.begin(), shininess.end(), Real(200)), shininess.end());
   EXPECT_NE(std::find(shininess.begin(), shininess.end(), Real(16)), shininess.end());
+}
+
+TEST(Import, MtlKaKdKsKeNsDReachTheMaterial) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "illum_import_mtl_test";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "tri.mtl") << "newmtl shiny\nKa 0.1 0.2 0.3\nKd 0.4 0.5 0.6\nKs 0.7 0.8 0.9\nKe 0.05 0.06 0.07\nNs 500\nd 0.25\n";
+  std::ofstream(dir / "tri.obj") << "mtllib tri.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl shiny\nf 1 2 3\n";
+  const ImportedModel m = importModel(dir / "tri.obj");
+  std::filesystem::remove_all(dir);
+  ASSERT_EQ(m.objects.size(), 1u);
+  const Material& mat = m.objects[0].material;
+  EXPECT_NEAR(mat.ambient.b, 0.3, 1e-6);
+  EXPECT_NEAR(mat.diffuse.g, 0.5, 1e-6);
+  EXPECT_NEAR(mat.specular.r, 0.7, 1e-6);
+  EXPECT_NEAR(mat.emission.b, 0.07, 1e-6);
+  EXPECT_EQ(mat.shininess, 500);
+  EXPECT_NEAR(mat.diffuse.a, 0.25, 1e-6);
+  // No normals in the file: generated, facing the counter-clockwise side.
+  EXPECT_NEAR(m.objects[0].mesh->normals[0].z, 1, 1e-6);
 }
 
 TEST(Framing, EveryPointInsideTheView) {
