@@ -97,8 +97,12 @@ ImportOptions importOptions(const RenderOptions& o) {
 ViewOptions viewOptions(const RenderOptions& o) {
   ViewOptions v;
   if (!o.up.empty()) v.up = parseUp(o.up);
-  if (o.azimuth) v.azimuth = Real(*o.azimuth);
-  if (o.elevation) v.elevation = Real(*o.elevation);
+  const auto angle = [](const char* option, double degrees) {
+    if (!std::isfinite(degrees)) throw InputError(std::string(option) + ": expected a finite angle in degrees");
+    return Real(degrees);
+  };
+  if (o.azimuth) v.azimuth = angle("--camera-azimuth-angle", *o.azimuth);
+  if (o.elevation) v.elevation = angle("--camera-elevation-angle", *o.elevation);
   if (o.zoom) v.zoom = finitePositive("--camera-zoom-factor", *o.zoom);
   if (o.viewAngle) {
     v.viewAngle = Real(*o.viewAngle);
