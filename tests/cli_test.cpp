@@ -164,6 +164,13 @@ TEST(CliRender, DebugPixelExplainsThePixel) {
   EXPECT_EQ(run("render --debug-pixel 5000,5 -o " + (dir / "out.png").string()).exitCode, 2);
 }
 
+TEST(CliRender, PngToStandardOutput) {
+  const RunResult r = run("render --width 16 --height 8 -o -");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  ASSERT_GT(r.out.size(), 8u);
+  EXPECT_EQ(r.out.substr(1, 3), "PNG");
+}
+
 TEST(CliRender, SameBytesEveryRun) {
   TempDir dir;
   ASSERT_EQ(run("render -o " + (dir / "a.png").string()).exitCode, 0);

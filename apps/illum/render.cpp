@@ -227,6 +227,8 @@ int runRender(RenderOptions o) {
 
   RenderStats stats;
   std::optional<PixelProbe> probe;
+  if (!o.debugPixel.empty() && o.output == "-")
+    throw InputError("--debug-pixel: its report goes to standard output, so it cannot go with -o -");
   if (!o.debugPixel.empty()) {
     const auto comma = o.debugPixel.find(',');
     if (comma == std::string::npos) throw InputError("--debug-pixel: expected x,y, got \"" + o.debugPixel + "\"");
@@ -239,7 +241,15 @@ int runRender(RenderOptions o) {
   if (stats.labelsSkipped)
     std::fprintf(stderr, "illum: warning: labels left out: the font /usr/share/fonts/truetype/dejavu/DejaVuSans.ttf "
                          "(Debian package fonts-dejavu-core) is missing\n");
-  writePng(o.output, image);
+  const bool toStdout = o.output == "-";
+  if (toStdout) {
+    // `-o -` streams the PNG, for pipelines that make thumbnails.
+    const std::vector<std::uint8_t> png = encodePng(image);
+    if (std::fwrite(png.data(), 1, png.size(), stdout) != png.size() || std::fflush(stdout) != 0)
+      throw Error("cannot write the PNG to standard output");
+  } else {
+    writePng(o.output, image);
+  }
   if (o.verbose) {
     const auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
     std::fprintf(stderr,
@@ -249,6 +259,7 @@ int runRender(RenderOptions o) {
                  withSeparators(stats.trianglesIn).c_str(), withSeparators(stats.trianglesDrawn).c_str(),
                  withSeparators(stats.fragmentsShaded).c_str(), peakMemoryMiB());
   }
+  if (toStdout) return 0;
   std::printf("%s\n", o.output.c_str());
   if (probe) printPixelReport(scene, *probe);
   return 0;
@@ -265,7 +276,7 @@ Command addRenderCommand(CLI::App& app) {
       "assimp (OBJ+MTL, PLY, STL, glTF/GLB, FBX, Collada, 3DS, ...), framed and lit automatically.\n"
       "Colours are R,G,B in [0,1] or #rrggbb; both are written to the image as they are (docs/cli.md).");
   cmd->add_option("input", o->input, "Scene (.json) or model file; none renders the built-in scene");
-  cmd->add_option("-o,--output", o->output, "Output PNG, written atomically")->capture_default_str();
+  cmd->add_option("-o,--output", o->output, "Output PNG, written atomically; - for standard output")->capture_default_str();
   cmd->add_option("--width", o->width, "Image width in pixels")->check(CLI::Range(1, 16384));
   cmd->add_option("--height", o->height, "Image height in pixels")->check(CLI::Range(1, 16384));
   cmd->add_option("--resolution", o->resolution, "Image size W,H (models: 1000,600)");
