@@ -41,7 +41,7 @@ Mesh convertMesh(const aiMesh& m, const fs::path& path, const ImportOptions& opt
   const std::string where = path.string() + ": mesh \"" + m.mName.C_Str() + "\"";
   Mesh mesh;
   mesh.positions.reserve(m.mNumVertices);
-  bool normalsSane = m.mNormals != nullptr && !normalsArePerFace;
+  bool fileNormalsUsable = m.mNormals != nullptr;  // present, finite and non-zero everywhere
   for (unsigned v = 0; v < m.mNumVertices; ++v) {
     if (!finite(m.mVertices[v]))
       throw InputError(where + " vertex " + std::to_string(v) + ": expected a finite position");
@@ -50,7 +50,7 @@ Mesh convertMesh(const aiMesh& m, const fs::path& path, const ImportOptions& opt
       const aiVector3D& n = m.mNormals[v];
       const Vec3 nv(n.x, n.y, n.z);
       const Real len = finite(n) ? glm::length(nv) : Real(0);
-      normalsSane = normalsSane && len > Real(1e-12) && std::isfinite(len);
+      fileNormalsUsable = fileNormalsUsable && len > Real(1e-12) && std::isfinite(len);
       mesh.normals.push_back(len > Real(1e-12) && std::isfinite(len) ? nv / len : Vec3(0));
     }
   }
@@ -81,10 +81,17 @@ Mesh convertMesh(const aiMesh& m, const fs::path& path, const ImportOptions& opt
     case NormalMode::Flat: generateFlatNormals(mesh); break;
     case NormalMode::Smooth: generateCreaseNormals(mesh, 180); break;
     case NormalMode::File:
-      if (m.mNormals && normalsSane) break;
-      [[fallthrough]];  // no usable normals in the file: generate them as Auto would
+      if (!m.mNormals) {
+        generateCreaseNormals(mesh, options.creaseAngle);  // none to keep
+      } else if (!fileNormalsUsable) {
+        // Keep every usable normal; a zero one takes the mean of the faces at its vertex.
+        const std::vector<Vec3> generated = generateSmoothNormals(mesh.positions, mesh.indices);
+        for (std::size_t i = 0; i < mesh.normals.size(); ++i)
+          if (mesh.normals[i] == Vec3(0)) mesh.normals[i] = generated[i];
+      }
+      break;
     case NormalMode::Auto:
-      if (!normalsSane) generateCreaseNormals(mesh, options.creaseAngle);
+      if (!fileNormalsUsable || normalsArePerFace) generateCreaseNormals(mesh, options.creaseAngle);
       break;
   }
   return mesh;

@@ -61,6 +61,26 @@ TEST(Import, StlGetsCreaseNormalsAndObjGetsItsMtl) {
   ASSERT_FALSE(stl.objects.empty());
   // Generated normals are shared across smooth edges: fewer vertices than 3 per triangle.
   EXPECT_LT(stl.vertexCount, stl.triangleCount * 3);
+  // --normals=file keeps STL's facet normals: the three corners of a triangle share its normal.
+  // The generated ones vary across triangles where the surface is smooth.
+  ImportOptions file;
+  file.normals = NormalMode::File;
+  const ImportedModel facets = importModel("/usr/share/assimp/models/STL/3DSMaxExport.STL", file);
+  const ImportedModel smooth = importModel("/usr/share/assimp/models/STL/3DSMaxExport.STL");
+  const auto varyingTriangles = [](const ImportedModel& model) {
+    int n = 0;
+    for (const Object& o : model.objects)
+      for (std::size_t t = 0; t < o.mesh->indices.size(); t += 3) {
+        // (assimp welds vertices whose normals agree to within a small epsilon)
+        const Vec3& a = o.mesh->normals[o.mesh->indices[t]];
+        if (glm::dot(a, o.mesh->normals[o.mesh->indices[t + 1]]) < 0.9999f ||
+            glm::dot(a, o.mesh->normals[o.mesh->indices[t + 2]]) < 0.9999f)
+          ++n;
+      }
+    return n;
+  };
+  EXPECT_EQ(varyingTriangles(facets), 0);
+  EXPECT_GT(varyingTriangles(smooth), 1000);
   const ImportedModel obj = importModel("/usr/share/assimp/models/OBJ/cube_usemtl.obj");
   // cube_usemtl.mtl: Ns 200 and Ks 0.05 for "mtl", Ns 16 and Ks 0.375 for "mtl2".
   std::vector<Real> shininess;
