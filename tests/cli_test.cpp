@@ -179,3 +179,34 @@ TEST(CliRender, SameBytesEveryRun) {
 }
 
 }  // namespace
+
+TEST(CliOutput, ReadOnlyTargetRefusedUnlessForced) {
+  TempDir dir;
+  const fs::path out = dir / "ro.png";
+  { std::ofstream(out) << "keep"; }
+  fs::permissions(out, fs::perms::owner_read | fs::perms::group_read | fs::perms::others_read);
+  const RunResult r = run("render --width 16 --height 16 -o " + out.string());
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find("read-only"), std::string::npos) << r.err;
+  EXPECT_EQ(slurp(out), "keep");
+  const RunResult f = run("render --width 16 --height 16 --force -o " + out.string());
+  ASSERT_EQ(f.exitCode, 0) << f.err;
+  EXPECT_EQ(slurp(out).substr(1, 3), "PNG");
+  EXPECT_EQ(fs::status(out).permissions(), fs::perms::owner_read | fs::perms::group_read | fs::perms::others_read);
+}
+
+TEST(CliOutput, DevStdoutCarriesOnlyThePng) {
+  const RunResult r = run("render --width 16 --height 16 -o /dev/stdout");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  ASSERT_GT(r.out.size(), 8u);
+  EXPECT_EQ(r.out.substr(1, 3), "PNG");
+  EXPECT_EQ(r.out.substr(r.out.size() - 8, 4), "IEND");  // nothing printed after the image
+}
+
+TEST(CliOutput, QuietPrintsNothing) {
+  TempDir dir;
+  const RunResult r = run("render --width 16 --height 16 --quiet -o " + (dir / "a.png").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(r.out, "");
+  EXPECT_TRUE(fs::exists(dir / "a.png"));
+}

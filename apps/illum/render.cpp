@@ -10,8 +10,11 @@
 #include "pixel_report.h"
 #include <illum/framing.h>
 #include <illum/import.h>
+#include <illum/output_file.h>
 
 #include <sys/resource.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
@@ -39,7 +42,17 @@ struct RenderOptions {
   std::string normals;
   std::string debugPixel;
   bool verbose = false;
+  bool force = false;
+  bool quiet = false;
 };
+
+// Whether `path` names the file standard output already goes to (/dev/stdout, /proc/self/fd/1, or
+// the file the shell redirected to): then the path is not printed after the PNG.
+bool isStandardOutput(const std::string& path) {
+  struct stat out{}, target{};
+  return ::fstat(STDOUT_FILENO, &out) == 0 && ::stat(path.c_str(), &target) == 0 && out.st_dev == target.st_dev &&
+         out.st_ino == target.st_ino;
+}
 
 bool isSceneFile(const std::string& path) {
   std::string ext = fs::path(path).extension().string();
@@ -248,7 +261,7 @@ int runRender(RenderOptions o) {
     if (std::fwrite(png.data(), 1, png.size(), stdout) != png.size() || std::fflush(stdout) != 0)
       throw Error("cannot write the PNG to standard output");
   } else {
-    writePng(o.output, image);
+    writeOutputFile(o.output, encodePng(image), OutputOptions{o.force});
   }
   if (o.verbose) {
     const auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
@@ -260,7 +273,7 @@ int runRender(RenderOptions o) {
                  withSeparators(stats.fragmentsShaded).c_str(), peakMemoryMiB());
   }
   if (toStdout) return 0;
-  std::printf("%s\n", o.output.c_str());
+  if (!o.quiet && !isStandardOutput(o.output)) std::printf("%s\n", o.output.c_str());
   if (probe) printPixelReport(scene, *probe);
   return 0;
 }
@@ -277,6 +290,8 @@ Command addRenderCommand(CLI::App& app) {
       "Colours are R,G,B in [0,1] or #rrggbb; both are written to the image as they are (docs/cli.md).");
   cmd->add_option("input", o->input, "Scene (.json) or model file; none renders the built-in scene");
   cmd->add_option("-o,--output", o->output, "Output PNG, written atomically; - for standard output")->capture_default_str();
+  cmd->add_flag("-q,--quiet", o->quiet, "Do not print the output's path on standard output");
+  cmd->add_flag("--force", o->force, "Replace a read-only output file (its permissions are kept)");
   cmd->add_option("--width", o->width, "Image width in pixels")->check(CLI::Range(1, 16384));
   cmd->add_option("--height", o->height, "Image height in pixels")->check(CLI::Range(1, 16384));
   cmd->add_option("--resolution", o->resolution, "Image size W,H (models: 1000,600)");

@@ -23,14 +23,10 @@ struct Image {
 
 // Encodes the image as PNG in memory.
 std::vector<std::uint8_t> encodePng(const Image& image);
-// Writes a PNG atomically: a temporary file beside `path`, then a rename, so a failure never
-// leaves a partial file or clobbers an existing one. Throws Error on failure.
+// Writes a PNG with writeOutputFile (output_file.h): never a partial or clobbered file.
 void writePng(const std::filesystem::path& path, const Image& image);
 // Reads a PNG (any 8-bit format, expanded to RGBA). Throws InputError on failure.
 Image readPng(const std::filesystem::path& path);
-
-// Writes bytes atomically (temporary file + rename). Throws Error on failure.
-void writeFileAtomically(const std::filesystem::path& path, const std::vector<std::uint8_t>& bytes);
 
 // How far two images are apart, per channel, in 8-bit steps.
 struct ImageDifference {
