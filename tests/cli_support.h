@@ -63,3 +63,40 @@ class TempDir {
 };
 
 }  // namespace illum::test
+
+#include <chrono>
+#include <sys/resource.h>
+
+namespace illum::test {
+
+struct MeasuredRun {
+  int exitCode = -1;
+  std::string err;
+  double seconds = 0;
+  double peakMiB = 0;  // the largest resident size of illum and every process it started
+};
+
+// Runs `illum ARGS` (stdout discarded) and measures its wall time and peak memory, children
+// (the isolated importer) included.
+inline MeasuredRun runIllumMeasured(const std::string& args) {
+  const fs::path errFile = fs::temp_directory_path() / ("illum_test_merr_" + std::to_string(::getpid()));
+  const std::string cmd = "exec " + std::string(ILLUM_CLI) + " " + args + " >/dev/null 2>" + errFile.string();
+  MeasuredRun r;
+  const auto start = std::chrono::steady_clock::now();
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  int status = 0;
+  rusage usage{};
+  ::wait4(pid, &status, 0, &usage);
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  r.peakMiB = double(usage.ru_maxrss) / 1024.0;
+  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.err = slurp(errFile);
+  fs::remove(errFile);
+  return r;
+}
+
+}  // namespace illum::test

@@ -44,6 +44,7 @@ struct RenderOptions {
   bool verbose = false;
   bool force = false;
   bool quiet = false;
+  Limits limits;
 };
 
 // Whether `path` names the file standard output already goes to (/dev/stdout, /proc/self/fd/1, or
@@ -92,6 +93,7 @@ Real finitePositive(const char* option, double v) {
 
 ImportOptions importOptions(const RenderOptions& o) {
   ImportOptions io;
+  io.limits = o.limits;
   if (!o.normals.empty()) {
     if (o.normals == "auto") io.normals = NormalMode::Auto;
     else if (o.normals == "flat") io.normals = NormalMode::Flat;
@@ -182,12 +184,6 @@ void rejectModelOnlyOptions(const RenderOptions& o) {
   reject(o.creaseAngle.has_value(), "--crease-angle");
 }
 
-std::string withSeparators(std::size_t n) {
-  std::string s = std::to_string(n);
-  for (int i = int(s.size()) - 3; i > 0; i -= 3) s.insert(std::size_t(i), ",");
-  return s;
-}
-
 double peakMemoryMiB() {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
@@ -214,7 +210,7 @@ int runRender(RenderOptions o) {
     // The built-in scene's captions name the model and shading it is drawn with.
     scene = o.input.empty() ? defaultScene(lightingModel.value_or(LightingModel::BlinnPhong),
                                            shading.value_or(Shading::Phong))
-                            : loadSceneFile(o.input);
+                            : loadSceneFile(o.input, o.limits);
     if (o.width) scene.width = *o.width;
     if (o.height) scene.height = *o.height;
     applyExplicitCamera(o, scene.camera);
@@ -224,7 +220,7 @@ int runRender(RenderOptions o) {
     for (const std::string& w : model->warnings) std::fprintf(stderr, "illum: warning: %s\n", w.c_str());
     if (o.verbose) {
       std::fprintf(stderr, "illum: %s: %s vertices, %s triangles, %zu materials, %zu textures\n", o.input.c_str(),
-                   withSeparators(model->vertexCount).c_str(), withSeparators(model->triangleCount).c_str(),
+                   withThousands(model->vertexCount).c_str(), withThousands(model->triangleCount).c_str(),
                    model->materialCount, model->textureCount);
       const Vec3 &lo = model->boundsMin, &hi = model->boundsMax;
       std::fprintf(stderr, "illum: bounds [%g, %g, %g] .. [%g, %g, %g]\n", double(lo.x), double(lo.y), double(lo.z),
@@ -232,6 +228,10 @@ int runRender(RenderOptions o) {
     }
     scene = modelScene(o, *model);
   }
+  if (std::uint64_t(scene.width) * std::uint64_t(scene.height) > o.limits.maxPixels)
+    throw InputError("the image would be " + std::to_string(scene.width) + "×" + std::to_string(scene.height) + " = " +
+                     withThousands(std::uint64_t(scene.width) * std::uint64_t(scene.height)) +
+                     " pixels, more than the limit of " + withThousands(o.limits.maxPixels) + " (raise it with --max-pixels)");
   const auto loaded = Clock::now();
   if (lightingModel) scene.model = *lightingModel;
   if (shading) scene.shading = *shading;
@@ -269,8 +269,8 @@ int runRender(RenderOptions o) {
                  "illum: loaded in %.1f ms; rendered %dx%d in %.1f ms (%s triangles in, %s drawn, %s fragments shaded); "
                  "peak memory %.0f MiB\n",
                  ms(start, loaded), scene.width, scene.height, ms(loaded, rendered),
-                 withSeparators(stats.trianglesIn).c_str(), withSeparators(stats.trianglesDrawn).c_str(),
-                 withSeparators(stats.fragmentsShaded).c_str(), peakMemoryMiB());
+                 withThousands(stats.trianglesIn).c_str(), withThousands(stats.trianglesDrawn).c_str(),
+                 withThousands(stats.fragmentsShaded).c_str(), peakMemoryMiB());
   }
   if (toStdout) return 0;
   if (!o.quiet && !isStandardOutput(o.output)) std::printf("%s\n", o.output.c_str());
@@ -312,6 +312,14 @@ Command addRenderCommand(CLI::App& app) {
   cmd->add_option("--normals", o->normals, "Model files: auto (default), flat, smooth or file");
   cmd->add_option("--crease-angle", o->creaseAngle, "Model files: generated normals stay sharp above this angle [40]");
   cmd->add_option("--debug-pixel", o->debugPixel, "Print every term of the lighting equation at pixel x,y (0,0 top-left)");
+  cmd->add_option("--max-triangles", o->limits.maxTriangles, "Refuse scenes and models of more triangles [20000000]")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--max-pixels", o->limits.maxPixels, "Refuse images and textures of more pixels [67108864]")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--max-memory", o->limits.maxMemoryMiB,
+                  "MiB the model importer may use [768 + 32 × the file's size]")->check(CLI::PositiveNumber);
+  cmd->add_option("--max-time", o->limits.maxSeconds, "CPU seconds the model importer may use [10 + 1 per MiB]")
+      ->check(CLI::Range(0.001, 1e6));
   cmd->add_flag("-v,--verbose", o->verbose, "Print model statistics, bounds, times and peak memory on stderr");
   return [o] { return runRender(*o); };
 }

@@ -2,6 +2,7 @@
 // assimp reads), with their node transforms, materials, vertex colours and diffuse textures.
 #pragma once
 
+#include <illum/limits.h>
 #include <illum/scene.h>
 
 #include <filesystem>
@@ -13,18 +14,26 @@ namespace illum {
 struct ImportOptions {
   NormalMode normals = NormalMode::Auto;
   Real creaseAngle = 40;  // degrees, for generated normals
+  Limits limits;
 };
 
 struct ImportedModel {
   std::vector<Object> objects;  // one per (node, mesh) instance, in world space
   Vec3 boundsMin{0}, boundsMax{0};
   std::size_t vertexCount = 0, triangleCount = 0, materialCount = 0, textureCount = 0;
+  bool transparencyIgnored = false;  // every surface was fully transparent: drawn opaque instead
   std::vector<std::string> warnings;  // e.g. a texture that could not be loaded
 };
 
-// Throws InputError for a missing, empty, truncated or malformed file, out-of-range indices or
-// non-finite positions.
+// Reads a model file in an isolated child process (core/isolate.h) under options.limits, so that
+// a reader that crashes, aborts, loops or allocates without end costs a clean InputError naming
+// the file and the reason ("the importer crashed", "would need more than N MiB: raise
+// --max-memory"), never illum itself. Throws InputError for a missing, empty, truncated or
+// malformed file, out-of-range indices, non-finite positions, no drawable triangle, or a size
+// beyond a limit.
 ImportedModel importModel(const std::filesystem::path& path, const ImportOptions& options = {});
+// The same, in this process (for the fuzzer and for the isolated child itself).
+ImportedModel importModelInProcess(const std::filesystem::path& path, const ImportOptions& options = {});
 
 // The material illum derives from a file's: see docs/models.md for the mapping.
 struct FileMaterialValues {

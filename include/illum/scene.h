@@ -3,6 +3,7 @@
 #pragma once
 
 #include <illum/lighting.h>
+#include <illum/limits.h>
 #include <illum/mesh.h>
 #include <illum/texture.h>
 
@@ -69,11 +70,12 @@ struct Scene {
 
 // Reads a scene file; relative mesh paths are resolved against the file's folder.
 // Throws InputError naming the file, the JSON path and what was expected.
-Scene loadSceneFile(const std::filesystem::path& path);
+// Tessellation, model files and the image size are held to `limits` before anything is built.
+Scene loadSceneFile(const std::filesystem::path& path, const Limits& limits = {});
 
 // Parses scene JSON text. `name` is used in messages; `baseDir` resolves mesh file paths.
 Scene parseScene(const std::string& text, const std::string& name,
-                 const std::filesystem::path& baseDir);
+                 const std::filesystem::path& baseDir, const Limits& limits = {});
 
 // The built-in scene `illum render` draws with no arguments: GLUT's solids in several materials
 // under coloured lights, the seeds' story at a glance, labelled with what each part shows.

@@ -17,6 +17,8 @@ class Texture {
   int height() const { return levels_.front().height; }
   int levelCount() const { return int(levels_.size()); }
   bool hasTransparency() const { return hasTransparency_; }  // any texel with alpha < 1
+  // The 8-bit image this texture was made from (its base level, rows top to bottom), exactly.
+  Image baseImage() const;
 
   // Trilinear sample at `uv` (GL convention: v = 0 is the image's bottom row) for a footprint of
   // `texelsPerPixel` base-level texels per pixel (the mip level is log2 of it).

@@ -35,6 +35,18 @@ Texture::Texture(const Image& image) {
   }
 }
 
+Image Texture::baseImage() const {
+  const Level& base = levels_.front();
+  Image image(base.width, base.height);
+  for (int y = 0; y < base.height; ++y)
+    for (int x = 0; x < base.width; ++x) {
+      const Vec4 t = base.texels[std::size_t(y) * std::size_t(base.width) + std::size_t(x)];
+      std::uint8_t* p = image.pixel(x, base.height - 1 - y);
+      for (int c = 0; c < 4; ++c) p[c] = std::uint8_t(std::lround(t[c] * Real(255)));
+    }
+  return image;
+}
+
 Vec4 Texture::sampleLevel(const Vec2& uv, int level) const {
   const Level& l = levels_[std::size_t(std::clamp(level, 0, levelCount() - 1))];
   // GL_REPEAT, then GL_LINEAR: the four texels around (u·w − 0.5, v·h − 0.5).

@@ -2,6 +2,9 @@
 
 #include <illum/error.h>
 
+#include "scene/model_precheck.h"
+#include "scene/texture_lookup.h"
+
 #include <assimp/DefaultLogger.hpp>
 #include <assimp/Importer.hpp>
 #include <assimp/LogStream.hpp>
@@ -122,15 +125,32 @@ FileMaterialValues readMaterial(const aiMaterial& m) {
   return v;
 }
 
-// A texture named by a material: embedded ("*0" or by file name) or a file beside the model.
+// A texture named by a material: embedded ("*0" or by file name) or a file found beside the model
+// (texture_lookup.h). Its header is read first: an image larger than --max-pixels is not decoded.
 std::shared_ptr<const Texture> loadTexture(const aiScene& scene, const std::string& name, const fs::path& modelDir,
-                                           std::vector<std::string>& warnings, const fs::path& path) {
+                                           std::vector<std::string>& warnings, const fs::path& path,
+                                           const Limits& limits) {
+  const auto warn = [&](const std::string& why) {
+    warnings.push_back(path.string() + ": texture \"" + name + "\" " + why + "; rendering untextured");
+    return nullptr;
+  };
+  const auto tooLarge = [&](int w, int h) {
+    return std::uint64_t(w) * std::uint64_t(h) > limits.maxPixels;
+  };
+  const auto sizeText = [](int w, int h) { return std::to_string(w) + "×" + std::to_string(h); };
+  const std::string limitText = "more than the limit of " + withThousands(limits.maxPixels) + " pixels (raise it with --max-pixels)";
   int w = 0, h = 0, n = 0;
   stbi_uc* data = nullptr;
   if (const aiTexture* embedded = scene.GetEmbeddedTexture(name.c_str())) {
     if (embedded->mHeight == 0) {
-      data = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(embedded->pcData), int(embedded->mWidth), &w, &h, &n, 4);
+      const auto* bytes = reinterpret_cast<const stbi_uc*>(embedded->pcData);
+      if (embedded->mWidth > unsigned(std::numeric_limits<int>::max())) return warn("is too large");
+      if (stbi_info_from_memory(bytes, int(embedded->mWidth), &w, &h, &n) && tooLarge(w, h))
+        return warn("is " + sizeText(w, h) + " pixels, " + limitText);
+      data = stbi_load_from_memory(bytes, int(embedded->mWidth), &w, &h, &n, 4);
     } else {
+      if (tooLarge(int(embedded->mWidth), int(embedded->mHeight)))
+        return warn("is " + sizeText(int(embedded->mWidth), int(embedded->mHeight)) + " pixels, " + limitText);
       Image img(int(embedded->mWidth), int(embedded->mHeight));
       for (std::size_t i = 0; i < std::size_t(embedded->mWidth) * embedded->mHeight; ++i) {
         const aiTexel& t = embedded->pcData[i];
@@ -139,18 +159,21 @@ std::shared_ptr<const Texture> loadTexture(const aiScene& scene, const std::stri
       return std::make_shared<const Texture>(img);
     }
   } else {
-    std::string file = name;
-    std::replace(file.begin(), file.end(), '\\', '/');
-    fs::path p = fs::path(file).is_absolute() ? fs::path(file) : modelDir / file;
-    std::error_code ec;
-    if (!fs::is_regular_file(p, ec)) p = modelDir / fs::path(file).filename();  // exporters often keep absolute paths
-    data = stbi_load(p.c_str(), &w, &h, &n, 4);
+    const TextureLookup lookup = findTextureFile(name, modelDir);
+    if (!lookup.found) {
+      std::string tried;
+      for (const std::string& t : lookup.tried) tried += (tried.empty() ? "" : "; ") + t;
+      return warn("was not found (tried " + tried + ")");
+    }
+    if (!stbi_info(lookup.found->c_str(), &w, &h, &n))
+      return warn("(" + lookup.found->string() + ") cannot be decoded (" +
+                  (stbi_failure_reason() ? stbi_failure_reason() : "unknown reason") + ")");
+    if (tooLarge(w, h)) return warn("(" + lookup.found->string() + ") is " + sizeText(w, h) + " pixels, " + limitText);
+    data = stbi_load(lookup.found->c_str(), &w, &h, &n, 4);
+    if (!data) return warn("(" + lookup.found->string() + ") cannot be decoded (" +
+                           (stbi_failure_reason() ? stbi_failure_reason() : "unknown reason") + ")");
   }
-  if (!data) {
-    warnings.push_back(path.string() + ": texture \"" + name + "\" cannot be loaded (" +
-                       (stbi_failure_reason() ? stbi_failure_reason() : "unknown reason") + "); rendering untextured");
-    return nullptr;
-  }
+  if (!data) return warn(std::string("cannot be decoded (") + (stbi_failure_reason() ? stbi_failure_reason() : "unknown reason") + ")");
   Image img(w, h);
   std::copy(data, data + img.rgba.size(), img.rgba.begin());
   stbi_image_free(data);
@@ -239,11 +262,56 @@ Material materialFromFile(const FileMaterialValues& v) {
   return m;
 }
 
-ImportedModel importModel(const fs::path& path, const ImportOptions& options) {
+namespace {
+
+// assimp turns the allocation failures of its readers into an error string; under the isolated
+// importer's memory limit that is the limit speaking.
+[[noreturn]] void readFailed(const fs::path& path, const Assimp::Importer& importer) {
+  const std::string why = importer.GetErrorString();
+  if (why.find("bad_alloc") != std::string::npos) throw std::bad_alloc();
+  throw InputError(path.string() + ": cannot read the model: " + why);
+}
+
+// What a file without a single triangle holds instead, for the message.
+std::string describeNonSurfaces(const aiScene& scene) {
+  std::size_t points = 0, lines = 0;
+  for (unsigned i = 0; i < scene.mNumMeshes; ++i)
+    for (unsigned f = 0; f < scene.mMeshes[i]->mNumFaces; ++f) {
+      const unsigned n = scene.mMeshes[i]->mFaces[f].mNumIndices;
+      points += n == 1;
+      lines += n == 2;
+    }
+  if (points == 0 && lines == 0) return "the model has no triangles";
+  std::string what;
+  if (points) what += withThousands(points) + (points == 1 ? " point" : " points");
+  if (lines) what += std::string(what.empty() ? "" : " and ") + withThousands(lines) + (lines == 1 ? " line" : " lines");
+  return "the model holds only " + what + " and no triangles; illum draws surfaces";
+}
+
+// Opacity as drawn: vertex colours' alpha replaces the material's (GL_COLOR_MATERIAL).
+bool fullyTransparent(const Object& o) {
+  if (!o.mesh->colors.empty())
+    return std::all_of(o.mesh->colors.begin(), o.mesh->colors.end(), [](const Vec4& c) { return c.a <= 0; });
+  return o.material.diffuse.a <= 0;
+}
+
+bool hasDrawableTriangle(const Mesh& mesh) {
+  for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+    const Vec3 &a = mesh.positions[mesh.indices[t]], &b = mesh.positions[mesh.indices[t + 1]],
+               &c = mesh.positions[mesh.indices[t + 2]];
+    if (glm::length(glm::cross(b - a, c - a)) > 0) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+ImportedModel importModelInProcess(const fs::path& path, const ImportOptions& options) {
   std::error_code ec;
   if (!fs::exists(path, ec)) throw InputError(path.string() + ": no such model file");
   if (!fs::is_regular_file(path, ec)) throw InputError(path.string() + ": not a regular file");
   if (fs::file_size(path, ec) == 0) throw InputError(path.string() + ": the model file is empty");
+  precheckModelFile(path, options.limits);
 
   AssimpWarnings assimpWarnings;
   Assimp::Importer importer;
@@ -251,12 +319,18 @@ ImportedModel importModel(const fs::path& path, const ImportOptions& options) {
   importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
   // Read and validate first: assimp's later steps assert (and abort) on some broken input.
   const aiScene* scene = importer.ReadFile(path.string(), aiProcess_ValidateDataStructure);
-  if (!scene) throw InputError(path.string() + ": cannot read the model: " + importer.GetErrorString());
+  if (!scene) readFailed(path, importer);
   checkFaces(*scene, path);
+  std::uint64_t faces = 0;
+  for (unsigned i = 0; i < scene->mNumMeshes; ++i) faces += scene->mMeshes[i]->mNumFaces;
+  if (faces > options.limits.maxTriangles)
+    throw InputError(path.string() + ": the model has " + withThousands(faces) + " faces, more than the limit of " +
+                     withThousands(options.limits.maxTriangles) + " triangles (raise it with --max-triangles)");
+  const std::string nonSurfaces = describeNonSurfaces(*scene);
   scene = importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_SortByPType);
-  if (!scene) throw InputError(path.string() + ": cannot read the model: " + importer.GetErrorString());
+  if (!scene) readFailed(path, importer);
   if ((scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !scene->mRootNode || scene->mNumMeshes == 0)
-    throw InputError(path.string() + ": the model has no triangles");
+    throw InputError(path.string() + ": " + nonSurfaces);
   if (auto w = assimpWarnings.find("out-of-range")) throw InputError(path.string() + ": indices out of range: " + *w);
 
   ImportedModel model;
@@ -283,7 +357,7 @@ ImportedModel importModel(const fs::path& path, const ImportOptions& options) {
     if (am.GetTexture(aiTextureType_BASE_COLOR, 0, &name) == AI_SUCCESS ||
         am.GetTexture(aiTextureType_DIFFUSE, 0, &name) == AI_SUCCESS) {
       auto [it, inserted] = textureByName.try_emplace(name.C_Str(), nullptr);
-      if (inserted) it->second = loadTexture(*scene, name.C_Str(), path.parent_path(), model.warnings, path);
+      if (inserted) it->second = loadTexture(*scene, name.C_Str(), path.parent_path(), model.warnings, path, options.limits);
       tex = it->second;
     }
     textures.push_back(tex);
@@ -296,6 +370,7 @@ ImportedModel importModel(const fs::path& path, const ImportOptions& options) {
   Vec3 lo(std::numeric_limits<Real>::max()), hi(-std::numeric_limits<Real>::max());
   std::vector<std::pair<const aiNode*, Mat4>> stack = {{scene->mRootNode, Mat4(1)}};
   std::size_t visited = 0;
+  bool drawable = false;
   while (!stack.empty()) {
     auto [node, parent] = stack.back();
     stack.pop_back();
@@ -317,15 +392,37 @@ ImportedModel importModel(const fs::path& path, const ImportOptions& options) {
         lo = glm::min(lo, w);
         hi = glm::max(hi, w);
       }
+      drawable = drawable || hasDrawableTriangle(*o.mesh);
       model.vertexCount += o.mesh->positions.size();
       model.triangleCount += o.mesh->triangleCount();
+      if (model.triangleCount > options.limits.maxTriangles)
+        throw InputError(path.string() + ": the model's instances make more than the limit of " +
+                         withThousands(options.limits.maxTriangles) + " triangles (raise it with --max-triangles)");
       model.objects.push_back(std::move(o));
     }
     for (unsigned c = 0; c < node->mNumChildren; ++c) stack.push_back({node->mChildren[c], world});
   }
-  if (model.objects.empty()) throw InputError(path.string() + ": the model has no triangles");
+  if (model.objects.empty()) throw InputError(path.string() + ": " + nonSurfaces);
   if (!std::isfinite(lo.x + lo.y + lo.z + hi.x + hi.y + hi.z))
     throw InputError(path.string() + ": the node transforms place the model at infinity");
+  if (!drawable || hi == lo)
+    throw InputError(path.string() + ": the model has no drawable triangle (every triangle has zero area" +
+                     std::string(hi == lo ? ": all its vertices are at one point)" : ")"));
+  // Exporters that write <transparency>0</transparency> or an alpha-0 diffuse for opaque
+  // surfaces would make the whole model invisible: that is their bug, not the author's intent.
+  if (std::all_of(model.objects.begin(), model.objects.end(), fullyTransparent)) {
+    model.transparencyIgnored = true;
+    for (Object& o : model.objects) {
+      o.material.diffuse.a = 1;
+      if (!o.mesh->colors.empty()) {
+        auto opaque = std::make_shared<Mesh>(*o.mesh);
+        for (Vec4& c : opaque->colors) c.a = 1;
+        o.mesh = std::move(opaque);
+      }
+    }
+    model.warnings.push_back(path.string() + ": every surface of the model is fully transparent (an exporter's " +
+                             "bug, such as Collada's <transparency>0</transparency>); rendering it opaque");
+  }
   model.boundsMin = lo;
   model.boundsMax = hi;
   return model;

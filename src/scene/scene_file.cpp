@@ -144,13 +144,33 @@ Mesh readTriangles(const JsonReader& j) {
   return mesh;
 }
 
-ImportedModel readModelFile(const JsonReader& j, const std::filesystem::path& baseDir) {
+// What reading one scene file carries along: where its paths start, and the triangle budget
+// (--max-triangles) that GLUT tessellation and model files draw from before anything is built.
+struct ReadContext {
+  std::filesystem::path baseDir;
+  Limits limits;
+  std::uint64_t triangles = 0;
+
+  void charge(const JsonReader& j, std::uint64_t count) {
+    triangles += count;
+    if (triangles > limits.maxTriangles)
+      j.fail("a mesh that brings the scene to " + withThousands(triangles) + " triangles, more than the limit of " +
+             withThousands(limits.maxTriangles) + " (raise it with --max-triangles)");
+  }
+};
+
+ImportedModel readModelFile(const JsonReader& j, ReadContext& context) {
+  const std::filesystem::path& baseDir = context.baseDir;
   j.expectObject({"type", "path"});
   if (!j.has("path")) j.fail("expected a \"path\" to a model file");
   const std::filesystem::path rel = j.at("path").string();
   const std::filesystem::path full = rel.is_absolute() ? rel : baseDir / rel;
   try {
-    return importModel(full, ImportOptions{});
+    ImportOptions options;
+    options.limits = context.limits;
+    ImportedModel model = importModel(full, options);
+    context.charge(j.at("path"), model.triangleCount);
+    return model;
   } catch (const InputError& e) {
     j.at("path").fail(e.what());
   }
@@ -160,7 +180,7 @@ bool isModelFile(const JsonReader& j) {
   return j.value().is_object() && j.has("type") && j.value()["type"] == "file";
 }
 
-Mesh readMesh(const JsonReader& j) {
+Mesh readMesh(const JsonReader& j, ReadContext& context) {
   if (!j.value().is_object()) j.fail("expected an object, got something else");
   if (!j.has("type")) j.fail("expected a \"type\": sphere, cube, torus, cone, teapot, triangles or file");
   const std::string type = j.at("type").string();
@@ -169,6 +189,7 @@ Mesh readMesh(const JsonReader& j) {
     const Real radius = j.has("radius") ? j.at("radius").positive() : Real(1);
     const int slices = j.has("slices") ? j.at("slices").integer(3, kMaxTessellation) : 20;
     const int stacks = j.has("stacks") ? j.at("stacks").integer(2, kMaxTessellation) : 16;
+    context.charge(j, 2 * std::uint64_t(slices) * std::uint64_t(stacks));
     return makeSphere(radius, slices, stacks);
   }
   if (type == "cube") {
@@ -181,6 +202,7 @@ Mesh readMesh(const JsonReader& j) {
     const Real outer = j.has("outer_radius") ? j.at("outer_radius").positive() : Real(1);
     const int sides = j.has("sides") ? j.at("sides").integer(3, kMaxTessellation) : 16;
     const int rings = j.has("rings") ? j.at("rings").integer(3, kMaxTessellation) : 32;
+    context.charge(j, 2 * std::uint64_t(sides) * std::uint64_t(rings));
     return makeTorus(inner, outer, sides, rings);
   }
   if (type == "cone") {
@@ -189,25 +211,30 @@ Mesh readMesh(const JsonReader& j) {
     const Real height = j.has("height") ? j.at("height").positive() : Real(2);
     const int slices = j.has("slices") ? j.at("slices").integer(3, kMaxTessellation) : 20;
     const int stacks = j.has("stacks") ? j.at("stacks").integer(1, kMaxTessellation) : 8;
+    context.charge(j, 2 * std::uint64_t(slices) * (std::uint64_t(stacks) + 1));
     return makeCone(base, height, slices, stacks);
   }
   if (type == "teapot") {
     j.expectObject({"type", "size"});
     return makeTeapot(j.has("size") ? j.at("size").positive() : Real(1));
   }
-  if (type == "triangles") return readTriangles(j);
+  if (type == "triangles") {
+    Mesh mesh = readTriangles(j);
+    context.charge(j, mesh.triangleCount());
+    return mesh;
+  }
   j.at("type").fail("expected one of sphere, cube, torus, cone, teapot, triangles, file; got \"" + type + "\"");
 }
 
 // One object of the scene; a model file brings one object per mesh instance, each placed by its
 // node transforms after the object's transform, in the file's materials unless one is given.
-void readObject(const JsonReader& j, const std::filesystem::path& baseDir, std::vector<Object>& out) {
+void readObject(const JsonReader& j, ReadContext& context, std::vector<Object>& out) {
   j.expectObject({"mesh", "transform", "material"});
   const Mat4 worldFromObject = j.has("transform") ? readTransform(j.at("transform")) : Mat4(1);
   std::optional<Material> material;
   if (j.has("material")) material = readMaterial(j.at("material"));
   if (j.has("mesh") && isModelFile(j.at("mesh"))) {
-    for (Object& o : readModelFile(j.at("mesh"), baseDir).objects) {
+    for (Object& o : readModelFile(j.at("mesh"), context).objects) {
       o.worldFromObject = worldFromObject * o.worldFromObject;
       if (material) o.material = *material;
       out.push_back(std::move(o));
@@ -215,7 +242,7 @@ void readObject(const JsonReader& j, const std::filesystem::path& baseDir, std::
     return;
   }
   Object o;
-  o.mesh = std::make_shared<Mesh>(j.has("mesh") ? readMesh(j.at("mesh")) : makeSphere(1, 20, 16));
+  o.mesh = std::make_shared<Mesh>(j.has("mesh") ? readMesh(j.at("mesh"), context) : makeSphere(1, 20, 16));
   o.worldFromObject = worldFromObject;
   if (material) o.material = *material;
   out.push_back(std::move(o));
@@ -251,7 +278,8 @@ std::string describeParseError(const Json::parse_error& e, const std::string& te
 
 }  // namespace
 
-Scene parseScene(const std::string& text, const std::string& name, const std::filesystem::path& baseDir) {
+Scene parseScene(const std::string& text, const std::string& name, const std::filesystem::path& baseDir,
+                 const Limits& limits) {
   Json root;
   try {
     root = parseJsonStrict(text, name);
@@ -271,6 +299,10 @@ Scene parseScene(const std::string& text, const std::string& name, const std::fi
     j.at("version").fail("expected version 1");
   if (j.has("width")) s.width = j.at("width").integer(1, kMaxImageSize);
   if (j.has("height")) s.height = j.at("height").integer(1, kMaxImageSize);
+  if (std::uint64_t(s.width) * std::uint64_t(s.height) > limits.maxPixels)
+    (j.has("height") ? j.at("height") : j.at("width"))
+        .fail("an image of at most " + withThousands(limits.maxPixels) + " pixels (raise it with --max-pixels), got " +
+              std::to_string(s.width) + "×" + std::to_string(s.height));
   if (j.has("background")) s.background = j.at("background").color34();
   if (j.has("model")) {
     const std::string m = j.at("model").string();
@@ -293,7 +325,8 @@ Scene parseScene(const std::string& text, const std::string& name, const std::fi
   }
   if (j.has("objects")) {
     const JsonReader objects = j.at("objects");
-    for (std::size_t i = 0, n = objects.arraySize(); i < n; ++i) readObject(objects.item(i), baseDir, s.objects);
+    ReadContext context{baseDir, limits};
+    for (std::size_t i = 0, n = objects.arraySize(); i < n; ++i) readObject(objects.item(i), context, s.objects);
   }
   if (j.has("blend")) s.blend = j.at("blend").boolean();
   if (j.has("labels")) {
@@ -303,13 +336,13 @@ Scene parseScene(const std::string& text, const std::string& name, const std::fi
   return s;
 }
 
-Scene loadSceneFile(const std::filesystem::path& path) {
+Scene loadSceneFile(const std::filesystem::path& path, const Limits& limits) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path.string() + ": cannot open the scene file (does it exist and is it readable?)");
   std::ostringstream buf;
   buf << in.rdbuf();
   if (in.bad()) throw InputError(path.string() + ": cannot read the scene file");
-  return parseScene(buf.str(), path.string(), path.parent_path());
+  return parseScene(buf.str(), path.string(), path.parent_path(), limits);
 }
 
 }  // namespace illum

@@ -1,0 +1,28 @@
+// How much work an input may ask for before illum refuses it. Every limit can be raised from the
+// command line; the error that a limit causes says which option raises it.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+namespace illum {
+
+struct Limits {
+  // Triangles in one scene or model (GLUT tessellation, declared counts, instanced nodes).
+  std::uint64_t maxTriangles = 20'000'000;  // --max-triangles
+  // Pixels of the output image and of each texture (checked from the image header, before decoding).
+  std::uint64_t maxPixels = std::uint64_t(8192) * 8192;  // --max-pixels
+  // Memory the importer may use, in MiB; 0 chooses 768 MiB + 32 × the file's size.
+  std::uint64_t maxMemoryMiB = 0;  // --max-memory
+  // CPU seconds the importer may use; 0 chooses 10 s + 1 s per MiB of the file.
+  double maxSeconds = 0;  // --max-time
+
+  std::uint64_t memoryBytesFor(std::uint64_t fileBytes) const;
+  double secondsFor(std::uint64_t fileBytes) const;
+};
+
+// "12,345,678" for messages.
+std::string withThousands(std::uint64_t n);
+
+}  // namespace illum

@@ -1,0 +1,272 @@
+#include "isolate.h"
+
+#include <illum/error.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <new>
+#include <optional>
+#include <sstream>
+#include <thread>
+
+#include <sys/mman.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#if defined(__SANITIZE_ADDRESS__)
+#define ILLUM_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define ILLUM_ASAN 1
+#endif
+#endif
+
+namespace illum {
+namespace {
+
+// The child's exit codes for the ways work can end; anything else (a signal, a sanitizer's report)
+// is a crash.
+enum ChildExit : int { kFinished = 0, kRefused = 2, kOutOfMemory = 3, kFailed = 4, kOutputTooBig = 6 };
+
+struct OutputLimitReached {};
+
+// AddressSanitizer reserves terabytes of address space for its shadow, so RLIMIT_DATA cannot be
+// used under it, and its quarantine and shadow inflate the resident size: the parent's watch of
+// the resident size is the limit there, with room for that overhead.
+#ifdef ILLUM_ASAN
+constexpr bool kRlimitUsable = false;
+constexpr double kResidentAllowance = 3;
+#else
+constexpr bool kRlimitUsable = true;
+constexpr double kResidentAllowance = 1;
+#endif
+
+int makeMemoryFile(const char* name) {
+  const int fd = ::memfd_create(name, MFD_CLOEXEC);
+  if (fd < 0) throw Error(std::string("cannot create a memory file: ") + std::strerror(errno));
+  return fd;
+}
+
+std::vector<std::uint8_t> readWhole(int fd) {
+  struct stat st{};
+  if (::fstat(fd, &st) != 0) throw Error(std::string("cannot read the isolated result: ") + std::strerror(errno));
+  std::vector<std::uint8_t> bytes(std::size_t(st.st_size));
+  std::size_t done = 0;
+  while (done < bytes.size()) {
+    const ssize_t n = ::pread(fd, bytes.data() + done, bytes.size() - done, off_t(done));
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) throw Error(std::string("cannot read the isolated result: ") + std::strerror(errno));
+    done += std::size_t(n);
+  }
+  return bytes;
+}
+
+std::string asText(const std::vector<std::uint8_t>& bytes) { return {bytes.begin(), bytes.end()}; }
+
+// The line of what the child printed that best says why it died: a sanitizer's or assimp's own
+// verdict if there is one, otherwise the last line.
+std::string lastWords(int fd) {
+  const std::string text = asText(readWhole(fd));
+  std::string best, last;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    std::size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    const std::string line = text.substr(start, end - start);
+    if (!line.empty()) {
+      last = line;
+      if (best.empty() && (line.find("ERROR:") != std::string::npos || line.find("ai_assert") != std::string::npos ||
+                           line.find("what():") != std::string::npos))
+        best = line;
+    }
+    start = end + 1;
+  }
+  std::string words = best.empty() ? last : best;
+  words.erase(0, words.find_first_not_of(" \t"));
+  if (words.size() > 200) words = words.substr(0, 200) + "…";
+  return words;
+}
+
+std::size_t residentBytes(pid_t pid) {
+  std::ifstream statm("/proc/" + std::to_string(pid) + "/statm");
+  std::size_t size = 0, resident = 0;
+  statm >> size >> resident;
+  return resident * std::size_t(::sysconf(_SC_PAGESIZE));
+}
+
+// The data segment a process has now (VmData): the child's limit is on top of what it inherited.
+std::size_t dataBytes() {
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line))
+    if (line.rfind("VmData:", 0) == 0) {
+      std::istringstream in(line.substr(7));
+      std::size_t kib = 0;
+      in >> kib;
+      return kib * 1024;
+    }
+  return 0;
+}
+
+void setLimit(int resource, rlim_t soft, rlim_t hard) {
+  const rlimit limit{soft, hard};
+  ::setrlimit(resource, &limit);
+}
+
+void replaceWith(int fd, const std::string& message) {
+  if (::ftruncate(fd, 0) != 0) return;
+  if (::lseek(fd, 0, SEEK_SET) != 0) return;
+  std::size_t done = 0;
+  while (done < message.size()) {
+    const ssize_t n = ::write(fd, message.data() + done, message.size() - done);
+    if (n <= 0) return;
+    done += std::size_t(n);
+  }
+}
+
+// Runs the work and says how it ended; the message, if any, replaces the result.
+int runWork(const std::function<void(IsolatedWriter&)>& work, int resultFd) {
+  try {
+    IsolatedWriter writer(resultFd);
+    work(writer);
+    writer.flush();
+    return kFinished;
+  } catch (const OutputLimitReached&) {
+    return kOutputTooBig;
+  } catch (const std::bad_alloc&) {
+    return kOutOfMemory;
+  } catch (const InputError& e) {
+    replaceWith(resultFd, e.what());
+    return kRefused;
+  } catch (const std::exception& e) {
+    replaceWith(resultFd, e.what());
+    return kFailed;
+  } catch (...) {
+    replaceWith(resultFd, "an unknown exception");
+    return kFailed;
+  }
+}
+
+IsolationOutcome outcomeOf(int code, int resultFd) {
+  IsolationOutcome o;
+  switch (code) {
+    case kFinished: o.kind = IsolationOutcome::Kind::Finished; o.payload = readWhole(resultFd); break;
+    case kRefused: o.kind = IsolationOutcome::Kind::Refused; o.message = asText(readWhole(resultFd)); break;
+    case kFailed: o.kind = IsolationOutcome::Kind::Failed; o.message = asText(readWhole(resultFd)); break;
+    case kOutOfMemory: o.kind = IsolationOutcome::Kind::OutOfMemory; break;
+    case kOutputTooBig: o.kind = IsolationOutcome::Kind::OutputTooBig; break;
+    default: o.kind = IsolationOutcome::Kind::Crashed; o.message = "exit status " + std::to_string(code); break;
+  }
+  return o;
+}
+
+[[noreturn]] void childMain(const std::function<void(IsolatedWriter&)>& work, const IsolationLimits& limits,
+                            int resultFd, int logFd) {
+  // What the importer prints (assertions, sanitizer reports) is kept for the parent's message.
+  ::dup2(logFd, STDOUT_FILENO);
+  ::dup2(logFd, STDERR_FILENO);
+  std::signal(SIGXFSZ, SIG_IGN);  // the output limit shows as EFBIG from write(2)
+  setLimit(RLIMIT_CORE, 0, 0);
+  const auto cpu = rlim_t(std::ceil(limits.cpuSeconds));
+  setLimit(RLIMIT_CPU, cpu, cpu + 1);
+  setLimit(RLIMIT_FSIZE, rlim_t(limits.outputBytes), rlim_t(limits.outputBytes));
+  if (kRlimitUsable) {
+    const auto data = rlim_t(dataBytes() + limits.memoryBytes);
+    setLimit(RLIMIT_DATA, data, data);
+  }
+  ::_exit(runWork(work, resultFd));
+}
+
+}  // namespace
+
+void IsolatedWriter::write(const void* data, std::size_t size) {
+  const auto* bytes = static_cast<const std::uint8_t*>(data);
+  buffer_.insert(buffer_.end(), bytes, bytes + size);
+  if (buffer_.size() >= (std::size_t(1) << 20)) flush();
+}
+
+void IsolatedWriter::flush() {
+  std::size_t done = 0;
+  while (done < buffer_.size()) {
+    const ssize_t n = ::write(fd_, buffer_.data() + done, buffer_.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0 && errno == EFBIG) throw OutputLimitReached{};
+    if (n <= 0) throw Error(std::string("cannot hand the result back: ") + std::strerror(errno));
+    done += std::size_t(n);
+  }
+  buffer_.clear();
+}
+
+IsolationOutcome runIsolated(const std::function<void(IsolatedWriter&)>& work, const IsolationLimits& limits) {
+  const int resultFd = makeMemoryFile("illum-result");
+  const int logFd = makeMemoryFile("illum-log");
+  struct Closer {
+    int a, b;
+    ~Closer() { ::close(a), ::close(b); }
+  } closer{resultFd, logFd};
+
+  if (const char* inProcess = std::getenv("ILLUM_NO_ISOLATION"); inProcess && std::string(inProcess) == "1")
+    return outcomeOf(runWork(work, resultFd), resultFd);
+
+  std::fflush(nullptr);  // nothing buffered is written twice
+  const std::size_t inherited = residentBytes(::getpid());
+  const pid_t pid = ::fork();
+  if (pid < 0) throw Error(std::string("cannot start the isolated importer: ") + std::strerror(errno));
+  if (pid == 0) childMain(work, limits, resultFd, logFd);
+
+  // Watch the child: the wall clock (a child blocked on I/O spends no CPU time) and its resident
+  // size (the limit that works under every allocator and sanitizer).
+  using Clock = std::chrono::steady_clock;
+  const auto deadline = Clock::now() + std::chrono::duration<double>(2 * limits.cpuSeconds + 1);
+  const auto residentLimit = inherited + std::size_t(double(limits.memoryBytes) * kResidentAllowance);
+  auto pause = std::chrono::microseconds(200);
+  int status = 0;
+  std::optional<IsolationOutcome::Kind> killedFor;
+  for (;;) {
+    const pid_t done = ::waitpid(pid, &status, WNOHANG);
+    if (done == pid) break;
+    if (done < 0 && errno != EINTR) throw Error(std::string("cannot wait for the importer: ") + std::strerror(errno));
+    if (!killedFor) {
+      if (Clock::now() > deadline) killedFor = IsolationOutcome::Kind::TimedOut;
+      else if (residentBytes(pid) > residentLimit) killedFor = IsolationOutcome::Kind::OutOfMemory;
+      if (killedFor) ::kill(pid, SIGKILL);
+    }
+    std::this_thread::sleep_for(pause);
+    pause = std::min(pause * 2, std::chrono::microseconds(5000));
+  }
+
+  if (killedFor) {
+    IsolationOutcome o;
+    o.kind = *killedFor;
+    return o;
+  }
+  if (WIFEXITED(status)) {
+    IsolationOutcome o = outcomeOf(WEXITSTATUS(status), resultFd);
+    if (o.kind == IsolationOutcome::Kind::Crashed) {
+      const std::string words = lastWords(logFd);
+      if (!words.empty()) o.message += ", after printing \"" + words + "\"";
+    }
+    return o;
+  }
+  IsolationOutcome o;
+  const int sig = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
+  if (sig == SIGXCPU) {
+    o.kind = IsolationOutcome::Kind::TimedOut;
+    return o;
+  }
+  o.kind = IsolationOutcome::Kind::Crashed;
+  const char* name = sig ? sigabbrev_np(sig) : nullptr;
+  o.message = name ? "SIG" + std::string(name) + ", " + strsignal(sig) : "an unknown signal";
+  if (const std::string words = lastWords(logFd); !words.empty()) o.message += ", after printing \"" + words + "\"";
+  return o;
+}
+
+}  // namespace illum

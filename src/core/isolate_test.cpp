@@ -1,0 +1,114 @@
+#include "core/isolate.h"
+
+#include <illum/error.h>
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <csignal>
+#include <cstdlib>
+#include <cstring>
+#include <list>
+
+#include <unistd.h>
+
+namespace illum {
+namespace {
+
+using Kind = IsolationOutcome::Kind;
+
+IsolationLimits smallLimits() {
+  IsolationLimits l;
+  l.memoryBytes = std::size_t(256) << 20;
+  l.cpuSeconds = 1;
+  l.outputBytes = std::size_t(1) << 20;
+  return l;
+}
+
+TEST(Isolate, HandsBackWhatTheWorkWrote) {
+  const IsolationOutcome o = runIsolated([](IsolatedWriter& w) { w.write("hello", 5); }, smallLimits());
+  ASSERT_EQ(o.kind, Kind::Finished) << o.message;
+  EXPECT_EQ(std::string(o.payload.begin(), o.payload.end()), "hello");
+}
+
+TEST(Isolate, InputErrorIsARefusalWithItsMessage) {
+  const IsolationOutcome o = runIsolated([](IsolatedWriter&) { throw InputError("file.ply: bad header"); }, smallLimits());
+  EXPECT_EQ(o.kind, Kind::Refused);
+  EXPECT_EQ(o.message, "file.ply: bad header");
+}
+
+TEST(Isolate, OtherExceptionsFail) {
+  const IsolationOutcome o = runIsolated([](IsolatedWriter&) { throw std::runtime_error("odd"); }, smallLimits());
+  EXPECT_EQ(o.kind, Kind::Failed);
+  EXPECT_EQ(o.message, "odd");
+}
+
+TEST(Isolate, SegmentationFaultIsACrashNamedBySignal) {
+  const IsolationOutcome o = runIsolated(
+      [](IsolatedWriter&) {
+        std::signal(SIGSEGV, SIG_DFL);
+        std::raise(SIGSEGV);
+      },
+      smallLimits());
+  EXPECT_EQ(o.kind, Kind::Crashed);
+  EXPECT_NE(o.message.find("SIGSEGV"), std::string::npos) << o.message;
+}
+
+TEST(Isolate, AbortIsACrashWithTheLastWordsPrinted) {
+  const IsolationOutcome o = runIsolated(
+      [](IsolatedWriter&) {
+        std::fprintf(stderr, "noise\nai_assert failure in Reader.cpp(12): x == y\n");
+        std::fflush(stderr);
+        std::abort();
+      },
+      smallLimits());
+  EXPECT_EQ(o.kind, Kind::Crashed);
+  EXPECT_NE(o.message.find("SIGABRT"), std::string::npos) << o.message;
+  EXPECT_NE(o.message.find("ai_assert failure in Reader.cpp(12)"), std::string::npos) << o.message;
+}
+
+TEST(Isolate, EndlessAllocationIsOutOfMemoryQuickly) {
+  const auto start = std::chrono::steady_clock::now();
+  const IsolationOutcome o = runIsolated(
+      [](IsolatedWriter&) {
+        std::list<std::vector<char>> hoard;
+        for (;;) hoard.emplace_back(std::size_t(1) << 20, 'x');  // touched, so resident
+      },
+      smallLimits());
+  EXPECT_EQ(o.kind, Kind::OutOfMemory);
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 10);
+}
+
+TEST(Isolate, EndlessLoopTimesOut) {
+  IsolationLimits limits = smallLimits();
+  limits.cpuSeconds = 0.3;
+  const IsolationOutcome o = runIsolated(
+      [](IsolatedWriter&) {
+        volatile unsigned long n = 0;
+        for (;;) n = n + 1;
+      },
+      limits);
+  EXPECT_EQ(o.kind, Kind::TimedOut);
+}
+
+TEST(Isolate, BlockedChildTimesOutByTheWallClock) {
+  IsolationLimits limits = smallLimits();
+  limits.cpuSeconds = 0.2;
+  const auto start = std::chrono::steady_clock::now();
+  const IsolationOutcome o = runIsolated([](IsolatedWriter&) { ::pause(); }, limits);
+  EXPECT_EQ(o.kind, Kind::TimedOut);
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5);
+}
+
+TEST(Isolate, TooMuchOutputIsRefused) {
+  const IsolationOutcome o = runIsolated(
+      [](IsolatedWriter& w) {
+        const std::vector<char> block(1 << 16, 'x');
+        for (int i = 0; i < 64; ++i) w.write(block.data(), block.size());
+      },
+      smallLimits());
+  EXPECT_EQ(o.kind, Kind::OutputTooBig);
+}
+
+}  // namespace
+}  // namespace illum

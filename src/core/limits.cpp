@@ -1,0 +1,24 @@
+#include <illum/limits.h>
+
+namespace illum {
+
+std::uint64_t Limits::memoryBytesFor(std::uint64_t fileBytes) const {
+  constexpr std::uint64_t MiB = std::uint64_t(1) << 20;
+  if (maxMemoryMiB != 0) return maxMemoryMiB * MiB;
+  // A reader needs memory in proportion to what it reads; compressed formats (glb, zae, 3mf)
+  // expand, so the factor is generous, and small files get a floor that any sane one fits in.
+  return 768 * MiB + 32 * fileBytes;
+}
+
+double Limits::secondsFor(std::uint64_t fileBytes) const {
+  if (maxSeconds > 0) return maxSeconds;
+  return 10 + double(fileBytes) / double(std::uint64_t(1) << 20);
+}
+
+std::string withThousands(std::uint64_t n) {
+  std::string s = std::to_string(n);
+  for (int i = int(s.size()) - 3; i > 0; i -= 3) s.insert(std::size_t(i), ",");
+  return s;
+}
+
+}  // namespace illum

@@ -1,0 +1,49 @@
+// importModel: the in-process importer run in a child with limits (core/isolate.h), and its
+// outcomes turned into messages that say what happened and which option to raise.
+#include <illum/import.h>
+
+#include <illum/error.h>
+
+#include "core/isolate.h"
+#include "scene/model_wire.h"
+
+#include <cmath>
+#include <system_error>
+
+namespace illum {
+
+ImportedModel importModel(const std::filesystem::path& path, const ImportOptions& options) {
+  std::error_code ec;
+  // The quick refusals need no child.
+  if (!std::filesystem::exists(path, ec)) throw InputError(path.string() + ": no such model file");
+  if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path.string() + ": not a regular file");
+  const std::uint64_t size = std::filesystem::file_size(path, ec);
+  if (ec || size == 0) throw InputError(path.string() + ": the model file is empty");
+
+  IsolationLimits limits;
+  limits.memoryBytes = std::size_t(options.limits.memoryBytesFor(size));
+  limits.cpuSeconds = options.limits.secondsFor(size);
+  limits.outputBytes = limits.memoryBytes;
+  const IsolationOutcome outcome =
+      runIsolated([&](IsolatedWriter& out) { writeModel(importModelInProcess(path, options), out); }, limits);
+
+  const std::string mib = std::to_string((limits.memoryBytes + (1 << 20) - 1) >> 20);
+  const std::string where = path.string() + ": ";
+  switch (outcome.kind) {
+    case IsolationOutcome::Kind::Finished: return readModel(outcome.payload);
+    case IsolationOutcome::Kind::Refused: throw InputError(outcome.message);
+    case IsolationOutcome::Kind::Failed: throw InputError(where + "cannot read the model: " + outcome.message);
+    case IsolationOutcome::Kind::OutOfMemory:
+      throw InputError(where + "reading the model would need more than " + mib + " MiB (raise it with --max-memory)");
+    case IsolationOutcome::Kind::OutputTooBig:
+      throw InputError(where + "the model is larger than " + mib + " MiB (raise it with --max-memory)");
+    case IsolationOutcome::Kind::TimedOut:
+      throw InputError(where + "reading the model took more than " +
+                       std::to_string(int(std::ceil(limits.cpuSeconds))) + " s (raise it with --max-time)");
+    case IsolationOutcome::Kind::Crashed:
+      throw InputError(where + "the importer crashed (" + outcome.message + "): the file is broken or not the format its name says");
+  }
+  throw InputError(where + "the importer ended in an unknown way");
+}
+
+}  // namespace illum
