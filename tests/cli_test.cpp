@@ -157,7 +157,7 @@ TEST(CliRender, DebugPixelExplainsThePixel) {
   for (int c = 0; c < 4; ++c) EXPECT_EQ(img.pixel(180, 200)[c], b[c]);
   double t[3], w[3];
   ASSERT_EQ(std::sscanf(r.out.c_str() + total, "total (clamped) %lf %lf %lf", &t[0], &t[1], &t[2]), 3);
-  ASSERT_EQ(std::sscanf(r.out.c_str() + r.out.find("written: "), "written: %lf %lf %lf", &w[0], &w[1], &w[2]), 3);
+  ASSERT_EQ(std::sscanf(r.out.c_str() + r.out.find("fragment: "), "fragment: %lf %lf %lf", &w[0], &w[1], &w[2]), 3);
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(t[c], w[c], 1e-4);
   const RunResult bg = run("render --debug-pixel 5,5 -o " + (dir / "out.png").string());
   EXPECT_NE(bg.out.find("background"), std::string::npos);

@@ -11,13 +11,65 @@ void row(const std::string& name, const Color3& c) {
   std::printf("  %-22s %9.4f %9.4f %9.4f\n", name.c_str(), double(c.r), double(c.g), double(c.b));
 }
 
+std::string vec(const Vec3& v) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "(%.4f, %.4f, %.4f)", double(v.x), double(v.y), double(v.z));
+  return buf;
+}
+
+std::string rgba(const Color4& c) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "%.4f %.4f %.4f alpha %.4f", double(c.r), double(c.g), double(c.b), double(c.a));
+  return buf;
+}
+
 int byte(Real c) { return int(std::lround(double(glm::clamp(c, Real(0), Real(1))) * 255)); }
+
+// The equation (OpenGL 2.1 §2.14.1) at one point, one light at a time, with each light's geometry;
+// computed by the same accumulateLight the renderer uses. Returns the clamped colour.
+Color4 printEquation(const Scene& scene, const Material& material, const Vec3& P, const Vec3& N) {
+  const Vec3 V = viewerDirection(P, scene.lightModel.localViewer);
+  std::printf("  eye space: P = %s, N = %s, V = %s\n", vec(P).c_str(), vec(N).c_str(), vec(V).c_str());
+  const SurfaceGeometry surface{P, N, V};
+  const Mat4 view = scene.camera.viewFromWorld();
+  std::printf("  %-22s %9s %9s %9s\n", "", "R", "G", "B");
+  row("emission", Color3(material.emission));
+  row("global ambient", scene.lightModel.ambient * Color3(material.ambient));
+  LightingTerms total;
+  total.emission = Color3(material.emission);
+  total.ambient = scene.lightModel.ambient * Color3(material.ambient);
+  for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+    const EyeLight light = toEyeSpace(scene.lights[i], view);
+    LightDetail d;
+    accumulateLight(total, light, material, scene.model, surface, &d);
+    const std::string name = "light " + std::to_string(i);
+    std::printf("  %s: %s, L = %s", name.c_str(), d.positional ? "positional" : "directional", vec(d.L).c_str());
+    if (d.positional) std::printf(", distance %.4f", double(d.distance));
+    std::printf(", attenuation %.4f, spot factor %.4f%s; N·L = %.4f", double(d.attenuation), double(d.spot),
+                light.isSpot() ? "" : " (no cone)", double(d.NoL));
+    if (scene.model == LightingModel::BlinnPhong)
+      std::printf("; H = %s, N·H = %.4f, (N·H)^%g = %.4f", vec(d.H).c_str(), double(d.NoH), double(material.shininess),
+                  double(d.lobe));
+    else if (scene.model == LightingModel::Phong)
+      std::printf("; R = %s, R·V = %.4f, (R·V)^%g = %.4f", vec(d.R).c_str(), double(d.RoV), double(material.shininess),
+                  double(d.lobe));
+    std::printf("\n");
+    row(name + " ambient", d.terms.ambient);
+    row(name + " diffuse", d.terms.diffuse);
+    if (scene.model != LightingModel::Lambert) row(name + " specular", d.terms.specular);
+  }
+  const Color4 lit = clampedColor(total, material);
+  row("total (clamped)", Color3(lit));
+  return lit;
+}
 
 }  // namespace
 
-void printPixelReport(const Scene& scene, const PixelProbe& p) {
+void printPixelReport(const Scene& scene, const PixelProbe& p, const Image& image) {
+  const std::uint8_t* b = image.pixel(p.x, p.y);
   if (!p.hit) {
     std::printf("pixel (%d, %d): background, no surface drawn here\n", p.x, p.y);
+    std::printf("  in the file: bytes %d %d %d %d\n", b[0], b[1], b[2], b[3]);
     return;
   }
   const char* shading = scene.shading == Shading::Flat      ? "flat shading: lit once, at the triangle's last vertex"
@@ -25,40 +77,32 @@ void printPixelReport(const Scene& scene, const PixelProbe& p) {
                                                             : "Phong shading: lit here, with the interpolated normal";
   std::printf("pixel (%d, %d): object %zu, triangle %zu, %s face; %s; %s\n", p.x, p.y, p.object, p.triangle,
               p.frontFacing ? "front" : "back", std::string(toString(scene.model)).c_str(), shading);
-  const Vec3 V = viewerDirection(p.eyePosition, scene.lightModel.localViewer);
-  std::printf("  eye space: P = (%.4f, %.4f, %.4f), N = (%.4f, %.4f, %.4f), V = (%.4f, %.4f, %.4f)\n",
-              double(p.eyePosition.x), double(p.eyePosition.y), double(p.eyePosition.z), double(p.eyeNormal.x),
-              double(p.eyeNormal.y), double(p.eyeNormal.z), double(V.x), double(V.y), double(V.z));
-
-  // The equation at that point, one light at a time (OpenGL 2.1 §2.14.1).
-  const SurfaceGeometry surface{p.eyePosition, p.eyeNormal, V};
-  const Mat4 view = scene.camera.viewFromWorld();
-  std::printf("  %-22s %9s %9s %9s\n", "", "R", "G", "B");
-  row("emission", Color3(p.material.emission));
-  row("global ambient", scene.lightModel.ambient * Color3(p.material.ambient));
-  LightingTerms total;
-  total.emission = Color3(p.material.emission);
-  total.ambient = scene.lightModel.ambient * Color3(p.material.ambient);
-  for (std::size_t i = 0; i < scene.lights.size(); ++i) {
-    const EyeLight light = toEyeSpace(scene.lights[i], view);
-    LightingTerms one;
-    accumulateLight(one, light, p.material, scene.model, surface);
-    const std::string name = "light " + std::to_string(i);
-    row(name + " ambient", one.ambient);
-    row(name + " diffuse", one.diffuse);
-    if (scene.model != LightingModel::Lambert) row(name + " specular", one.specular);
-    total.ambient += one.ambient;
-    total.diffuse += one.diffuse;
-    total.specular += one.specular;
+  switch (scene.shading) {
+    case Shading::Flat:
+      std::printf(" the provoking vertex:\n");
+      printEquation(scene, p.material, p.eyePosition, p.eyeNormal);
+      std::printf("  lit colour (the provoking vertex's, for the whole triangle): %s\n", rgba(p.lit).c_str());
+      break;
+    case Shading::Gouraud:
+      for (std::size_t i = 0; i < 3; ++i) {
+        std::printf(" vertex %zu of the drawn triangle:\n", i);
+        printEquation(scene, p.vertexMaterials[i], p.vertexPositions[i], p.vertexNormals[i]);
+        std::printf("  vertex colour used: %s\n", rgba(p.vertexColors[i]).c_str());
+      }
+      std::printf("  perspective-correct weights: %.4f %.4f %.4f\n", double(p.weights[0]), double(p.weights[1]),
+                  double(p.weights[2]));
+      std::printf("  lit colour (interpolated): %s\n", rgba(p.lit).c_str());
+      break;
+    case Shading::Phong:
+      printEquation(scene, p.material, p.eyePosition, p.eyeNormal);
+      std::printf("  lit colour: %s\n", rgba(p.lit).c_str());
+      break;
   }
-  const Color4 lit = clampedColor(total, p.material);
-  row("total (clamped)", Color3(lit));
-  std::printf("  written: %.4f %.4f %.4f alpha %.4f = bytes %d %d %d %d%s\n", double(p.written.r), double(p.written.g),
-              double(p.written.b), double(p.written.a), byte(p.written.r), byte(p.written.g), byte(p.written.b),
-              byte(p.written.a),
-              scene.objects[p.object].diffuseTexture && !scene.objects[p.object].mesh->uvs.empty()
-                  ? " (modulated by the texture)"
-                  : "");
+  if (p.textured)
+    std::printf("  × texel %s (GL_MODULATE)\n", rgba(p.texel).c_str());
+  std::printf("  fragment: %s = bytes %d %d %d %d%s\n", rgba(p.written).c_str(), byte(p.written.r), byte(p.written.g),
+              byte(p.written.b), byte(p.written.a), p.blended ? ", blended over what was there (source over)" : "");
+  std::printf("  in the file: bytes %d %d %d %d\n", b[0], b[1], b[2], b[3]);
 }
 
 }  // namespace illum::cli

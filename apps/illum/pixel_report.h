@@ -1,11 +1,14 @@
-// `illum render --debug-pixel x,y`: every term of the lighting equation at one pixel.
+// `illum render --debug-pixel x,y`: what was computed at one pixel, step by step, and the bytes
+// that ended up in the file there.
 #pragma once
 
+#include <illum/image.h>
 #include <illum/render.h>
 #include <illum/scene.h>
 
 namespace illum::cli {
 
-void printPixelReport(const Scene& scene, const PixelProbe& probe);
+// `image` is the picture as written (after blending and labels).
+void printPixelReport(const Scene& scene, const PixelProbe& probe, const Image& image);
 
 }  // namespace illum::cli

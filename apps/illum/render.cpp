@@ -251,6 +251,9 @@ int runRender(RenderOptions o) {
   }
   const Image image = renderScene(scene, &stats, probe ? &*probe : nullptr);
   const auto rendered = Clock::now();
+  if (stats.pixelsDrawn == 0 && !scene.objects.empty())
+    std::fprintf(stderr, "illum: warning: the picture shows only the background: nothing drawn is visible (are the "
+                         "objects outside the view, behind the camera, transparent or of the background's colour?)\n");
   if (stats.labelsSkipped)
     std::fprintf(stderr, "illum: warning: labels left out: the font /usr/share/fonts/truetype/dejavu/DejaVuSans.ttf "
                          "(Debian package fonts-dejavu-core) is missing\n");
@@ -274,7 +277,7 @@ int runRender(RenderOptions o) {
   }
   if (toStdout) return 0;
   if (!o.quiet && !isStandardOutput(o.output)) std::printf("%s\n", o.output.c_str());
-  if (probe) printPixelReport(scene, *probe);
+  if (probe) printPixelReport(scene, *probe, image);
   return 0;
 }
 

@@ -88,9 +88,27 @@ struct SurfaceGeometry {
   Vec3 toViewer{0, 0, 1};
 };
 
-// One light's contribution (attenuation and spot applied) added into `terms`.
+// Every intermediate of one light's contribution, for the reports that show the equation at work
+// (`illum eval`, `--debug-pixel`): filled by the same code that computes the colour.
+struct LightDetail {
+  bool positional = false;
+  Vec3 L{0};             // unit vector towards the light
+  Real distance = 0;     // to a positional light (directional: 0, attenuation 1)
+  Real attenuation = 1;  // 1 / (k_c + k_l·d + k_q·d²)
+  Real spot = 1;         // the spot factor, 1 without a cone
+  Real NoL = 0;
+  Vec3 H{0};             // blinn-phong: normalize(L + V)
+  Real NoH = 0;
+  Vec3 R{0};             // phong: 2N(N·L) − L
+  Real RoV = 0;
+  Real lobe = 0;         // (N·H)^n or (R·V)^n; 0 when N·L ≤ 0 (f_i = 0) or lambert
+  LightingTerms terms;   // this light's ambient, diffuse and specular, attenuation and spot applied
+};
+
+// One light's contribution (attenuation and spot applied) added into `terms`; with `detail`,
+// every intermediate is recorded there too.
 void accumulateLight(LightingTerms& terms, const EyeLight& light, const Material& material,
-                     LightingModel model, const SurfaceGeometry& surface);
+                     LightingModel model, const SurfaceGeometry& surface, LightDetail* detail = nullptr);
 
 // The full equation: emission + global ambient + Σ lights. Terms unclamped.
 LightingTerms evaluateTerms(std::span<const EyeLight> lights, const LightModel& lightModel,

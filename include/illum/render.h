@@ -4,12 +4,15 @@
 #include <illum/image.h>
 #include <illum/scene.h>
 
+#include <array>
+
 namespace illum {
 
 struct RenderStats {
   std::size_t trianglesIn = 0;       // triangles submitted
   std::size_t trianglesDrawn = 0;    // triangles after clipping that reached the rasterizer
   std::size_t fragmentsShaded = 0;   // fragments that passed the depth test
+  std::size_t pixelsDrawn = 0;       // pixels whose colour differs from the background (labels aside)
   bool labelsSkipped = false;        // the scene has labels but the label font is not installed
 };
 
@@ -26,7 +29,20 @@ struct PixelProbe {
   Vec3 eyePosition{0};
   Vec3 eyeNormal{0};         // unit; negated on a back face under two-sided lighting
   Material material;         // with vertex colours applied
-  Color4 written{0};         // the fragment's colour before 8-bit conversion (and blending)
+  // What the fragment stage computed, step by step:
+  //   flat:    `lit` is the colour lit at the provoking (last) vertex, used as it is;
+  //   gouraud: `vertexColors` were lit at the drawn (clipped) triangle's vertices, and `lit` is
+  //            their perspective-correct blend with `weights`;
+  //   phong:   `lit` is the equation evaluated here (clamped), as `eyePosition` and `eyeNormal` say.
+  std::array<Color4, 3> vertexColors{};
+  std::array<Vec3, 3> vertexPositions{}, vertexNormals{};  // eye space, as lit (normals facing the lit side)
+  std::array<Material, 3> vertexMaterials{};               // with each vertex's colour applied
+  std::array<Real, 3> weights{};
+  Color4 lit{0};
+  bool textured = false;
+  Vec4 texel{1};             // GL_MODULATE's factor, when textured
+  Color4 written{0};         // the fragment's colour: lit × texel, before 8-bit conversion and blending
+  bool blended = false;      // source-over blending mixed it with what was there
 };
 
 // Renders like OpenGL 2.1 fixed-function (or its per-pixel equivalent) into an RGBA8 image,

@@ -11,6 +11,7 @@
 #include "raster/vertex.h"
 
 #include <algorithm>
+#include <cstring>
 #include <limits>
 
 namespace illum {
@@ -32,7 +33,8 @@ struct DrawTarget {
 
 // Records the fragment at the watched pixel: where it was lit and what it wrote.
 void recordProbe(const DrawTarget& target, const Object& object, std::size_t objectIndex, std::size_t triangle,
-                 const TriangleSetup& t, const ProvokingVertex& flat, const std::array<Real, 3>& w, const Color4& c) {
+                 const TriangleSetup& t, const ProvokingVertex& flat, const std::array<Real, 3>& w, const Color4& lit,
+                 const Vec4* texel, const Color4& c) {
   PixelProbe& p = *target.probe;
   const auto& v = t.vertex;
   const bool back = target.frame.lightModel.twoSided && !t.frontFacing;
@@ -41,6 +43,17 @@ void recordProbe(const DrawTarget& target, const Object& object, std::size_t obj
   p.triangle = triangle;
   p.frontFacing = t.frontFacing;
   p.written = c;
+  p.lit = lit;
+  p.textured = texel != nullptr;
+  p.texel = texel ? *texel : Vec4(1);
+  p.blended = target.frame.blend && c.a < 1;  // alpha 1 blends to the fragment itself
+  p.weights = w;
+  for (std::size_t i = 0; i < 3; ++i) {
+    p.vertexColors[i] = back ? v[i]->back : v[i]->front;
+    p.vertexPositions[i] = v[i]->eyePosition;
+    p.vertexNormals[i] = back ? -v[i]->eyeNormal : v[i]->eyeNormal;
+    p.vertexMaterials[i] = object.mesh->colors.empty() ? object.material : withVertexColor(object.material, v[i]->color);
+  }
   p.material = object.material;
   if (!object.mesh->colors.empty())
     p.material = withVertexColor(object.material, w[0] * v[0]->color + w[1] * v[1]->color + w[2] * v[2]->color);
@@ -78,12 +91,15 @@ void drawTriangle(const DrawTarget& target, const Object& object, std::size_t ob
         c = shadePhongFragment(frame, object.material, vertexColors, t, perspectiveWeights(t, l0, l1, l2));
         break;
     }
+    const Color4 lit = c;
     // GL_MODULATE: the lit colour times the texel, alpha included.
-    if (texture) c *= sampleDiffuseTexture(*texture, t, l0, l1, l2);
+    Vec4 texel(1);
+    if (texture) c *= (texel = sampleDiffuseTexture(*texture, t, l0, l1, l2));
     if (frame.blend) target.fb.blendColor(x, y, c);
     else target.fb.writeColor(x, y, c);
     if (y == probeRow && x == target.probe->x)
-      recordProbe(target, object, objectIndex, triangle, t, flat, perspectiveWeights(t, l0, l1, l2), c);
+      recordProbe(target, object, objectIndex, triangle, t, flat, perspectiveWeights(t, l0, l1, l2), lit,
+                  texture ? &texel : nullptr, c);
   });
 }
 
@@ -106,6 +122,15 @@ void drawObject(const DrawTarget& target, const Object& object, std::size_t obje
       drawTriangle(target, object, objectIndex, i / 3, setup, flat);
     }
   }
+}
+
+// Pixels whose bytes differ from the cleared background's.
+std::size_t countPixelsUnlike(const Image& image, const Color4& background) {
+  const std::uint8_t clear[4] = {toUnorm8(background.r), toUnorm8(background.g), toUnorm8(background.b),
+                                 toUnorm8(background.a)};
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < image.rgba.size(); i += 4) n += std::memcmp(&image.rgba[i], clear, 4) != 0;
+  return n;
 }
 
 bool isTranslucent(const Object& o) {
@@ -147,6 +172,7 @@ Image renderScene(const Scene& scene, RenderStats* statsOut, PixelProbe* probe) 
   for (const Object* object : drawingOrder(scene, frame))
     drawObject(target, *object, std::size_t(object - scene.objects.data()));
   Image image = fb.toImage();
+  stats.pixelsDrawn = countPixelsUnlike(image, scene.background);
   stats.labelsSkipped = !drawLabels(image, scene);
   if (statsOut) *statsOut = stats;
   return image;

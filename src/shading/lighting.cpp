@@ -68,18 +68,23 @@ Vec3 viewerDirection(const Vec3& eyePosition, bool localViewer) {
 }
 
 void accumulateLight(LightingTerms& terms, const EyeLight& light, const Material& material,
-                     LightingModel model, const SurfaceGeometry& surface) {
+                     LightingModel model, const SurfaceGeometry& surface, LightDetail* detail) {
   const Vec3& N = surface.normal;
   const Vec3& V = surface.toViewer;
+  LightDetail local;
+  LightDetail& d = detail ? *detail : local;
+  d = LightDetail{};
 
-  // Compute the unit vector towards the light and the attenuation.
+  // Where the light is: the unit vector towards it and the attenuation.
   Vec3 L;
   Real attenuation = 1;
+  d.positional = light.isPositional();
   if (light.isPositional()) {
     Vec3 toLight = Vec3(light.position) / light.position.w - surface.position;
-    Real d = glm::length(toLight);
-    L = d > 0 ? toLight / d : N;  // a light exactly at the point shines along the normal
-    attenuation = distanceAttenuation(light.attenuation, d);
+    Real dist = glm::length(toLight);
+    L = dist > 0 ? toLight / dist : N;  // a light exactly at the point shines along the normal
+    attenuation = distanceAttenuation(light.attenuation, dist);
+    d.distance = dist;
   } else {
     Real len = glm::length(Vec3(light.position));
     L = len > 0 ? Vec3(light.position) / len : Vec3(0, 0, 1);
@@ -90,26 +95,39 @@ void accumulateLight(LightingTerms& terms, const EyeLight& light, const Material
                                           light.spotExponent)
                              : Real(1);
   Real scale = attenuation * spot;
-  if (scale == 0) return;
-
   Real NoL = glm::dot(N, L);
-  terms.ambient += scale * Color3(material.ambient) * light.ambient;
-  terms.diffuse += scale * Fd_Lambert(NoL) * Color3(material.diffuse) * light.diffuse;
+  d.L = L, d.attenuation = attenuation, d.spot = spot, d.NoL = NoL;
+  if (scale == 0 && !detail) return;
+
+  // How the surface answers: ambient, Lambert's diffuse and the model's specular lobe.
+  LightingTerms& out = d.terms;
+  out.ambient = scale * Color3(material.ambient) * light.ambient;
+  out.diffuse = scale * Fd_Lambert(NoL) * Color3(material.diffuse) * light.diffuse;
 
   // f_i = 0 when the light is behind the surface: no highlight without direct light.
-  if (model == LightingModel::Lambert || NoL <= 0) return;
   Real lobe = 0;
   if (model == LightingModel::BlinnPhong) {
     Vec3 H = L + V;
     Real len = glm::length(H);
     // L = −V (up to rounding) leaves H undefined; illum takes N·H = 0 (so only 0^0 = 1 survives).
     Real NoH = len > Real(1e-6) ? glm::dot(N, H) / len : Real(0);
-    lobe = Fs_BlinnPhong(NoH, material.shininess);
-  } else {
+    d.H = len > Real(1e-6) ? H / len : Vec3(0), d.NoH = NoH;
+    if (NoL > 0) lobe = Fs_BlinnPhong(NoH, material.shininess);
+  } else if (model == LightingModel::Phong) {
     Vec3 R = Real(2) * NoL * N - L;
-    lobe = Fs_Phong(glm::dot(R, V), material.shininess);
+    d.R = R, d.RoV = glm::dot(R, V);
+    if (NoL > 0) lobe = Fs_Phong(glm::dot(R, V), material.shininess);
   }
-  terms.specular += scale * lobe * Color3(material.specular) * light.specular;
+  d.lobe = lobe;
+  if (model != LightingModel::Lambert && NoL > 0)
+    out.specular = scale * lobe * Color3(material.specular) * light.specular;
+  if (scale == 0) {
+    d.terms = LightingTerms{};
+    return;
+  }
+  terms.ambient += out.ambient;
+  terms.diffuse += out.diffuse;
+  terms.specular += out.specular;
 }
 
 LightingTerms evaluateTerms(std::span<const EyeLight> lights, const LightModel& lightModel,
