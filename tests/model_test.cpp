@@ -270,3 +270,51 @@ TEST(BigModel, TwoMillionTrianglePly) {
 
 }  // namespace
 }  // namespace illum
+
+namespace illum {
+namespace {
+
+// Exporters that mark every surface fully transparent would render nothing: drawn opaque, warned.
+TEST(NothingSilentlyEmpty, FullyTransparentModelsAreDrawnOpaque) {
+  for (const char* file : {"Collada/teapots.DAE", "Collada/ConcavePolygon.dae", "BLEND/BlenderDefault_250.blend"}) {
+    TempDir dir;
+    const auto r = runIllum("render " + (kModels / file).string() + " --resolution=200,120 -o " + (dir / "m.png").string());
+    ASSERT_EQ(r.exitCode, 0) << file << ": " << r.err;
+    EXPECT_NE(r.err.find("fully transparent"), std::string::npos) << file << ": " << r.err;
+    EXPECT_GT(foreground(readPng(dir / "m.png")).count, 200) << file;
+  }
+}
+
+TEST(NothingSilentlyEmpty, DegenerateAndSurfacelessFilesAreRefused) {
+  TempDir dir;
+  const auto off = runIllum("render " + (kModels / "OFF/invalid.off").string() + " -o " + (dir / "a.png").string());
+  EXPECT_EQ(off.exitCode, 2);
+  EXPECT_NE(off.err.find("no drawable triangle"), std::string::npos) << off.err;
+  std::ofstream(dir / "points.ply") << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                       "property float z\nend_header\n0 0 0\n1 0 0\n0 1 0\n";
+  const auto points = runIllum("render " + (dir / "points.ply").string() + " -o " + (dir / "b.png").string());
+  EXPECT_EQ(points.exitCode, 2);
+  EXPECT_NE(points.err.find("only 3 points (vertices without faces) and no triangles"), std::string::npos) << points.err;
+  std::ofstream(dir / "lines.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2\nl 2 3\n";
+  const auto lines = runIllum("render " + (dir / "lines.obj").string() + " -o " + (dir / "b.png").string());
+  EXPECT_EQ(lines.exitCode, 2);
+  EXPECT_NE(lines.err.find("only 2 lines and no triangles"), std::string::npos) << lines.err;
+  std::ofstream(dir / "flat.obj") << "v 0 0 0\nv 1 1 1\nv 2 2 2\nf 1 2 3\n";
+  const auto flat = runIllum("render " + (dir / "flat.obj").string() + " -o " + (dir / "c.png").string());
+  EXPECT_EQ(flat.exitCode, 2);
+  EXPECT_NE(flat.err.find("no drawable triangle"), std::string::npos) << flat.err;
+  EXPECT_FALSE(fs::exists(dir / "a.png") || fs::exists(dir / "b.png") || fs::exists(dir / "c.png"));
+}
+
+TEST(NothingSilentlyEmpty, AnEmptyPictureIsWarnedAbout) {
+  TempDir dir;
+  std::ofstream(dir / "behind.json") << R"({"camera":{"eye":[0,0,5],"center":[0,0,10]},"objects":[{}]})";
+  const auto r = runIllum("render " + (dir / "behind.json").string() + " -o " + (dir / "e.png").string());
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("shows only the background"), std::string::npos) << r.err;
+  const auto seen = runIllum("render -o " + (dir / "d.png").string());
+  EXPECT_EQ(seen.err.find("shows only the background"), std::string::npos) << seen.err;
+}
+
+}  // namespace
+}  // namespace illum

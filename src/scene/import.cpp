@@ -317,8 +317,19 @@ ImportedModel importModelInProcess(const fs::path& path, const ImportOptions& op
   Assimp::Importer importer;
   // Keep lines and points out of the triangles; the validation step rejects broken index buffers.
   importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-  // Read and validate first: assimp's later steps assert (and abort) on some broken input.
-  const aiScene* scene = importer.ReadFile(path.string(), aiProcess_ValidateDataStructure);
+  // Read and validate before anything else: assimp's later steps assert (and abort) on some broken input.
+  const aiScene* scene = importer.ReadFile(path.string(), 0);
+  if (!scene) readFailed(path, importer);
+  // Point clouds (vertices without faces) fail assimp's validation with its own words; say it plainly.
+  std::uint64_t faceless = 0, vertices = 0;
+  for (unsigned i = 0; i < scene->mNumMeshes; ++i) {
+    vertices += scene->mMeshes[i]->mNumVertices;
+    faceless += scene->mMeshes[i]->mNumFaces == 0 ? scene->mMeshes[i]->mNumVertices : 0;
+  }
+  if (scene->mNumMeshes > 0 && faceless == vertices)
+    throw InputError(path.string() + ": the model holds only " + withThousands(vertices) +
+                     (vertices == 1 ? " point" : " points") + " (vertices without faces) and no triangles; illum draws surfaces");
+  scene = importer.ApplyPostProcessing(aiProcess_ValidateDataStructure);
   if (!scene) readFailed(path, importer);
   checkFaces(*scene, path);
   std::uint64_t faces = 0;
@@ -327,7 +338,9 @@ ImportedModel importModelInProcess(const fs::path& path, const ImportOptions& op
     throw InputError(path.string() + ": the model has " + withThousands(faces) + " faces, more than the limit of " +
                      withThousands(options.limits.maxTriangles) + " triangles (raise it with --max-triangles)");
   const std::string nonSurfaces = describeNonSurfaces(*scene);
+  const bool onlyPointsAndLines = nonSurfaces.find("only") != std::string::npos;
   scene = importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_SortByPType);
+  if (!scene && onlyPointsAndLines) throw InputError(path.string() + ": " + nonSurfaces);  // SortByPType removed them all
   if (!scene) readFailed(path, importer);
   if ((scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !scene->mRootNode || scene->mNumMeshes == 0)
     throw InputError(path.string() + ": " + nonSurfaces);
