@@ -79,7 +79,7 @@ TEST(CliEval, BadInputIsRefusedClearly) {
   EXPECT_NE(wrongAngle.err.find("--angle-nh"), std::string::npos);
   const RunResult impossible = run("eval --angle-nl 10 --angle-nh 120");
   EXPECT_EQ(impossible.exitCode, 2);
-  EXPECT_NE(impossible.err.find("within 90° of L"), std::string::npos);
+  EXPECT_NE(impossible.err.find("no viewer above the surface"), std::string::npos);
   const RunResult colour = run("eval --light-diffuse 1,1");
   EXPECT_EQ(colour.exitCode, 2);
   EXPECT_NE(colour.err.find("--light-diffuse: expected a colour R,G,B"), std::string::npos);
@@ -209,4 +209,62 @@ TEST(CliOutput, QuietPrintsNothing) {
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_EQ(r.out, "");
   EXPECT_TRUE(fs::exists(dir / "a.png"));
+}
+
+namespace {
+
+nlohmann::json evalJson(const std::string& args) {
+  const RunResult r = run("eval --json " + args);
+  EXPECT_EQ(r.exitCode, 0) << args << ": " << r.err;
+  return r.exitCode == 0 ? nlohmann::json::parse(r.out) : nlohmann::json::object();
+}
+
+}  // namespace
+
+TEST(CliEvalGeometry, PhongAndBlinnPhongShareOnePlane) {
+  // θ = 30°: phong's φ = 20° and blinn-phong's ψ = 10° name the same viewer (α = −10°).
+  const auto phong = evalJson("--model phong --angle-nl 30 --angle-rv 20");
+  const auto blinn = evalJson("--model blinn-phong --angle-nl 30 --angle-nh 10");
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(phong["V"][i].get<double>(), blinn["V"][i].get<double>(), 1e-6) << i;
+  EXPECT_EQ(phong["V"][1].get<double>(), 0.0);
+  EXPECT_NEAR(phong["RoV"].get<double>(), std::cos(20 * M_PI / 180), 1e-6);
+  EXPECT_NEAR(blinn["NoH"].get<double>(), std::cos(10 * M_PI / 180), 1e-6);
+}
+
+TEST(CliEvalGeometry, ViewerIsNeverBelowTheSurface) {
+  for (int theta = 0; theta <= 90; theta += 15)
+    for (int angle = 0; angle <= 180; angle += 15) {
+      for (const std::string model : {"phong", "blinn-phong"}) {
+        const std::string option = model == "phong" ? "--angle-rv " : "--angle-nh ";
+        const RunResult r = run("eval --json --model " + model + " --angle-nl " + std::to_string(theta) + " " + option +
+                                std::to_string(angle));
+        if (r.exitCode != 0) {
+          EXPECT_EQ(r.exitCode, 2);
+          EXPECT_TRUE(r.err.find("no viewer above the surface") != std::string::npos ||
+                      r.err.find("is undefined") != std::string::npos) << r.err;
+          continue;
+        }
+        const auto j = nlohmann::json::parse(r.out);
+        EXPECT_GE(j["V"][2].get<double>(), -1e-6) << model << " θ=" << theta << " angle=" << angle;
+        // The angle asked for is the angle computed.
+        const double c = model == "phong" ? j["RoV"].get<double>() : j["NoH"].get<double>();
+        EXPECT_NEAR(std::acos(std::clamp(c, -1.0, 1.0)) * 180 / M_PI, angle, 1e-3) << model << " θ=" << theta;
+      }
+    }
+}
+
+TEST(CliEvalGeometry, SpotFactorAndAttenuationArePrinted) {
+  // The spot axis 20° off the line to the point: cos(20°)^4 inside a 30° cone, 0 outside a 10° one.
+  const auto inside = evalJson("--distance 2 --attenuation 1,0,1 --spot-cutoff 30 --spot-exponent 4 "
+                               "--normal 0,0,1 --to-light 0,0,1 --spot-direction 0,0.3639702,-1");
+  EXPECT_NEAR(inside["spot"].get<double>(), std::pow(std::cos(20 * M_PI / 180), 4), 1e-5);
+  EXPECT_NEAR(inside["attenuation"].get<double>(), 1.0 / 5, 1e-6);
+  const auto outside = evalJson("--distance 2 --spot-cutoff 10 --to-light 0,0,1 --spot-direction 0,0.3639702,-1");
+  EXPECT_EQ(outside["spot"].get<double>(), 0.0);
+  EXPECT_EQ(outside["diffuse"][0].get<double>(), 0.0);
+  const RunResult text = run("eval --distance 2 --spot-cutoff 30");
+  EXPECT_NE(text.out.find("spot factor 1.0000"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("H = ("), std::string::npos) << text.out;
+  EXPECT_EQ(run("eval --spot-exponent 2").exitCode, 2);
+  EXPECT_EQ(run("eval --spot-cutoff 120").exitCode, 2);
 }

@@ -24,6 +24,7 @@ struct EvalOptions {
   std::string shininess, globalAmbient, distance, attenuation;
   std::string angleNL, angleRV, angleNH;
   std::string normal, toLight, toViewer;
+  std::string spotDirection, spotExponent, spotCutoff;
   bool json = false;
 };
 
@@ -38,28 +39,43 @@ Vec3 unitVector(const std::string& option, const std::string& text) {
   return v / len;
 }
 
-// The geometry from angles: N = +Z, L in the XZ plane θ from N, and a viewer placed so that the
-// requested specular angle holds.
+// The geometry from angles. Everything lies in one plane, the plane of incidence (XZ), for every
+// model, so that phong and blinn-phong can be compared on the same geometry: N = +Z, L at θ from N
+// towards +X, and V at the signed angle α from N (positive towards L's side). The specular angle
+// asked for fixes α: phong's φ = ∠(R, V) with R at −θ gives α = φ − θ; blinn-phong's ψ = ∠(N, H)
+// with H = normalize(L + V) halfway between them gives α = 2ψ − θ (or −2ψ − θ, H on the other
+// side). A viewer below the surface (|α| > 90°) does not exist: such input is refused.
 Geometry geometryFromAngles(const EvalOptions& o, LightingModel model) {
   const Real theta = o.angleNL.empty() ? Real(0) : parseNumber("--angle-nl", o.angleNL, 0, 180);
-  const Real t = glm::radians(theta);
-  Geometry g{Vec3(0, 0, 1), Vec3(std::sin(t), 0, std::cos(t)), Vec3(0, 0, 1)};
-  if (model == LightingModel::Phong) {
-    const Real phi = glm::radians(o.angleRV.empty() ? Real(0) : parseNumber("--angle-rv", o.angleRV, 0, 180));
-    // R is L mirrored about N; V turns φ away from R, out of the plane of incidence.
-    const Vec3 R(-std::sin(t), 0, std::cos(t));
-    g.V = std::cos(phi) * R + std::sin(phi) * Vec3(0, 1, 0);
-  } else if (model == LightingModel::BlinnPhong) {
-    const Real psiDeg = o.angleNH.empty() ? Real(0) : parseNumber("--angle-nh", o.angleNH, 0, 180);
-    const Real psi = glm::radians(psiDeg);
-    // H sits ψ from N in the plane of incidence; V is L mirrored about H, so H = normalize(L + V).
-    const Vec3 H(std::sin(psi), 0, std::cos(psi));
-    const Real HoL = glm::dot(H, g.L);
-    if (theta < 90 && !(HoL > Real(1e-6)))
-      throw InputError("--angle-nh: no viewer gives an angle of " + o.angleNH + "° between N and H when L is " +
-                       (o.angleNL.empty() ? std::string("0") : o.angleNL) +
-                       "° from N: the halfway vector always lies within 90° of L");
-    g.V = HoL > 0 ? glm::normalize(Real(2) * HoL * H - g.L) : Vec3(0, 0, 1);
+  const auto inPlane = [](Real degrees) {
+    const Real r = glm::radians(degrees);
+    return Vec3(std::sin(r), 0, std::cos(r));
+  };
+  Geometry g{Vec3(0, 0, 1), inPlane(theta), Vec3(0, 0, 1)};
+  const auto above = [](Real alpha) { return alpha >= -90 && alpha <= 90; };
+  const std::string lightText = (o.angleNL.empty() ? std::string("0") : o.angleNL) + "° from N";
+  if (model == LightingModel::Phong && !o.angleRV.empty()) {
+    const Real phi = parseNumber("--angle-rv", o.angleRV, 0, 180);
+    const Real alpha = phi - theta;
+    if (!above(alpha))
+      throw InputError("--angle-rv: no viewer above the surface makes an angle of " + o.angleRV + "° with R when L is " +
+                       lightText + " (V in the plane of incidence: the angle must lie between " +
+                       std::to_string(int(std::max<Real>(0, theta - 90))) + "° and " +
+                       std::to_string(int(std::min<Real>(180, theta + 90))) + "°)");
+    g.V = inPlane(alpha);
+  } else if (model == LightingModel::BlinnPhong && !o.angleNH.empty()) {
+    const Real psi = parseNumber("--angle-nh", o.angleNH, 0, 180);
+    if (above(2 * psi - theta)) g.V = inPlane(2 * psi - theta);
+    else if (above(-2 * psi - theta)) g.V = inPlane(-2 * psi - theta);
+    else
+      throw InputError("--angle-nh: no viewer above the surface gives an angle of " + o.angleNH +
+                       "° between N and H when L is " + lightText +
+                       " (H lies halfway between L and V, so the angle must lie between " +
+                       std::to_string(int(std::max<Real>(0, (theta - 90) / 2))) + "° and " +
+                       std::to_string(int((theta + 90) / 2)) + "°)");
+    if (glm::length(g.L + g.V) < Real(1e-6))
+      throw InputError("--angle-nh: with L " + lightText + " that viewer looks straight back along −L, where the "
+                       "halfway vector H = normalize(L + V) is undefined");
   }
   return g;
 }
@@ -88,18 +104,27 @@ Color3 color3(const std::string& option, const std::string& text, Color3 fallbac
   return text.empty() ? fallback : parseColor(option, text, false);
 }
 
+std::string vec(const Vec3& v) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "(%.4f, %.4f, %.4f)", double(v.x), double(v.y), double(v.z));
+  return buf;
+}
+
+// A JSON number; JSON has no infinity or NaN, so those (which validation keeps out) become null.
+std::string number(Real x) {
+  if (!std::isfinite(x)) return "null";
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%.*g", std::numeric_limits<Real>::digits10, double(x));
+  return buf;
+}
+
 void printRow(const char* name, const Color3& c) {
   std::printf("%-10s %9.4f %9.4f %9.4f\n", name, double(c.r), double(c.g), double(c.b));
 }
 
 // A JSON array of three numbers at the precision they were computed in (6 significant digits
 // for float, 15 for double), not the binary expansion of a float.
-std::string triple(const Color3& c) {
-  const int digits = std::numeric_limits<Real>::digits10;
-  char buf[128];
-  std::snprintf(buf, sizeof buf, "[%.*g,%.*g,%.*g]", digits, double(c.r), digits, double(c.g), digits, double(c.b));
-  return buf;
-}
+std::string triple(const Color3& c) { return "[" + number(c.r) + "," + number(c.g) + "," + number(c.b) + "]"; }
 
 int runEval(const EvalOptions& o) {
   const auto model = parseLightingModel(o.model);
@@ -138,12 +163,35 @@ int runEval(const EvalOptions& o) {
     }
   }
 
-  const LightingTerms terms = evaluateTerms({&light, 1}, lightModel, material, *model, surface);
+  // The spot: its axis (default: from the light straight at the point), exponent and cutoff.
+  if (!o.spotCutoff.empty()) {
+    const Real cutoff = parseNumber("--spot-cutoff", o.spotCutoff, 0, 180);
+    if (cutoff > 90 && cutoff != 180)
+      throw InputError("--spot-cutoff: expected degrees in [0, 90], or 180 for no cone (as glLight), got " + o.spotCutoff);
+    light.spotCutoff = cutoff;
+    light.spotCosCutoff = cutoff == 180 ? Real(-2) : std::cos(glm::radians(cutoff));
+  }
+  light.spotDirection = o.spotDirection.empty() ? -g.L : unitVector("--spot-direction", o.spotDirection);
+  if (!o.spotExponent.empty()) light.spotExponent = parseNumber("--spot-exponent", o.spotExponent, 0, 128);
+  if ((!o.spotDirection.empty() || !o.spotExponent.empty()) && o.spotCutoff.empty())
+    throw InputError(std::string(o.spotDirection.empty() ? "--spot-exponent" : "--spot-direction") +
+                     ": a spot needs --spot-cutoff (without it the light has no cone)");
+
+  // The same accumulateLight the renderer uses, recording every intermediate.
+  LightingTerms terms;
+  terms.emission = Color3(material.emission);
+  terms.ambient = lightModel.ambient * Color3(material.ambient);
+  LightDetail d;
+  accumulateLight(terms, light, material, *model, surface, &d);
   const Color3 total = Color3(clampedColor(terms, material));
   if (o.json) {
     std::cout << "{\"emission\":" << triple(terms.emission) << ",\"ambient\":" << triple(terms.ambient)
               << ",\"diffuse\":" << triple(terms.diffuse) << ",\"specular\":" << triple(terms.specular)
-              << ",\"total\":" << triple(total) << "}\n";
+              << ",\"total\":" << triple(total) << ",\"N\":" << triple(g.N) << ",\"L\":" << triple(d.L)
+              << ",\"V\":" << triple(g.V) << ",\"NoL\":" << number(d.NoL);
+    if (*model == LightingModel::BlinnPhong) std::cout << ",\"H\":" << triple(d.H) << ",\"NoH\":" << number(d.NoH);
+    if (*model == LightingModel::Phong) std::cout << ",\"R\":" << triple(d.R) << ",\"RoV\":" << number(d.RoV);
+    std::cout << ",\"attenuation\":" << number(d.attenuation) << ",\"spot\":" << number(d.spot) << "}\n";
     return 0;
   }
   std::printf("%-10s %9s %9s %9s\n", "", "R", "G", "B");
@@ -156,9 +204,17 @@ int runEval(const EvalOptions& o) {
   if (sum != total)
     std::printf("(Total is clamped to [0,1] per channel; the unclamped sum is %.4f %.4f %.4f)\n",
                 double(sum.r), double(sum.g), double(sum.b));
-  std::printf("model %s; N·L = %.4f; N = (%.4f, %.4f, %.4f), L = (%.4f, %.4f, %.4f), V = (%.4f, %.4f, %.4f)\n",
-              std::string(toString(*model)).c_str(), double(glm::dot(g.N, g.L)), double(g.N.x), double(g.N.y),
-              double(g.N.z), double(g.L.x), double(g.L.y), double(g.L.z), double(g.V.x), double(g.V.y), double(g.V.z));
+  std::printf("model %s; N = %s, L = %s, V = %s\n", std::string(toString(*model)).c_str(), vec(g.N).c_str(),
+              vec(d.L).c_str(), vec(g.V).c_str());
+  std::printf("N·L = %.4f", double(d.NoL));
+  if (*model == LightingModel::BlinnPhong)
+    std::printf("; H = %s, N·H = %.4f, (N·H)^%g = %.4f", vec(d.H).c_str(), double(d.NoH), double(material.shininess),
+                double(d.lobe));
+  if (*model == LightingModel::Phong)
+    std::printf("; R = %s, R·V = %.4f, (R·V)^%g = %.4f", vec(d.R).c_str(), double(d.RoV), double(material.shininess),
+                double(d.lobe));
+  std::printf("\nattenuation %.4f%s; spot factor %.4f%s\n", double(d.attenuation),
+              d.positional ? "" : " (directional light)", double(d.spot), light.isSpot() ? "" : " (no cone)");
   return 0;
 }
 
@@ -192,6 +248,9 @@ Command addEvalCommand(CLI::App& app) {
   cmd->add_option("--normal", o->normal, "Surface normal x,y,z (normalized) [0,0,1]");
   cmd->add_option("--to-light", o->toLight, "Direction to the light x,y,z (normalized) [0,0,1]");
   cmd->add_option("--to-viewer", o->toViewer, "Direction to the viewer x,y,z (normalized) [0,0,1]");
+  cmd->add_option("--spot-cutoff", o->spotCutoff, "Spot cone half-angle in degrees, [0, 90] or 180 (no cone) [180]");
+  cmd->add_option("--spot-exponent", o->spotExponent, "Spot exponent in [0, 128] [0]");
+  cmd->add_option("--spot-direction", o->spotDirection, "Spot axis x,y,z [from the light towards the point]");
   cmd->add_flag("--json", o->json, "Print the terms as JSON (terms unclamped, total clamped)");
   return [o] { return runEval(*o); };
 }
