@@ -268,3 +268,45 @@ TEST(CliEvalGeometry, SpotFactorAndAttenuationArePrinted) {
   EXPECT_EQ(run("eval --spot-exponent 2").exitCode, 2);
   EXPECT_EQ(run("eval --spot-cutoff 120").exitCode, 2);
 }
+
+TEST(CliValues, OneSetOfRules) {
+  TempDir dir;
+  const std::string out = " -o " + (dir / "a.png").string();
+  const auto refused = [&](const std::string& args, const std::string& message) {
+    const RunResult r = run(args + (args.rfind("eval", 0) == 0 ? "" : out));
+    EXPECT_EQ(r.exitCode, 2) << args << ": " << r.err;
+    EXPECT_NE(r.err.find(message), std::string::npos) << args << ": " << r.err;
+  };
+  // Conflicting options.
+  refused("render --resolution 100,100 --width 50", "--resolution: give the size either");
+  refused("render --no-background --background 1,0,0", "--no-background:");
+  refused("render --orthographic --camera-view-angle 20", "--camera-view-angle: an orthographic camera");
+  // Numbers: whole pixels, and finite in the renderer's precision.
+  refused("render --debug-pixel 10.5,3", "--debug-pixel: expected a whole number, got \"10.5\"");
+  refused("render --camera-position=1e39,0,0", "--camera-position:");
+  refused("render --camera-view-angle 1e-40", "--camera-view-angle: expected a view angle in [0.01, 179.99]");
+  // The error names the option that is wrong.
+  refused("render --camera-focal-point 0,0,5 --camera-position 0,0,5", "--camera-position with --camera-focal-point:");
+  refused("render --camera-view-up 0,0,0", "--camera-view-up: expected a non-zero up direction");
+  EXPECT_FALSE(fs::exists(dir / "a.png"));
+  // eval: light colours may exceed 1 (as glLight allows); material colours may not; JSON stays JSON.
+  EXPECT_EQ(run("eval --light-diffuse 2,2,2 --json").exitCode, 0);
+  refused("eval --material-diffuse 1.5,0,0", "--material-diffuse: expected a colour R,G,B with each channel a number in [0, 1]");
+  refused("eval --light-diffuse=1e39,1,1 --json", "--light-diffuse:");
+  const RunResult big = run("eval --light-diffuse 1e30,1,1 --material-diffuse 1,1,1 --shininess 1e6 --json");
+  ASSERT_EQ(big.exitCode, 0) << big.err;
+  EXPECT_TRUE(nlohmann::json::accept(big.out)) << big.out;
+}
+
+TEST(CliValues, ModelCameraOptionsAreValidatedLikeSceneCameras) {
+  TempDir dir;
+  const std::string model = "/usr/share/assimp/models/STL/Spider_binary.stl";
+  const RunResult zero = run("render " + model + " --camera-view-up 0,0,0 -o " + (dir / "a.png").string());
+  EXPECT_EQ(zero.exitCode, 2);
+  EXPECT_NE(zero.err.find("--camera-view-up: expected a non-zero up direction"), std::string::npos) << zero.err;
+  const RunResult parallel =
+      run("render " + model + " --camera-view-up 0,1,0 --camera-elevation-angle 90 -o " + (dir / "a.png").string());
+  EXPECT_EQ(parallel.exitCode, 2);
+  EXPECT_NE(parallel.err.find("--camera-view-up: expected an up direction not parallel"), std::string::npos) << parallel.err;
+  EXPECT_FALSE(fs::exists(dir / "a.png"));
+}

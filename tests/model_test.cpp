@@ -145,7 +145,7 @@ TEST(ModelCli, F3dStyleOptions) {
   const fs::path box = kModels / "glTF2/BoxTextured-glTF-Binary/BoxTextured.glb";
   TempDir dir;
   const auto r = runIllum("render " + box.string() + " --resolution=120,90 --up=+Z --camera-azimuth-angle=10 "
-                          "--camera-elevation-angle=40 --camera-zoom-factor=0.5 --camera-view-angle=40 "
+                          "--camera-elevation-angle=40 --camera-zoom-factor=0.5 "
                           "--orthographic --light-intensity=1.2 --normals=flat --crease-angle=30 "
                           "--background-color=#336699 --model=phong --shading=gouraud --verbose -o " +
                           (dir / "a.png").string());

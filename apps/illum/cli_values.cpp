@@ -3,6 +3,7 @@
 #include <illum/error.h>
 
 #include <charconv>
+#include <limits>
 #include <cmath>
 #include <sstream>
 #include <vector>
@@ -18,7 +19,8 @@ bool toNumber(const std::string& s, double& out) {
   const char* last = s.data() + end + 1;
   if (*first == '+') ++first;
   auto [ptr, ec] = std::from_chars(first, last, out);
-  return ec == std::errc() && ptr == last && std::isfinite(out);
+  // Finite as the renderer computes: a double beyond float's range would become infinity.
+  return ec == std::errc() && ptr == last && std::isfinite(out) && std::abs(out) <= double(std::numeric_limits<Real>::max());
 }
 
 std::vector<std::string> split(const std::string& text) {
@@ -34,13 +36,25 @@ std::vector<std::string> split(const std::string& text) {
 
 Real parseNumber(const std::string& option, const std::string& text, Real min, Real max) {
   double v = 0;
-  if (!toNumber(text, v)) throw InputError(option + ": expected a finite number, got \"" + text + "\"");
+  if (!toNumber(text, v))
+    throw InputError(option + ": expected a finite number" +
+                     (sizeof(Real) == 4 ? " (at most 3.4e38 in magnitude, single precision)" : "") + ", got \"" + text + "\"");
   if (v < min || v > max) {
     std::ostringstream s;
     s << option << ": expected a number in [" << min << ", " << max << "], got " << text;
     throw InputError(s.str());
   }
   return Real(v);
+}
+
+int parseInteger(const std::string& option, const std::string& text, int min, int max) {
+  double v = 0;
+  if (!toNumber(text, v) || v != std::floor(v))
+    throw InputError(option + ": expected a whole number, got \"" + text + "\"");
+  if (v < min || v > max)
+    throw InputError(option + ": expected a whole number in [" + std::to_string(min) + ", " + std::to_string(max) +
+                     "], got " + text);
+  return int(v);
 }
 
 Vec3 parseVec3(const std::string& option, const std::string& text) {

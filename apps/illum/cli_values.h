@@ -11,7 +11,9 @@ namespace illum::cli {
 Vec3 parseVec3(const std::string& option, const std::string& text);
 // "R,G,B" with each channel a finite number ≥ 0 (and ≤ 1 when `unitRange`), or "#rrggbb".
 Vec3 parseColor(const std::string& option, const std::string& text, bool unitRange);
-// A finite number in [min, max].
+// A number in [min, max], finite in the renderer's precision (1e39 is refused where Real is float).
 Real parseNumber(const std::string& option, const std::string& text, Real min, Real max);
+// A whole number in [min, max] ("10.5" is refused).
+int parseInteger(const std::string& option, const std::string& text, int min, int max);
 
 }  // namespace illum::cli

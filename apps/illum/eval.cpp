@@ -96,8 +96,9 @@ Geometry geometry(const EvalOptions& o, LightingModel model) {
           o.toViewer.empty() ? Vec3(0, 0, 1) : unitVector("--to-viewer", o.toViewer)};
 }
 
+// Material colours are reflectances in [0,1]; light colours intensities ≥ 0 (docs/cli.md).
 Color4 color4(const std::string& option, const std::string& text, Color4 fallback) {
-  return text.empty() ? fallback : Color4(parseColor(option, text, false), 1);
+  return text.empty() ? fallback : Color4(parseColor(option, text, true), 1);
 }
 
 Color3 color3(const std::string& option, const std::string& text, Color3 fallback) {
@@ -229,7 +230,7 @@ Command addEvalCommand(CLI::App& app) {
       "  illum eval --model phong --distance 1 --angle-nl 30 --angle-rv 0 \\\n"
       "    --light-ambient 0.4,0.9,0.2 --light-diffuse 0.3,1,1 --light-specular 1,1,1 \\\n"
       "    --material-ambient 0.9,0.9,0.1 --material-diffuse 0.8,1,0.8 --material-specular 0,1,0.6 --shininess 2\n"
-      "Colours are R,G,B (each ≥ 0) or #rrggbb (bytes / 255).");
+      "Colours are R,G,B or #rrggbb (bytes / 255): material colours in [0,1], light colours ≥ 0.");
   cmd->add_option("--model", o->model, "Lighting model: blinn-phong, phong or lambert")->capture_default_str();
   cmd->add_option("--light-ambient", o->lightAmbient, "Light ambient colour R,G,B [0,0,0]");
   cmd->add_option("--light-diffuse", o->lightDiffuse, "Light diffuse colour R,G,B [1,1,1]");

@@ -21,6 +21,7 @@
 #include <cstdio>
 #include <memory>
 #include <optional>
+#include <sstream>
 
 namespace illum::cli {
 namespace {
@@ -87,7 +88,12 @@ void parseResolution(const std::string& text, RenderOptions& o) {
 }
 
 Real finitePositive(const char* option, double v) {
-  if (!std::isfinite(v) || v <= 0) throw InputError(std::string(option) + ": expected a positive number, got " + std::to_string(v));
+  if (!std::isfinite(Real(v)) || !(Real(v) > 0))
+  {
+    std::ostringstream text;
+    text << option << ": expected a positive number, finite in the renderer's precision, got " << v;
+    throw InputError(text.str());
+  }
   return Real(v);
 }
 
@@ -113,7 +119,7 @@ ViewOptions viewOptions(const RenderOptions& o) {
   ViewOptions v;
   if (!o.up.empty()) v.up = parseUp(o.up);
   const auto angle = [](const char* option, double degrees) {
-    if (!std::isfinite(degrees)) throw InputError(std::string(option) + ": expected a finite angle in degrees");
+    if (!std::isfinite(Real(degrees))) throw InputError(std::string(option) + ": expected a finite angle in degrees");
     return Real(degrees);
   };
   if (o.azimuth) v.azimuth = angle("--camera-azimuth-angle", *o.azimuth);
@@ -121,7 +127,8 @@ ViewOptions viewOptions(const RenderOptions& o) {
   if (o.zoom) v.zoom = finitePositive("--camera-zoom-factor", *o.zoom);
   if (o.viewAngle) {
     v.viewAngle = Real(*o.viewAngle);
-    if (!(v.viewAngle > 0 && v.viewAngle < 180)) throw InputError("--camera-view-angle: expected degrees strictly between 0 and 180");
+    if (!(v.viewAngle >= Real(0.01) && v.viewAngle <= Real(179.99)))
+      throw InputError("--camera-view-angle: " + describe(CameraFault::ViewAngle));
   }
   v.orthographic = o.orthographic;
   return v;
@@ -140,12 +147,42 @@ void applyExplicitCamera(const RenderOptions& o, Camera& cam) {
   }
 }
 
-// The camera options can leave a camera with no view direction; say which option to change.
-void validateCamera(const Camera& cam) {
-  const Vec3 forward = cam.center - cam.eye;
-  if (glm::length(forward) == 0) throw InputError("--camera-position: expected a point apart from the focal point");
-  if (glm::length(glm::cross(forward, cam.up)) <= Real(1e-6) * glm::length(forward) * glm::length(cam.up))
-    throw InputError("--camera-view-up: expected a direction not parallel to the view direction");
+// The camera the options made, checked by the rules scene cameras meet; the message names the
+// options that set the faulty part (or says the file's framing did).
+void validateCamera(const RenderOptions& o, const Camera& cam, Real aspect) {
+  const CameraFault fault = cameraFault(cam, aspect);
+  if (fault == CameraFault::None) return;
+  std::vector<std::string> named;
+  const auto name = [&](bool given, const char* option) {
+    if (given) named.push_back(option);
+  };
+  switch (fault) {
+    case CameraFault::ZeroUp:
+    case CameraFault::UpParallel:
+      name(!o.cameraViewUp.empty(), "--camera-view-up");
+      if (named.empty()) name(!o.cameraPosition.empty(), "--camera-position");
+      if (named.empty()) name(!o.cameraFocalPoint.empty(), "--camera-focal-point");
+      break;
+    case CameraFault::ViewAngle: name(o.viewAngle.has_value(), "--camera-view-angle"); break;
+    default:
+      name(!o.cameraPosition.empty(), "--camera-position");
+      name(!o.cameraFocalPoint.empty(), "--camera-focal-point");
+      name(o.zoom.has_value(), "--camera-zoom-factor");
+      break;
+  }
+  std::string who;
+  for (const std::string& n : named) who += (who.empty() ? "" : " with ") + n;
+  throw InputError((who.empty() ? std::string("the camera") : who) + ": " + describe(fault));
+}
+
+// Options that cannot both be meant.
+void rejectConflicts(const RenderOptions& o) {
+  if (!o.resolution.empty() && (o.width || o.height))
+    throw InputError("--resolution: give the size either as --resolution W,H or as --width and --height, not both");
+  if (o.noBackground && !o.background.empty())
+    throw InputError("--no-background: a transparent background has no colour; drop --background-color or --no-background");
+  if (o.orthographic && o.viewAngle)
+    throw InputError("--camera-view-angle: an orthographic camera has no view angle; drop it or --orthographic");
 }
 
 Scene modelScene(const RenderOptions& o, ImportedModel& model) {
@@ -157,8 +194,13 @@ Scene modelScene(const RenderOptions& o, ImportedModel& model) {
   if (!o.cameraPosition.empty()) view.position = parseVec3("--camera-position", o.cameraPosition);
   if (!o.cameraFocalPoint.empty()) view.focalPoint = parseVec3("--camera-focal-point", o.cameraFocalPoint);
   if (!o.cameraViewUp.empty()) view.viewUp = parseVec3("--camera-view-up", o.cameraViewUp);
+  if (view.viewUp && glm::length(*view.viewUp) == 0)
+    throw InputError("--camera-view-up: " + describe(CameraFault::ZeroUp));
   s.camera = framePoints(worldPoints(model.objects), view, Real(s.width) / Real(s.height));
-  validateCamera(s.camera);
+  if (view.viewUp && glm::length(glm::cross(s.camera.center - s.camera.eye, *view.viewUp)) <=
+                         Real(1e-6) * glm::length(s.camera.center - s.camera.eye) * glm::length(*view.viewUp))
+    throw InputError("--camera-view-up: " + describe(CameraFault::UpParallel));
+  validateCamera(o, s.camera, Real(s.width) / Real(s.height));
   const Real intensity = o.lightIntensity ? Real(*o.lightIntensity) : Real(1);
   if (!std::isfinite(intensity) || intensity < 0) throw InputError("--light-intensity: expected a number ≥ 0");
   s.lights = cameraLightRig(s.camera, intensity);
@@ -191,6 +233,7 @@ double peakMemoryMiB() {
 }
 
 int runRender(RenderOptions o) {
+  rejectConflicts(o);
   if (!o.resolution.empty()) parseResolution(o.resolution, o);
   std::optional<LightingModel> lightingModel;
   std::optional<Shading> shading;
@@ -214,7 +257,7 @@ int runRender(RenderOptions o) {
     if (o.width) scene.width = *o.width;
     if (o.height) scene.height = *o.height;
     applyExplicitCamera(o, scene.camera);
-    validateCamera(scene.camera);
+    validateCamera(o, scene.camera, Real(scene.width) / Real(scene.height));
   } else {
     model = importModel(o.input, importOptions(o));
     for (const std::string& w : model->warnings) std::fprintf(stderr, "illum: warning: %s\n", w.c_str());
@@ -246,8 +289,8 @@ int runRender(RenderOptions o) {
     const auto comma = o.debugPixel.find(',');
     if (comma == std::string::npos) throw InputError("--debug-pixel: expected x,y, got \"" + o.debugPixel + "\"");
     probe.emplace();
-    probe->x = int(parseNumber("--debug-pixel", o.debugPixel.substr(0, comma), 0, Real(scene.width - 1)));
-    probe->y = int(parseNumber("--debug-pixel", o.debugPixel.substr(comma + 1), 0, Real(scene.height - 1)));
+    probe->x = parseInteger("--debug-pixel", o.debugPixel.substr(0, comma), 0, scene.width - 1);
+    probe->y = parseInteger("--debug-pixel", o.debugPixel.substr(comma + 1), 0, scene.height - 1);
   }
   const Image image = renderScene(scene, &stats, probe ? &*probe : nullptr);
   const auto rendered = Clock::now();

@@ -32,6 +32,14 @@ struct Camera {
   Mat4 clipFromView(Real aspect) const;
 };
 
+// What makes a camera unusable, if anything: which part is wrong and what was expected. Eye and
+// centre apart, a non-zero up not parallel to the view, a view angle a float can project with
+// (at least 0.01°), and transforms that stay finite in the renderer's precision.
+enum class CameraFault { None, SamePoint, ZeroUp, UpParallel, ViewAngle, TooLarge };
+CameraFault cameraFault(const Camera& camera, Real aspect);
+// The fault in words ("expected ..."), to follow the name of whatever set the camera.
+std::string describe(CameraFault fault);
+
 struct Object {
   std::shared_ptr<const Mesh> mesh;
   Mat4 worldFromObject{1};

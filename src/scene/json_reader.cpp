@@ -211,4 +211,11 @@ Vec4 JsonReader::color34() const {
   return c;
 }
 
+Vec4 JsonReader::intensity34() const {
+  const auto v = numbers(3, 4);
+  Vec4 c(0, 0, 0, 1);
+  for (std::size_t i = 0; i < v.size(); ++i) c[int(i)] = i < 3 ? item(i).nonNegative() : item(i).number(0, 1);
+  return c;
+}
+
 }  // namespace illum

@@ -56,6 +56,9 @@ class JsonReader {
   // Colours are in [0,1]; [r,g,b] or [r,g,b,a] (alpha defaults to 1).
   Vec3 color3() const;
   Vec4 color34() const;
+  // Light colours are intensities: each channel ≥ 0 with no upper bound (as glLight allows);
+  // [r,g,b] or [r,g,b,a] with alpha in [0,1].
+  Vec4 intensity34() const;
 
  private:
   std::string describe() const;  // "a string", "an array of 2", ...

@@ -38,15 +38,21 @@ void readCamera(const JsonReader& j, Camera& cam) {
   }
   if (j.has("view_height")) cam.viewHeight = j.at("view_height").positive();
   if (!(cam.far > cam.near)) j.fail("expected far > near");
-  const Vec3 forward = cam.center - cam.eye;
-  if (glm::length(forward) == 0) j.fail("expected eye and center to differ");
-  if (glm::length(glm::cross(forward, cam.up)) <= Real(1e-6) * glm::length(forward) * glm::length(cam.up))
-    j.fail("expected an up vector that is not parallel to the view direction");
+}
+
+// The camera once the image size is known: the same rules the command line's camera meets.
+void checkCamera(const JsonReader& j, const Camera& cam, Real aspect) {
+  const CameraFault fault = cameraFault(cam, aspect);
+  if (fault == CameraFault::None) return;
+  const char* key = fault == CameraFault::ViewAngle ? "fovy"
+                    : fault == CameraFault::ZeroUp || fault == CameraFault::UpParallel ? "up" : nullptr;
+  if (key && j.at("camera").has(key)) j.at("camera").at(key).fail(describe(fault));
+  j.at("camera").fail(fault == CameraFault::SamePoint ? "expected eye and center to differ" : describe(fault));
 }
 
 void readLightModel(const JsonReader& j, LightModel& lm) {
   j.expectObject({"ambient", "local_viewer", "two_sided"});
-  if (j.has("ambient")) lm.ambient = Color3(j.at("ambient").color34());
+  if (j.has("ambient")) lm.ambient = Color3(j.at("ambient").intensity34());
   if (j.has("local_viewer")) lm.localViewer = j.at("local_viewer").boolean();
   if (j.has("two_sided")) lm.twoSided = j.at("two_sided").boolean();
 }
@@ -56,9 +62,9 @@ Light readLight(const JsonReader& j) {
                   "spot_exponent", "spot_cutoff"});
   Light l;
   if (j.has("position")) l.position = j.at("position").vec4();
-  if (j.has("ambient")) l.ambient = Color3(j.at("ambient").color34());
-  if (j.has("diffuse")) l.diffuse = Color3(j.at("diffuse").color34());
-  if (j.has("specular")) l.specular = Color3(j.at("specular").color34());
+  if (j.has("ambient")) l.ambient = Color3(j.at("ambient").intensity34());
+  if (j.has("diffuse")) l.diffuse = Color3(j.at("diffuse").intensity34());
+  if (j.has("specular")) l.specular = Color3(j.at("specular").intensity34());
   if (j.has("attenuation")) {
     const JsonReader a = j.at("attenuation");
     a.numbers(3);
@@ -316,7 +322,10 @@ Scene parseScene(const std::string& text, const std::string& name, const std::fi
     if (!shading) j.at("shading").fail("expected \"flat\", \"gouraud\" or \"phong\", got \"" + m + "\"");
     s.shading = *shading;
   }
-  if (j.has("camera")) readCamera(j.at("camera"), s.camera);
+  if (j.has("camera")) {
+    readCamera(j.at("camera"), s.camera);
+    checkCamera(j, s.camera, Real(s.width) / Real(s.height));
+  }
   if (j.has("light_model")) readLightModel(j.at("light_model"), s.lightModel);
   if (j.has("lights")) {
     const JsonReader lights = j.at("lights");

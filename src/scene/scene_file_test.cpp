@@ -153,8 +153,19 @@ TEST(SceneRejects, NegativeSizesAndOutOfRange) {
   EXPECT_EQ(errorOf(R"({"objects": [{"mesh": {"type": "cube", "size": 0}}]})"),
             "scene.json: /objects/0/mesh/size: expected a positive number, got 0");
   EXPECT_EQ(errorOf(R"({"width": 0})"), "scene.json: /width: expected an integer in [1, 16384], got 0");
-  EXPECT_EQ(errorOf(R"({"lights": [{"diffuse": [1.5, 0, 0]}]})"),
-            "scene.json: /lights/0/diffuse/0: expected a number in [0, 1], got 1.5");
+  EXPECT_EQ(errorOf(R"({"lights": [{"diffuse": [-0.5, 0, 0]}]})"),
+            "scene.json: /lights/0/diffuse/0: expected a number ≥ 0, got -0.5");
+  // Light colours are intensities (glLight accepts any value); material colours are reflectances.
+  EXPECT_EQ(errorOf(R"({"lights": [{"diffuse": [1.5, 2, 0]}], "light_model": {"ambient": [3, 3, 3]}})"), "(no error)");
+  EXPECT_EQ(errorOf(R"({"objects": [{"material": {"diffuse": [1.5, 0, 0]}}]})"),
+            "scene.json: /objects/0/material/diffuse/0: expected a number in [0, 1], got 1.5");
+  EXPECT_EQ(errorOf(R"({"camera": {"fovy": 1e-20}})"),
+            "scene.json: /camera/fovy: expected a view angle in [0.01, 179.99] degrees");
+  if constexpr (sizeof(Real) == 4) {
+    EXPECT_EQ(errorOf(R"({"camera": {"eye": [1e30, 0, 0]}})"),
+              "scene.json: /camera: expected numbers the renderer can transform with: the view and projection "
+              "overflow single precision");
+  }
   EXPECT_EQ(errorOf(R"({"lights": [{"spot_cutoff": 100}]})"),
             "scene.json: /lights/0/spot_cutoff: expected an angle in [0, 90] or 180, got 100");
   EXPECT_EQ(errorOf(R"({"lights": [{"spot_exponent": 129}]})"),
