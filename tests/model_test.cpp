@@ -318,3 +318,33 @@ TEST(NothingSilentlyEmpty, AnEmptyPictureIsWarnedAbout) {
 
 }  // namespace
 }  // namespace illum
+
+namespace illum {
+namespace {
+
+// docs/models.md's claims about formats, as behaviour.
+TEST(DocumentedFormats, GltfOneTextReadsAndBinaryIsRefused) {
+  TempDir dir;
+  const auto text = runIllum("render " + (kModels / "glTF/TwoBoxes/TwoBoxes.gltf").string() + " --resolution=80,60 -o " +
+                             (dir / "a.png").string());
+  EXPECT_EQ(text.exitCode, 0) << text.err;
+  const auto binary = runIllum("render " + (kModels / "glTF/BoxTextured-glTF-Binary/BoxTextured.glb").string() +
+                               " -o " + (dir / "b.png").string());
+  EXPECT_EQ(binary.exitCode, 2) << binary.err;
+}
+
+TEST(DocumentedFormats, ObjWithoutMtlGetsTheNeutralMaterialLikePly) {
+  TempDir dir;
+  std::ofstream(dir / "quad.obj") << "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3 4\n";
+  std::ofstream(dir / "quad.ply") << "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+                                     "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                                     "end_header\n-1 -1 0\n1 -1 0\n1 1 0\n-1 1 0\n4 0 1 2 3\n";
+  for (const char* f : {"quad.obj", "quad.ply"}) {
+    const auto r = runIllum("render " + (dir / f).string() + " --resolution=80,60 -o " + (dir / (std::string(f) + ".png")).string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+  }
+  EXPECT_EQ(readPng(dir / "quad.obj.png").rgba, readPng(dir / "quad.ply.png").rgba);
+}
+
+}  // namespace
+}  // namespace illum

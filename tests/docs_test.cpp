@@ -1,0 +1,123 @@
+// The docs say what happens: every `sh` example in README.md and docs/*.md runs as written (with
+// the built illum first on PATH, in a scratch folder that has the repository's examples/), and
+// where the docs show its output in the block that follows, that is the output. Every link and
+// every model path the docs name exists.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kRepo = ILLUM_REPO_DIR;
+
+struct Block {
+  std::string language;  // "sh", "" (plain: shown output), ...
+  std::string text;
+  int line = 0;
+};
+
+std::vector<Block> codeBlocks(const fs::path& markdown) {
+  std::ifstream in(markdown);
+  std::vector<Block> blocks;
+  std::string line;
+  bool inside = false;
+  int number = 0;
+  while (std::getline(in, line)) {
+    ++number;
+    if (line.rfind("```", 0) == 0) {
+      if (!inside) blocks.push_back({line.substr(3), "", number});
+      inside = !inside;
+      continue;
+    }
+    if (inside) blocks.back().text += line + "\n";
+  }
+  return blocks;
+}
+
+std::vector<fs::path> documents() {
+  std::vector<fs::path> docs = {kRepo / "README.md"};
+  for (const auto& e : fs::directory_iterator(kRepo / "docs"))
+    if (e.path().extension() == ".md") docs.push_back(e.path());
+  std::sort(docs.begin(), docs.end());
+  return docs;
+}
+
+// Build and set-up commands are what CI itself runs; they are not examples of illum.
+bool isSetUp(const std::string& script) {
+  return script.find("scripts/dev.sh") != std::string::npos || script.find("cmake ") != std::string::npos;
+}
+
+struct ScriptRun {
+  int exitCode = -1;
+  std::string out, err;
+};
+
+ScriptRun runScript(const std::string& script, const fs::path& cwd) {
+  const fs::path bin = cwd / "bin";
+  fs::create_directories(bin);
+  if (!fs::exists(bin / "illum")) fs::create_symlink(ILLUM_CLI, bin / "illum");
+  if (!fs::exists(cwd / "examples")) fs::create_directory_symlink(kRepo / "examples", cwd / "examples");
+  std::ofstream(cwd / "example.sh") << "set -e\n" << script;
+  const std::string cmd = "cd '" + cwd.string() + "' && PATH='" + bin.string() + "':\"$PATH\" sh example.sh 2>err.txt";
+  ScriptRun r;
+  FILE* pipe = ::popen(cmd.c_str(), "r");
+  std::array<char, 4096> buf{};
+  std::size_t n = 0;
+  while ((n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0) r.out.append(buf.data(), n);
+  const int status = ::pclose(pipe);
+  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::ifstream err(cwd / "err.txt");
+  r.err.assign(std::istreambuf_iterator<char>(err), std::istreambuf_iterator<char>());
+  return r;
+}
+
+TEST(Docs, EveryShellExampleRunsAndShowsItsOutput) {
+  int examples = 0;
+  for (const fs::path& doc : documents()) {
+    const std::vector<Block> blocks = codeBlocks(doc);
+    for (std::size_t i = 0; i < blocks.size(); ++i) {
+      if (blocks[i].language != "sh" || isSetUp(blocks[i].text)) continue;
+      const fs::path cwd = fs::temp_directory_path() / ("illum_docs_" + std::to_string(::getpid()) + "_" + std::to_string(examples++));
+      fs::remove_all(cwd);
+      fs::create_directories(cwd);
+      const ScriptRun r = runScript(blocks[i].text, cwd);
+      const std::string where = doc.filename().string() + ":" + std::to_string(blocks[i].line);
+      EXPECT_EQ(r.exitCode, 0) << where << "\n" << blocks[i].text << r.err;
+      if (i + 1 < blocks.size() && blocks[i + 1].language.empty() && blocks[i + 1].line <= blocks[i].line + 20) {
+        EXPECT_EQ(r.out, blocks[i + 1].text) << where << ": the output shown after the example";
+      }
+      fs::remove_all(cwd);
+    }
+  }
+  EXPECT_GE(examples, 4);
+}
+
+TEST(Docs, EveryLinkAndModelPathExists) {
+  const std::regex link(R"(\]\(([^)#\s]+)(#[^)]*)?\))");
+  const std::regex model(R"((/usr/share/assimp/models/[^\s`)'"]+))");
+  const std::regex example(R"((examples/[A-Za-z0-9_]+\.json))");
+  for (const fs::path& doc : documents()) {
+    std::ifstream in(doc);
+    const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    for (std::sregex_iterator it(text.begin(), text.end(), link), end; it != end; ++it) {
+      const std::string target = (*it)[1];
+      if (target.rfind("http", 0) == 0) continue;
+      EXPECT_TRUE(fs::exists(doc.parent_path() / target)) << doc.filename() << " links to " << target;
+    }
+    for (std::sregex_iterator it(text.begin(), text.end(), model), end; it != end; ++it)
+      EXPECT_TRUE(fs::exists(std::string((*it)[1]))) << doc.filename() << " names " << (*it)[1];
+    for (std::sregex_iterator it(text.begin(), text.end(), example), end; it != end; ++it)
+      EXPECT_TRUE(fs::exists(kRepo / std::string((*it)[1]))) << doc.filename() << " names " << (*it)[1];
+  }
+}
+
+}  // namespace
