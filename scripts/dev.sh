@@ -2,7 +2,8 @@
 # One entry point for a fresh Debian 12 machine:
 #   scripts/dev.sh run    install what is missing, build Release, render the built-in scene
 #   scripts/dev.sh test   install what is missing, build, run the whole test suite
-#                         (Release, then again under -fsanitize=address,undefined)
+#                         (Release, then again under -fsanitize=address,undefined), then fuzz the
+#                         scene parser and the model import for a fixed budget (fuzz/run.sh)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -11,6 +12,7 @@ PACKAGES=(
   g++ cmake make pkg-config
   libglm-dev nlohmann-json3-dev libcli11-dev libstb-dev libassimp-dev
   libgtest-dev libosmesa6-dev assimp-testmodels fonts-dejavu-core
+  clang libclang-rt-14-dev
 )
 
 install_packages() {
@@ -49,6 +51,8 @@ case "${1:-}" in
     build build-asan all -DILLUM_SANITIZE=ON
     (cd build-asan && ASAN_OPTIONS=detect_leaks=1 LSAN_OPTIONS=suppressions=$PWD/../tests/lsan.supp \
       UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j "$jobs")
+    echo "illum: fuzzing (libFuzzer, ASan+UBSan) for a fixed budget"
+    fuzz/run.sh "${ILLUM_FUZZ_SECONDS:-45}"
     ;;
   *)
     echo "usage: scripts/dev.sh run|test" >&2

@@ -68,7 +68,19 @@ INSTANTIATE_TEST_SUITE_P(
         Regression{"off-huge-vertex-count-16gb.off", "is the file truncated or corrupt?"},
         Regression{"ac3d-subdiv-memory-bomb.ac", "--max-triangles"},
         Regression{"gltf-node-dag-exponential-8gb.gltf", "node instances"},
-        Regression{"scene-tessellation-3-tori-5gb.json", "--max-triangles"}),
+        Regression{"scene-tessellation-3-tori-5gb.json", "--max-triangles"},
+        // Found here, by mutating assimp's test models.
+        Regression{"hl1-mdl-segv.mdl", "the importer crashed"},
+        Regression{"hl1-mdl-memory-bomb.mdl", "(raise it with --max-memory)"},
+        Regression{"opengex-endless-loop.ogex", "(raise it with --max-time)"},
+        Regression{"opengex-segv.ogex", "the importer crashed"},
+        Regression{"opengex-assert-abort.ogex", "ai_assert failure"},
+        Regression{"3mf-assert-abort.3mf", "ai_assert failure"},
+        Regression{"lwo-assert-abort.lwo", "ai_assert failure"},
+        Regression{"gltf1-accessor-without-buffer-view-assert-abort.gltf", "ai_assert failure"},
+        Regression{"q3s-memory-bomb.q3s", "(raise it with --max-memory)"},
+        Regression{"smd-memory-bomb.smd", "(raise it with --max"},
+        Regression{"collada-memory-bomb.dae", "(raise it with --max-memory)"}),
     [](const auto& info) {
       std::string name = fs::path(info.param.file).stem().string();
       for (char& c : name)

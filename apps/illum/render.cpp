@@ -363,8 +363,8 @@ Command addRenderCommand(CLI::App& app) {
   cmd->add_option("--max-pixels", o->limits.maxPixels, "Refuse images and textures of more pixels [67108864]")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--max-memory", o->limits.maxMemoryMiB,
-                  "MiB the model importer may use [768 + 32 × the file's size]")->check(CLI::PositiveNumber);
-  cmd->add_option("--max-time", o->limits.maxSeconds, "CPU seconds the model importer may use [10 + 1 per MiB]")
+                  "MiB the model importer may use [512 + 32 × the file's size]")->check(CLI::PositiveNumber);
+  cmd->add_option("--max-time", o->limits.maxSeconds, "Seconds the model importer may take [1.5 + 0.5 per MiB]")
       ->check(CLI::Range(0.001, 1e6));
   cmd->add_flag("-v,--verbose", o->verbose, "Print model statistics, bounds, times and peak memory on stderr");
   return [o] { return runRender(*o); };

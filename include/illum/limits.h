@@ -13,9 +13,9 @@ struct Limits {
   std::uint64_t maxTriangles = 20'000'000;  // --max-triangles
   // Pixels of the output image and of each texture (checked from the image header, before decoding).
   std::uint64_t maxPixels = std::uint64_t(8192) * 8192;  // --max-pixels
-  // Memory the importer may use, in MiB; 0 chooses 768 MiB + 32 × the file's size.
+  // Memory the importer may use, in MiB; 0 chooses 512 MiB + 32 × the file's size.
   std::uint64_t maxMemoryMiB = 0;  // --max-memory
-  // CPU seconds the importer may use; 0 chooses 10 s + 1 s per MiB of the file.
+  // Seconds (CPU and wall clock) the importer may take; 0 chooses 1.5 s + 0.5 s per MiB of the file.
   double maxSeconds = 0;  // --max-time
 
   std::uint64_t memoryBytesFor(std::uint64_t fileBytes) const;

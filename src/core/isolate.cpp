@@ -116,6 +116,22 @@ std::size_t dataBytes() {
   return 0;
 }
 
+// CPU seconds (user + system) a process has used so far, from /proc/PID/stat.
+double cpuSeconds(pid_t pid) {
+  std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+  std::string text((std::istreambuf_iterator<char>(stat)), std::istreambuf_iterator<char>());
+  const std::size_t close = text.rfind(')');
+  if (close == std::string::npos) return 0;
+  std::istringstream fields(text.substr(close + 2));
+  std::string field;
+  unsigned long long utime = 0, stime = 0;
+  for (int i = 3; i <= 15 && fields >> field; ++i) {
+    if (i == 14) utime = std::stoull(field);
+    if (i == 15) stime = std::stoull(field);
+  }
+  return double(utime + stime) / double(::sysconf(_SC_CLK_TCK));
+}
+
 void setLimit(int resource, rlim_t soft, rlim_t hard) {
   const rlimit limit{soft, hard};
   ::setrlimit(resource, &limit);
@@ -174,8 +190,12 @@ IsolationOutcome outcomeOf(int code, int resultFd) {
   ::dup2(logFd, STDOUT_FILENO);
   ::dup2(logFd, STDERR_FILENO);
   std::signal(SIGXFSZ, SIG_IGN);  // the output limit shows as EFBIG from write(2)
+  // A crash in the child is a signal the parent reads, not a report by whatever handler (a
+  // sanitizer's, a fuzzer's) the parent installed.
+  for (int sig : {SIGSEGV, SIGBUS, SIGABRT, SIGFPE, SIGILL}) std::signal(sig, SIG_DFL);
   setLimit(RLIMIT_CORE, 0, 0);
-  const auto cpu = rlim_t(std::ceil(limits.cpuSeconds));
+  // The parent watches CPU time to the tick; the kernel's limit, in whole seconds, is the backstop.
+  const auto cpu = rlim_t(std::ceil(limits.cpuSeconds)) + 1;
   setLimit(RLIMIT_CPU, cpu, cpu + 1);
   setLimit(RLIMIT_FSIZE, rlim_t(limits.outputBytes), rlim_t(limits.outputBytes));
   if (kRlimitUsable) {
@@ -222,10 +242,11 @@ IsolationOutcome runIsolated(const std::function<void(IsolatedWriter&)>& work, c
   if (pid < 0) throw Error(std::string("cannot start the isolated importer: ") + std::strerror(errno));
   if (pid == 0) childMain(work, limits, resultFd, logFd);
 
-  // Watch the child: the wall clock (a child blocked on I/O spends no CPU time) and its resident
-  // size (the limit that works under every allocator and sanitizer).
+  // Watch the child: its CPU time and the wall clock, each against the time limit (a child that
+  // waits, or shares a busy machine, is held to the same promise), and its resident size (the
+  // limit that works under every allocator and sanitizer).
   using Clock = std::chrono::steady_clock;
-  const auto deadline = Clock::now() + std::chrono::duration<double>(2 * limits.cpuSeconds + 1);
+  const auto deadline = Clock::now() + std::chrono::duration<double>(limits.cpuSeconds);
   const auto residentLimit = inherited + std::size_t(double(limits.memoryBytes) * kResidentAllowance);
   auto pause = std::chrono::microseconds(200);
   int status = 0;
@@ -235,7 +256,7 @@ IsolationOutcome runIsolated(const std::function<void(IsolatedWriter&)>& work, c
     if (done == pid) break;
     if (done < 0 && errno != EINTR) throw Error(std::string("cannot wait for the importer: ") + std::strerror(errno));
     if (!killedFor) {
-      if (Clock::now() > deadline) killedFor = IsolationOutcome::Kind::TimedOut;
+      if (Clock::now() > deadline || cpuSeconds(pid) > limits.cpuSeconds) killedFor = IsolationOutcome::Kind::TimedOut;
       else if (residentBytes(pid) > residentLimit) killedFor = IsolationOutcome::Kind::OutOfMemory;
       if (killedFor) ::kill(pid, SIGKILL);
     }

@@ -13,7 +13,7 @@ namespace illum {
 
 struct IsolationLimits {
   std::size_t memoryBytes = std::size_t(1) << 30;  // the child's data segment (and resident size)
-  double cpuSeconds = 10;                          // CPU time; wall time is allowed twice that
+  double cpuSeconds = 10;                          // CPU time, and wall-clock time too
   std::size_t outputBytes = std::size_t(1) << 30;  // what the child may hand back
 };
 

@@ -8,6 +8,7 @@
 #include "scene/model_wire.h"
 
 #include <cmath>
+#include <cstdio>
 #include <system_error>
 
 namespace illum {
@@ -38,8 +39,11 @@ ImportedModel importModel(const std::filesystem::path& path, const ImportOptions
     case IsolationOutcome::Kind::OutputTooBig:
       throw InputError(where + "the model is larger than " + mib + " MiB (raise it with --max-memory)");
     case IsolationOutcome::Kind::TimedOut:
-      throw InputError(where + "reading the model took more than " +
-                       std::to_string(int(std::ceil(limits.cpuSeconds))) + " s (raise it with --max-time)");
+    {
+      char seconds[32];
+      std::snprintf(seconds, sizeof seconds, "%.1f", limits.cpuSeconds);
+      throw InputError(where + "reading the model took more than " + seconds + " s (raise it with --max-time)");
+    }
     case IsolationOutcome::Kind::Crashed:
       throw InputError(where + "the importer crashed (" + outcome.message + "): the file is broken or not the format its name says");
   }

@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# Fuzz illum for a fixed budget: fuzz/run.sh [SECONDS per target, default 60]
+# Builds the libFuzzer targets with clang, ASan and UBSan (build-fuzz/), replays the regression
+# inputs of tests/regressions/, then fuzzes the scene parser and the model import from seed
+# corpora (the examples and test scenes; small files of Debian's assimp-testmodels). A crash
+# leaves its input as fuzz/artifacts/crash-*: add it to tests/regressions/ with the fix.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds=${1:-60}
+jobs=$(nproc 2>/dev/null || echo 2)
+
+cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
+  -DILLUM_FUZZ=ON -DILLUM_MESA_PARITY=OFF >/dev/null
+cmake --build build-fuzz -j "$jobs" --target illum_scene_fuzzer illum_model_fuzzer
+
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+mkdir -p "$work/scene" "$work/model" fuzz/artifacts
+
+# Seeds: every scene file of the repository; for models, the extension index as the first byte.
+find examples tests/scenes tests/regressions -name '*.json' -exec cp {} "$work/scene/" \;
+extensions=(ply off stl obj gltf glb ac nff dae 3ds ase md5mesh cob x smd fbx)
+seed() {  # seed FILE: prepend the byte that selects FILE's extension
+  local ext=${1##*.} i
+  ext=${ext,,}
+  for i in "${!extensions[@]}"; do
+    if [ "${extensions[$i]}" = "$ext" ]; then
+      { printf "\\$(printf '%03o' "$i")"; cat "$1"; } > "$work/model/$(basename "$1")"
+      return
+    fi
+  done
+}
+for f in tests/regressions/*; do seed "$f"; done
+if [ -d /usr/share/assimp/models ]; then
+  while IFS= read -r f; do seed "$f"; done < <(find /usr/share/assimp/models -type f -size -16k | sort)
+fi
+
+export ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=1
+export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+export LSAN_OPTIONS=suppressions=$PWD/tests/lsan.supp
+run() {  # run TARGET CORPUS
+  echo "illum: fuzzing $1 for ${seconds} s"
+  "build-fuzz/fuzz/illum_$1" -max_total_time="$seconds" -timeout=20 -rss_limit_mb=2048 -max_len=65536 \
+    -artifact_prefix=fuzz/artifacts/ -print_final_stats=1 "$2" 2>&1 | tail -n 12
+}
+run scene_fuzzer "$work/scene"
+run model_fuzzer "$work/model"
+echo "fuzz: 2 passed, 0 failed"
