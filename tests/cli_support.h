@@ -25,10 +25,10 @@ inline std::string slurp(const fs::path& p) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-// Runs `illum ARGS` through the shell; stdout and stderr are captured separately.
-inline RunResult runIllum(const std::string& args) {
+// Runs a shell command line; stdout and stderr are captured separately.
+inline RunResult runShell(const std::string& command) {
   const fs::path errFile = fs::temp_directory_path() / ("illum_test_err_" + std::to_string(::getpid()));
-  const std::string cmd = std::string(ILLUM_CLI) + " " + args + " 2>" + errFile.string();
+  const std::string cmd = command + " 2>" + errFile.string();
   RunResult r;
   FILE* pipe = ::popen(cmd.c_str(), "r");
   std::array<char, 4096> buf{};
@@ -40,6 +40,9 @@ inline RunResult runIllum(const std::string& args) {
   fs::remove(errFile);
   return r;
 }
+
+// Runs `illum ARGS` through the shell.
+inline RunResult runIllum(const std::string& args) { return runShell(std::string(ILLUM_CLI) + " " + args); }
 
 class TempDir {
  public:

@@ -2,6 +2,8 @@
 // the built illum first on PATH, in a scratch folder that has the repository's examples/), and
 // where the docs show its output in the block that follows, that is the output. Every link and
 // every model path the docs name exists.
+#include "cli_support.h"
+
 #include <gtest/gtest.h>
 
 #include <array>
@@ -56,28 +58,13 @@ bool isSetUp(const std::string& script) {
   return script.find("scripts/dev.sh") != std::string::npos || script.find("cmake ") != std::string::npos;
 }
 
-struct ScriptRun {
-  int exitCode = -1;
-  std::string out, err;
-};
-
-ScriptRun runScript(const std::string& script, const fs::path& cwd) {
+illum::test::RunResult runScript(const std::string& script, const fs::path& cwd) {
   const fs::path bin = cwd / "bin";
   fs::create_directories(bin);
   if (!fs::exists(bin / "illum")) fs::create_symlink(ILLUM_CLI, bin / "illum");
   if (!fs::exists(cwd / "examples")) fs::create_directory_symlink(kRepo / "examples", cwd / "examples");
   std::ofstream(cwd / "example.sh") << "set -e\n" << script;
-  const std::string cmd = "cd '" + cwd.string() + "' && PATH='" + bin.string() + "':\"$PATH\" sh example.sh 2>err.txt";
-  ScriptRun r;
-  FILE* pipe = ::popen(cmd.c_str(), "r");
-  std::array<char, 4096> buf{};
-  std::size_t n = 0;
-  while ((n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0) r.out.append(buf.data(), n);
-  const int status = ::pclose(pipe);
-  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream err(cwd / "err.txt");
-  r.err.assign(std::istreambuf_iterator<char>(err), std::istreambuf_iterator<char>());
-  return r;
+  return illum::test::runShell("cd '" + cwd.string() + "' && PATH='" + bin.string() + "':\"$PATH\" sh example.sh");
 }
 
 TEST(Docs, EveryShellExampleRunsAndShowsItsOutput) {
@@ -89,7 +76,7 @@ TEST(Docs, EveryShellExampleRunsAndShowsItsOutput) {
       const fs::path cwd = fs::temp_directory_path() / ("illum_docs_" + std::to_string(::getpid()) + "_" + std::to_string(examples++));
       fs::remove_all(cwd);
       fs::create_directories(cwd);
-      const ScriptRun r = runScript(blocks[i].text, cwd);
+      const illum::test::RunResult r = runScript(blocks[i].text, cwd);
       const std::string where = doc.filename().string() + ":" + std::to_string(blocks[i].line);
       EXPECT_EQ(r.exitCode, 0) << where << "\n" << blocks[i].text << r.err;
       if (i + 1 < blocks.size() && blocks[i + 1].language.empty() && blocks[i + 1].line <= blocks[i].line + 20) {
