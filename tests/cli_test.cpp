@@ -310,3 +310,29 @@ TEST(CliValues, ModelCameraOptionsAreValidatedLikeSceneCameras) {
   EXPECT_NE(parallel.err.find("--camera-view-up: expected an up direction not parallel"), std::string::npos) << parallel.err;
   EXPECT_FALSE(fs::exists(dir / "a.png"));
 }
+
+TEST(CliBench, PrintsOneJsonObjectWithTheFigures) {
+  TempDir dir;
+  std::ofstream(dir / "one.json") << R"({"width": 64, "height": 48, "objects": [{"mesh": {"type": "sphere", "slices": 10, "stacks": 5}}]})";
+  const RunResult r = run("bench " + (dir / "one.json").string() + " --frames 3 --threads 1");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  for (const char* key : {"ms_per_frame", "ms_min", "encode_ms", "triangles", "fragments", "pixels", "threads"})
+    EXPECT_TRUE(j.contains(key)) << key;
+  EXPECT_EQ(j["triangles"].get<int>(), 80);  // GLUT's sphere: two caps of fans, quads between: 2·slices·(stacks − 1)
+  EXPECT_EQ(j["pixels"].get<int>(), 64 * 48);
+  EXPECT_EQ(j["threads"].get<int>(), 1);
+  EXPECT_GT(j["fragments"].get<int>(), 0);
+  EXPECT_LE(j["ms_min"].get<double>(), j["ms_per_frame"].get<double>());
+  EXPECT_EQ(run("bench --frames 0").exitCode, 2);
+}
+
+TEST(CliOutput, PngEncodingIsDeterministicAndDecodes) {
+  TempDir dir;
+  ASSERT_EQ(run("render --width 200 --height 100 -o " + (dir / "a.png").string()).exitCode, 0);
+  ASSERT_EQ(run("render --width 200 --height 100 -o " + (dir / "b.png").string()).exitCode, 0);
+  EXPECT_EQ(slurp(dir / "a.png"), slurp(dir / "b.png"));
+  const illum::Image img = illum::readPng(dir / "a.png");
+  EXPECT_EQ(img.width, 200);
+  EXPECT_EQ(img.height, 100);
+}

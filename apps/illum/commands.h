@@ -11,5 +11,6 @@ using Command = std::function<int()>;
 
 Command addEvalCommand(CLI::App& app);
 Command addRenderCommand(CLI::App& app);
+Command addBenchCommand(CLI::App& app);
 
 }  // namespace illum::cli

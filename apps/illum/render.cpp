@@ -2,50 +2,34 @@
 // assimp reads, framed and lit automatically), or with neither the built-in scene, to PNG.
 #include <illum/error.h>
 #include <illum/image.h>
+#include <illum/output_file.h>
 #include <illum/render.h>
 #include <illum/scene.h>
 
 #include "cli_values.h"
 #include "commands.h"
 #include "pixel_report.h"
-#include <illum/framing.h>
-#include <illum/import.h>
-#include <illum/output_file.h>
+#include "scene_options.h"
 
-#include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <memory>
 #include <optional>
-#include <sstream>
 
 namespace illum::cli {
 namespace {
 
-namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
 struct RenderOptions {
-  std::string input;
+  SceneOptions scene;
   std::string output = "illum.png";
-  std::optional<int> width, height;
-  std::string resolution;
-  std::string model, shading, background;
-  bool noBackground = false;
-  // Model files (f3d's names).
-  std::string up, cameraPosition, cameraFocalPoint, cameraViewUp;
-  std::optional<double> viewAngle, azimuth, elevation, zoom, lightIntensity, creaseAngle;
-  bool orthographic = false;
-  std::string normals;
   std::string debugPixel;
-  bool verbose = false;
   bool force = false;
   bool quiet = false;
-  Limits limits;
 };
 
 // Whether `path` names the file standard output already goes to (/dev/stdout, /proc/self/fd/1, or
@@ -56,231 +40,10 @@ bool isStandardOutput(const std::string& path) {
          out.st_ino == target.st_ino;
 }
 
-bool isSceneFile(const std::string& path) {
-  std::string ext = fs::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return ext == ".json";
-}
-
-Vec3 parseUp(const std::string& text) {
-  if (text.size() == 2 && (text[0] == '+' || text[0] == '-')) {
-    const Real s = text[0] == '+' ? 1 : -1;
-    switch (std::toupper(static_cast<unsigned char>(text[1]))) {
-      case 'X': return {s, 0, 0};
-      case 'Y': return {0, s, 0};
-      case 'Z': return {0, 0, s};
-      default: break;
-    }
-  }
-  throw InputError("--up: expected one of +X, -X, +Y, -Y, +Z, -Z, got \"" + text + "\"");
-}
-
-void parseResolution(const std::string& text, RenderOptions& o) {
-  const auto comma = text.find(',');
-  const auto dimension = [&](const std::string& part) {
-    const Real v = parseNumber("--resolution", part, 1, 16384);
-    if (v != std::floor(v)) throw InputError("--resolution: expected whole pixels W,H, got \"" + text + "\"");
-    return int(v);
-  };
-  if (comma == std::string::npos) throw InputError("--resolution: expected W,H, got \"" + text + "\"");
-  o.width = dimension(text.substr(0, comma));
-  o.height = dimension(text.substr(comma + 1));
-}
-
-Real finitePositive(const char* option, double v) {
-  if (!std::isfinite(Real(v)) || !(Real(v) > 0))
-  {
-    std::ostringstream text;
-    text << option << ": expected a positive number, finite in the renderer's precision, got " << v;
-    throw InputError(text.str());
-  }
-  return Real(v);
-}
-
-ImportOptions importOptions(const RenderOptions& o) {
-  ImportOptions io;
-  io.limits = o.limits;
-  if (!o.normals.empty()) {
-    if (o.normals == "auto") io.normals = NormalMode::Auto;
-    else if (o.normals == "flat") io.normals = NormalMode::Flat;
-    else if (o.normals == "smooth") io.normals = NormalMode::Smooth;
-    else if (o.normals == "file") io.normals = NormalMode::File;
-    else throw InputError("--normals: expected auto, flat, smooth or file, got \"" + o.normals + "\"");
-  }
-  if (o.creaseAngle) {
-    if (!std::isfinite(*o.creaseAngle) || *o.creaseAngle < 0 || *o.creaseAngle > 180)
-      throw InputError("--crease-angle: expected degrees in [0, 180]");
-    io.creaseAngle = Real(*o.creaseAngle);
-  }
-  return io;
-}
-
-ViewOptions viewOptions(const RenderOptions& o) {
-  ViewOptions v;
-  if (!o.up.empty()) v.up = parseUp(o.up);
-  const auto angle = [](const char* option, double degrees) {
-    if (!std::isfinite(Real(degrees))) throw InputError(std::string(option) + ": expected a finite angle in degrees");
-    return Real(degrees);
-  };
-  if (o.azimuth) v.azimuth = angle("--camera-azimuth-angle", *o.azimuth);
-  if (o.elevation) v.elevation = angle("--camera-elevation-angle", *o.elevation);
-  if (o.zoom) v.zoom = finitePositive("--camera-zoom-factor", *o.zoom);
-  if (o.viewAngle) {
-    v.viewAngle = Real(*o.viewAngle);
-    if (!(v.viewAngle >= Real(0.01) && v.viewAngle <= Real(179.99)))
-      throw InputError("--camera-view-angle: " + describe(CameraFault::ViewAngle));
-  }
-  v.orthographic = o.orthographic;
-  return v;
-}
-
-// Options that place the camera explicitly apply to scene files too.
-void applyExplicitCamera(const RenderOptions& o, Camera& cam) {
-  if (!o.cameraPosition.empty()) cam.eye = parseVec3("--camera-position", o.cameraPosition);
-  if (!o.cameraFocalPoint.empty()) cam.center = parseVec3("--camera-focal-point", o.cameraFocalPoint);
-  if (!o.cameraViewUp.empty()) cam.up = parseVec3("--camera-view-up", o.cameraViewUp);
-  if (o.viewAngle) cam.fovy = viewOptions(o).viewAngle;
-  if (o.orthographic && cam.projection != Projection::Orthographic) {
-    // Keep the picture's scale at the focal point: the height the perspective view shows there.
-    cam.viewHeight = 2 * glm::length(cam.center - cam.eye) * std::tan(glm::radians(cam.fovy) / 2);
-    cam.projection = Projection::Orthographic;
-  }
-}
-
-// The camera the options made, checked by the rules scene cameras meet; the message names the
-// options that set the faulty part (or says the file's framing did).
-void validateCamera(const RenderOptions& o, const Camera& cam, Real aspect) {
-  const CameraFault fault = cameraFault(cam, aspect);
-  if (fault == CameraFault::None) return;
-  std::vector<std::string> named;
-  const auto name = [&](bool given, const char* option) {
-    if (given) named.push_back(option);
-  };
-  switch (fault) {
-    case CameraFault::ZeroUp:
-    case CameraFault::UpParallel:
-      name(!o.cameraViewUp.empty(), "--camera-view-up");
-      if (named.empty()) name(!o.cameraPosition.empty(), "--camera-position");
-      if (named.empty()) name(!o.cameraFocalPoint.empty(), "--camera-focal-point");
-      break;
-    case CameraFault::ViewAngle: name(o.viewAngle.has_value(), "--camera-view-angle"); break;
-    default:
-      name(!o.cameraPosition.empty(), "--camera-position");
-      name(!o.cameraFocalPoint.empty(), "--camera-focal-point");
-      name(o.zoom.has_value(), "--camera-zoom-factor");
-      break;
-  }
-  std::string who;
-  for (const std::string& n : named) who += (who.empty() ? "" : " with ") + n;
-  throw InputError((who.empty() ? std::string("the camera") : who) + ": " + describe(fault));
-}
-
-// Options that cannot both be meant.
-void rejectConflicts(const RenderOptions& o) {
-  if (!o.resolution.empty() && (o.width || o.height))
-    throw InputError("--resolution: give the size either as --resolution W,H or as --width and --height, not both");
-  if (o.noBackground && !o.background.empty())
-    throw InputError("--no-background: a transparent background has no colour; drop --background-color or --no-background");
-  if (o.orthographic && o.viewAngle)
-    throw InputError("--camera-view-angle: an orthographic camera has no view angle; drop it or --orthographic");
-}
-
-Scene modelScene(const RenderOptions& o, ImportedModel& model) {
-  Scene s;
-  s.width = o.width.value_or(1000);
-  s.height = o.height.value_or(600);
-  s.background = {0.18, 0.19, 0.21, 1};
-  ViewOptions view = viewOptions(o);
-  if (!o.cameraPosition.empty()) view.position = parseVec3("--camera-position", o.cameraPosition);
-  if (!o.cameraFocalPoint.empty()) view.focalPoint = parseVec3("--camera-focal-point", o.cameraFocalPoint);
-  if (!o.cameraViewUp.empty()) view.viewUp = parseVec3("--camera-view-up", o.cameraViewUp);
-  if (view.viewUp && glm::length(*view.viewUp) == 0)
-    throw InputError("--camera-view-up: " + describe(CameraFault::ZeroUp));
-  s.camera = framePoints(worldPoints(model.objects), view, Real(s.width) / Real(s.height));
-  if (view.viewUp && glm::length(glm::cross(s.camera.center - s.camera.eye, *view.viewUp)) <=
-                         Real(1e-6) * glm::length(s.camera.center - s.camera.eye) * glm::length(*view.viewUp))
-    throw InputError("--camera-view-up: " + describe(CameraFault::UpParallel));
-  validateCamera(o, s.camera, Real(s.width) / Real(s.height));
-  const Real intensity = o.lightIntensity ? Real(*o.lightIntensity) : Real(1);
-  if (!std::isfinite(intensity) || intensity < 0) throw InputError("--light-intensity: expected a number ≥ 0");
-  s.lights = cameraLightRig(s.camera, intensity);
-  s.lightModel.ambient = cameraRigAmbient(intensity);
-  // Flipped faces are common in the wild; light both sides so they are never black.
-  s.lightModel.twoSided = true;
-  // Glass and other translucent materials (MTL d, glTF alpha) show what is behind them.
-  s.blend = true;
-  s.objects = std::move(model.objects);
-  return s;
-}
-
-void rejectModelOnlyOptions(const RenderOptions& o) {
-  const auto reject = [](bool given, const char* name) {
-    if (given) throw InputError(std::string(name) + ": applies to model files, not scene files (the scene sets it)");
-  };
-  reject(!o.up.empty(), "--up");
-  reject(o.azimuth.has_value(), "--camera-azimuth-angle");
-  reject(o.elevation.has_value(), "--camera-elevation-angle");
-  reject(o.zoom.has_value(), "--camera-zoom-factor");
-  reject(o.lightIntensity.has_value(), "--light-intensity");
-  reject(!o.normals.empty(), "--normals");
-  reject(o.creaseAngle.has_value(), "--crease-angle");
-}
-
-double peakMemoryMiB() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return double(usage.ru_maxrss) / 1024.0;  // Linux reports kilobytes
-}
-
-int runRender(RenderOptions o) {
-  rejectConflicts(o);
-  if (!o.resolution.empty()) parseResolution(o.resolution, o);
-  std::optional<LightingModel> lightingModel;
-  std::optional<Shading> shading;
-  if (!o.model.empty()) {
-    lightingModel = parseLightingModel(o.model);
-    if (!lightingModel) throw InputError("--model: expected blinn-phong, phong or lambert, got \"" + o.model + "\"");
-  }
-  if (!o.shading.empty()) {
-    shading = parseShading(o.shading);
-    if (!shading) throw InputError("--shading: expected flat, gouraud or phong, got \"" + o.shading + "\"");
-  }
-  const auto start = Clock::now();
-  Scene scene;
-  std::optional<ImportedModel> model;
-  if (o.input.empty() || isSceneFile(o.input)) {
-    rejectModelOnlyOptions(o);
-    // The built-in scene's captions name the model and shading it is drawn with.
-    scene = o.input.empty() ? defaultScene(lightingModel.value_or(LightingModel::BlinnPhong),
-                                           shading.value_or(Shading::Phong))
-                            : loadSceneFile(o.input, o.limits);
-    if (o.width) scene.width = *o.width;
-    if (o.height) scene.height = *o.height;
-    applyExplicitCamera(o, scene.camera);
-    validateCamera(o, scene.camera, Real(scene.width) / Real(scene.height));
-  } else {
-    model = importModel(o.input, importOptions(o));
-    for (const std::string& w : model->warnings) std::fprintf(stderr, "illum: warning: %s\n", w.c_str());
-    if (o.verbose) {
-      std::fprintf(stderr, "illum: %s: %s vertices, %s triangles, %zu materials, %zu textures\n", o.input.c_str(),
-                   withThousands(model->vertexCount).c_str(), withThousands(model->triangleCount).c_str(),
-                   model->materialCount, model->textureCount);
-      const Vec3 &lo = model->boundsMin, &hi = model->boundsMax;
-      std::fprintf(stderr, "illum: bounds [%g, %g, %g] .. [%g, %g, %g]\n", double(lo.x), double(lo.y), double(lo.z),
-                   double(hi.x), double(hi.y), double(hi.z));
-    }
-    scene = modelScene(o, *model);
-  }
-  if (std::uint64_t(scene.width) * std::uint64_t(scene.height) > o.limits.maxPixels)
-    throw InputError("the image would be " + std::to_string(scene.width) + "×" + std::to_string(scene.height) + " = " +
-                     withThousands(std::uint64_t(scene.width) * std::uint64_t(scene.height)) +
-                     " pixels, more than the limit of " + withThousands(o.limits.maxPixels) + " (raise it with --max-pixels)");
+int runRender(const RenderOptions& o) {
+  double loadMs = 0;
+  Scene scene = prepareScene(o.scene, &loadMs);
   const auto loaded = Clock::now();
-  if (lightingModel) scene.model = *lightingModel;
-  if (shading) scene.shading = *shading;
-  if (!o.background.empty()) scene.background = Color4(parseColor("--background-color", o.background, true), 1);
-  if (o.noBackground) scene.background.a = 0;
-
   RenderStats stats;
   std::optional<PixelProbe> probe;
   if (!o.debugPixel.empty() && o.output == "-")
@@ -309,12 +72,12 @@ int runRender(RenderOptions o) {
   } else {
     writeOutputFile(o.output, encodePng(image), OutputOptions{o.force});
   }
-  if (o.verbose) {
+  if (o.scene.verbose) {
     const auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
     std::fprintf(stderr,
                  "illum: loaded in %.1f ms; rendered %dx%d in %.1f ms (%s triangles in, %s drawn, %s fragments shaded); "
                  "peak memory %.0f MiB\n",
-                 ms(start, loaded), scene.width, scene.height, ms(loaded, rendered),
+                 loadMs, scene.width, scene.height, ms(loaded, rendered),
                  withThousands(stats.trianglesIn).c_str(), withThousands(stats.trianglesDrawn).c_str(),
                  withThousands(stats.fragmentsShaded).c_str(), peakMemoryMiB());
   }
@@ -334,39 +97,11 @@ Command addRenderCommand(CLI::App& app) {
       "A .json input is a scene file (docs/scene-format.md); anything else is a model file read by\n"
       "assimp (OBJ+MTL, PLY, STL, glTF/GLB, FBX, Collada, 3DS, ...), framed and lit automatically.\n"
       "Colours are R,G,B in [0,1] or #rrggbb; both are written to the image as they are (docs/cli.md).");
-  cmd->add_option("input", o->input, "Scene (.json) or model file; none renders the built-in scene");
+  addSceneOptions(*cmd, o->scene);
   cmd->add_option("-o,--output", o->output, "Output PNG, written atomically; - for standard output")->capture_default_str();
   cmd->add_flag("-q,--quiet", o->quiet, "Do not print the output's path on standard output");
   cmd->add_flag("--force", o->force, "Replace a read-only output file (its permissions are kept)");
-  cmd->add_option("--width", o->width, "Image width in pixels")->check(CLI::Range(1, 16384));
-  cmd->add_option("--height", o->height, "Image height in pixels")->check(CLI::Range(1, 16384));
-  cmd->add_option("--resolution", o->resolution, "Image size W,H (models: 1000,600)");
-  cmd->add_option("--model", o->model, "Lighting model: blinn-phong, phong or lambert");
-  cmd->add_option("--shading", o->shading, "Shading frequency: flat, gouraud or phong");
-  cmd->add_option("--background-color,--background", o->background, "Background colour R,G,B or #rrggbb");
-  cmd->add_flag("--no-background", o->noBackground, "Transparent background (alpha 0)");
-  cmd->add_option("--up", o->up, "Model files: the up axis, +Y (default), -Y, +Z, -Z, +X or -X");
-  cmd->add_option("--camera-position", o->cameraPosition, "Camera position x,y,z");
-  cmd->add_option("--camera-focal-point", o->cameraFocalPoint, "Point the camera looks at x,y,z (models: the bounds' centre)");
-  cmd->add_option("--camera-view-up", o->cameraViewUp, "Camera up direction x,y,z (models: the up axis)");
-  cmd->add_option("--camera-view-angle", o->viewAngle, "Vertical view angle in degrees (models: 30)");
-  cmd->add_option("--camera-azimuth-angle", o->azimuth, "Model files: turn the view about the up axis, degrees [35]");
-  cmd->add_option("--camera-elevation-angle", o->elevation, "Model files: raise the view towards the up axis, degrees [25]");
-  cmd->add_option("--camera-zoom-factor", o->zoom, "Model files: zoom in (> 1) or out (< 1) from the framing [1]");
-  cmd->add_flag("--orthographic", o->orthographic, "Orthographic projection");
-  cmd->add_option("--light-intensity", o->lightIntensity, "Model files: scale the default light rig [1]");
-  cmd->add_option("--normals", o->normals, "Model files: auto (default), flat, smooth or file");
-  cmd->add_option("--crease-angle", o->creaseAngle, "Model files: generated normals stay sharp above this angle [40]");
   cmd->add_option("--debug-pixel", o->debugPixel, "Print every term of the lighting equation at pixel x,y (0,0 top-left)");
-  cmd->add_option("--max-triangles", o->limits.maxTriangles, "Refuse scenes and models of more triangles [20000000]")
-      ->check(CLI::PositiveNumber);
-  cmd->add_option("--max-pixels", o->limits.maxPixels, "Refuse images and textures of more pixels [67108864]")
-      ->check(CLI::PositiveNumber);
-  cmd->add_option("--max-memory", o->limits.maxMemoryMiB,
-                  "MiB the model importer may use [512 + 32 × the file's size]")->check(CLI::PositiveNumber);
-  cmd->add_option("--max-time", o->limits.maxSeconds, "Seconds the model importer may take [1.5 + 0.5 per MiB]")
-      ->check(CLI::Range(0.001, 1e6));
-  cmd->add_flag("-v,--verbose", o->verbose, "Print model statistics, bounds, times and peak memory on stderr");
   return [o] { return runRender(*o); };
 }
 

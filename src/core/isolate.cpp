@@ -43,7 +43,7 @@ struct OutputLimitReached {};
 // the resident size is the limit there, with room for that overhead.
 #ifdef ILLUM_ASAN
 constexpr bool kRlimitUsable = false;
-constexpr double kResidentAllowance = 3;
+constexpr double kResidentAllowance = 1.5;
 #else
 constexpr bool kRlimitUsable = true;
 constexpr double kResidentAllowance = 1;

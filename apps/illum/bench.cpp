@@ -1,0 +1,83 @@
+// `illum bench [SCENE.json | MODEL] [--frames N] [--threads N]`: how fast illum renders a scene.
+// Loading and mesh generation happen once, outside the timing; then one warm-up frame and N timed
+// frames; the PNG encoding of the picture is timed on its own. One JSON object on stdout.
+#include <illum/image.h>
+#include <illum/render.h>
+
+#include "commands.h"
+#include "scene_options.h"
+
+#include <tbb/global_control.h>
+#include <tbb/info.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <memory>
+#include <vector>
+
+namespace illum::cli {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct BenchOptions {
+  SceneOptions scene;
+  int frames = 10;
+  int threads = 0;  // 0: every core
+};
+
+double msSince(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
+}
+
+int runBench(const BenchOptions& o) {
+  const int threads = o.threads > 0 ? o.threads : tbb::info::default_concurrency();
+  const tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
+  double loadMs = 0;
+  const Scene scene = prepareScene(o.scene, &loadMs);
+
+  RenderStats stats;
+  Image image = renderScene(scene, &stats);  // warm-up: caches, page faults, allocator
+  std::vector<double> frameMs, encodeMs;
+  for (int i = 0; i < o.frames; ++i) {
+    const auto start = Clock::now();
+    image = renderScene(scene, &stats);
+    frameMs.push_back(msSince(start));
+  }
+  std::size_t pngBytes = 0;
+  for (int i = 0; i < std::max(1, std::min(o.frames, 5)); ++i) {
+    const auto start = Clock::now();
+    pngBytes = encodePng(image).size();
+    encodeMs.push_back(msSince(start));
+  }
+  std::printf(
+      "{\"ms_per_frame\": %.3f, \"ms_min\": %.3f, \"encode_ms\": %.3f, \"png_bytes\": %zu, \"load_ms\": %.1f, "
+      "\"triangles\": %zu, \"triangles_drawn\": %zu, \"fragments\": %zu, \"pixels\": %zu, \"width\": %d, "
+      "\"height\": %d, \"frames\": %d, \"threads\": %d, \"peak_mib\": %.1f}\n",
+      median(frameMs), *std::min_element(frameMs.begin(), frameMs.end()), median(encodeMs), pngBytes, loadMs,
+      stats.trianglesIn, stats.trianglesDrawn, stats.fragmentsShaded, std::size_t(scene.width) * std::size_t(scene.height),
+      scene.width, scene.height, o.frames, threads, peakMemoryMiB());
+  return 0;
+}
+
+}  // namespace
+
+Command addBenchCommand(CLI::App& app) {
+  auto o = std::make_shared<BenchOptions>();
+  CLI::App* cmd = app.add_subcommand("bench", "Time the rendering of a scene or model: one JSON object on stdout");
+  cmd->footer("Loading is timed once (load_ms); frames are timed after one warm-up (median ms_per_frame and\n"
+              "ms_min); the PNG encoding of the picture separately (encode_ms). See bench/ for comparisons.");
+  addSceneOptions(*cmd, o->scene);
+  cmd->add_option("--frames", o->frames, "Timed frames after the warm-up")->check(CLI::Range(1, 100000))->capture_default_str();
+  cmd->add_option("--threads", o->threads, "Worker threads (default: every core)")->check(CLI::Range(1, 1024));
+  return [o] { return runBench(*o); };
+}
+
+}  // namespace illum::cli

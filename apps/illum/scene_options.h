@@ -1,0 +1,39 @@
+// What to render, as the command line says it: the options `render` and `bench` share (input,
+// size, lighting model and shading, camera, model-file options, limits), and the scene they make.
+#pragma once
+
+#include <illum/limits.h>
+#include <illum/scene.h>
+
+#include <CLI/CLI.hpp>
+
+#include <optional>
+#include <string>
+
+namespace illum::cli {
+
+struct SceneOptions {
+  std::string input;  // a scene file (.json), a model file, or empty for the built-in scene
+  std::optional<int> width, height;
+  std::string resolution;
+  std::string model, shading, background;
+  bool noBackground = false;
+  // Model files (f3d's names).
+  std::string up, cameraPosition, cameraFocalPoint, cameraViewUp;
+  std::optional<double> viewAngle, azimuth, elevation, zoom, lightIntensity, creaseAngle;
+  bool orthographic = false;
+  std::string normals;
+  bool verbose = false;
+  Limits limits;
+};
+
+void addSceneOptions(CLI::App& cmd, SceneOptions& o);
+
+// Loads or builds the scene the options describe, validated (exit-2 errors name the option);
+// warnings go to stderr, and with --verbose the model's statistics. `loadMs` is the time it took.
+Scene prepareScene(SceneOptions o, double* loadMs = nullptr);
+
+// Peak resident memory of this process, MiB.
+double peakMemoryMiB();
+
+}  // namespace illum::cli
