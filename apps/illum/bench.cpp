@@ -7,8 +7,6 @@
 #include "commands.h"
 #include "scene_options.h"
 
-#include <tbb/global_control.h>
-#include <tbb/info.h>
 
 #include <algorithm>
 #include <chrono>
@@ -24,7 +22,6 @@ using Clock = std::chrono::steady_clock;
 struct BenchOptions {
   SceneOptions scene;
   int frames = 10;
-  int threads = 0;  // 0: every core
 };
 
 double msSince(Clock::time_point start) {
@@ -38,8 +35,8 @@ double median(std::vector<double> v) {
 }
 
 int runBench(const BenchOptions& o) {
-  const int threads = o.threads > 0 ? o.threads : tbb::info::default_concurrency();
-  const tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
+  const ThreadLimit limit(o.scene);
+  const int threads = limit.threads();
   double loadMs = 0;
   const Scene scene = prepareScene(o.scene, &loadMs);
 
@@ -76,7 +73,6 @@ Command addBenchCommand(CLI::App& app) {
               "ms_min); the PNG encoding of the picture separately (encode_ms). See bench/ for comparisons.");
   addSceneOptions(*cmd, o->scene);
   cmd->add_option("--frames", o->frames, "Timed frames after the warm-up")->check(CLI::Range(1, 100000))->capture_default_str();
-  cmd->add_option("--threads", o->threads, "Worker threads (default: every core)")->check(CLI::Range(1, 1024));
   return [o] { return runBench(*o); };
 }
 

@@ -41,6 +41,7 @@ bool isStandardOutput(const std::string& path) {
 }
 
 int runRender(const RenderOptions& o) {
+  const ThreadLimit limit(o.scene);
   double loadMs = 0;
   Scene scene = prepareScene(o.scene, &loadMs);
   const auto loaded = Clock::now();

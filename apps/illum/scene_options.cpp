@@ -7,6 +7,7 @@
 #include "cli_values.h"
 
 #include <sys/resource.h>
+#include <tbb/info.h>
 
 #include <algorithm>
 #include <chrono>
@@ -198,6 +199,11 @@ double peakMemoryMiB() {
   return double(usage.ru_maxrss) / 1024.0;  // Linux reports kilobytes
 }
 
+ThreadLimit::ThreadLimit(const SceneOptions& o)
+    : threads_(o.threads > 0 ? o.threads : tbb::info::default_concurrency()),
+      control_(std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                     std::size_t(threads_))) {}
+
 void addSceneOptions(CLI::App& cmd, SceneOptions& o) {
   cmd.add_option("input", o.input, "Scene (.json) or model file; none renders the built-in scene");
   cmd.add_option("--width", o.width, "Image width in pixels")->check(CLI::Range(1, 16384));
@@ -227,6 +233,8 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o) {
                   "MiB the model importer may use [512 + 32 × the file's size]")->check(CLI::PositiveNumber);
   cmd.add_option("--max-time", o.limits.maxSeconds, "Seconds the model importer may take [1.5 + 0.5 per MiB]")
       ->check(CLI::Range(0.001, 1e6));
+  cmd.add_option("--threads", o.threads, "Worker threads (default: every core); the picture is the same for any count")
+      ->check(CLI::Range(1, 1024));
   cmd.add_flag("-v,--verbose", o.verbose, "Print model statistics, bounds, times and peak memory on stderr");
 }
 

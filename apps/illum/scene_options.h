@@ -6,6 +6,9 @@
 #include <illum/scene.h>
 
 #include <CLI/CLI.hpp>
+#include <tbb/global_control.h>
+
+#include <memory>
 
 #include <optional>
 #include <string>
@@ -24,7 +27,20 @@ struct SceneOptions {
   bool orthographic = false;
   std::string normals;
   bool verbose = false;
+  int threads = 0;  // worker threads for rendering; 0: every core
   Limits limits;
+};
+
+// Holds oneTBB to the --threads the options ask for, while it lives. The picture is the same for
+// every count; --threads 1 runs on the calling thread.
+class ThreadLimit {
+ public:
+  explicit ThreadLimit(const SceneOptions& o);
+  int threads() const { return threads_; }
+
+ private:
+  int threads_;
+  std::unique_ptr<tbb::global_control> control_;
 };
 
 void addSceneOptions(CLI::App& cmd, SceneOptions& o);

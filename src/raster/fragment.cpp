@@ -6,10 +6,10 @@ Color4 shadePhongFragment(const FrameContext& frame, const Material& baseMateria
                           const TriangleSetup& t, const std::array<Real, 3>& w) {
   const auto& v = t.vertex;
   const Material material =
-      vertexColors ? withVertexColor(baseMaterial, w[0] * v[0]->color + w[1] * v[1]->color + w[2] * v[2]->color)
+      vertexColors ? withVertexColor(baseMaterial, w[0] * v[0].color + w[1] * v[1].color + w[2] * v[2].color)
                    : baseMaterial;
-  const Vec3 position = w[0] * v[0]->eyePosition + w[1] * v[1]->eyePosition + w[2] * v[2]->eyePosition;
-  Vec3 normal = w[0] * v[0]->eyeNormal + w[1] * v[1]->eyeNormal + w[2] * v[2]->eyeNormal;
+  const Vec3 position = w[0] * v[0].eyePosition + w[1] * v[1].eyePosition + w[2] * v[2].eyePosition;
+  Vec3 normal = w[0] * v[0].eyeNormal + w[1] * v[1].eyeNormal + w[2] * v[2].eyeNormal;
   const Real len = glm::length(normal);
   normal = len > 0 ? normal / len : Vec3(0, 0, 1);
   // Two-sided lighting lights back faces with −N, as GL does per vertex.
@@ -25,7 +25,7 @@ namespace illum {
 Vec4 sampleDiffuseTexture(const Texture& texture, const TriangleSetup& t, Real l0, Real l1, Real l2) {
   const auto uvAt = [&](Real a, Real b, Real c) {
     const auto w = perspectiveWeights(t, a, b, c);
-    return w[0] * t.vertex[0]->uv + w[1] * t.vertex[1]->uv + w[2] * t.vertex[2]->uv;
+    return w[0] * t.vertex[0].uv + w[1] * t.vertex[1].uv + w[2] * t.vertex[2].uv;
   };
   // Screen-space barycentrics are linear: one pixel right adds a·256/area, one up adds b·256/area.
   const Real step = Real(kSubpixelOne) / Real(t.area2);

@@ -31,8 +31,8 @@ Vec4 sampleDiffuseTexture(const Texture& texture, const TriangleSetup& t, Real l
 inline Color4 shadeGouraudFragment(const FrameContext& frame, const TriangleSetup& t, const std::array<Real, 3>& w) {
   const bool back = frame.lightModel.twoSided && !t.frontFacing;
   const auto& v = t.vertex;
-  return back ? w[0] * v[0]->back + w[1] * v[1]->back + w[2] * v[2]->back
-              : w[0] * v[0]->front + w[1] * v[1]->front + w[2] * v[2]->front;
+  return back ? w[0] * v[0].back + w[1] * v[1].back + w[2] * v[2].back
+              : w[0] * v[0].front + w[1] * v[1].front + w[2] * v[2].front;
 }
 
 }  // namespace illum

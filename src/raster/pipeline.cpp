@@ -1,176 +1,105 @@
-// The pipeline in order: vertex → clip → setup → rasterize → fragment → framebuffer.
+// The pipeline in order: vertex → clip → setup → bin → rasterize → fragment → framebuffer, on
+// every core (oneTBB). Vertices are shaded in parallel ranges; triangles are clipped and set up
+// in parallel chunks into self-contained records, concatenated in submission order; the records
+// are binned into 64×64 tiles and each tile is drawn by one thread, its records in order. Every
+// pixel therefore sees the same fragments in the same order as on one thread: the same bytes for
+// any thread count, and the same as the reference driver (reference/).
 #include <illum/render.h>
 
-#include "raster/clip.h"
-#include "raster/fragment.h"
-#include "raster/frame_context.h"
-#include "raster/framebuffer.h"
+#include "raster/bin.h"
+#include "raster/draw.h"
 #include "raster/labels.h"
-#include "raster/rasterize.h"
-#include "raster/setup.h"
-#include "raster/vertex.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <cstring>
-#include <limits>
 
 namespace illum {
 namespace {
 
-// Flat shading's colours and what they were lit with: GL's provoking vertex is the triangle's last.
-struct ProvokingVertex {
-  Color4 front, back;
-  Vec3 eyePosition, eyeNormal;
-};
+constexpr std::size_t kVertexGrain = 4096;       // vertices per parallel task
+constexpr std::size_t kTriangleChunk = 2048;     // triangles set up per parallel task
+constexpr std::size_t kBatchRecords = 1 << 15;   // records gathered before they are binned and drawn
 
-// What every triangle of a frame draws into.
-struct DrawTarget {
-  const FrameContext& frame;
-  Framebuffer& fb;
-  RenderStats& stats;
-  PixelProbe* probe;  // null unless a pixel is watched
-};
-
-// Records the fragment at the watched pixel: where it was lit and what it wrote.
-void recordProbe(const DrawTarget& target, const Object& object, std::size_t objectIndex, std::size_t triangle,
-                 const TriangleSetup& t, const ProvokingVertex& flat, const std::array<Real, 3>& w, const Color4& lit,
-                 const Vec4* texel, const Color4& c) {
-  PixelProbe& p = *target.probe;
-  const auto& v = t.vertex;
-  const bool back = target.frame.lightModel.twoSided && !t.frontFacing;
-  p.hit = true;
-  p.object = objectIndex;
-  p.triangle = triangle;
-  p.frontFacing = t.frontFacing;
-  p.written = c;
-  p.lit = lit;
-  p.textured = texel != nullptr;
-  p.texel = texel ? *texel : Vec4(1);
-  p.blended = target.frame.blend && c.a < 1;  // alpha 1 blends to the fragment itself
-  p.weights = w;
-  for (std::size_t i = 0; i < 3; ++i) {
-    p.vertexColors[i] = back ? v[i]->back : v[i]->front;
-    p.vertexPositions[i] = v[i]->eyePosition;
-    p.vertexNormals[i] = back ? -v[i]->eyeNormal : v[i]->eyeNormal;
-    p.vertexMaterials[i] = object.mesh->colors.empty() ? object.material : withVertexColor(object.material, v[i]->color);
+class BinnedRenderer {
+ public:
+  BinnedRenderer(const Scene& scene, const FrameContext& frame, Framebuffer& fb, PixelProbe* probe)
+      : frame_(frame), target_{frame, scene, fb, probe}, bins_(frame.width, frame.height),
+        tileFragments_(std::size_t(bins_.tileCount()), 0) {
+    batch_.reserve(kBatchRecords + kTriangleChunk * 8);
   }
-  p.material = object.material;
-  if (!object.mesh->colors.empty())
-    p.material = withVertexColor(object.material, w[0] * v[0]->color + w[1] * v[1]->color + w[2] * v[2]->color);
-  if (target.frame.shading == Shading::Flat) {
-    p.eyePosition = flat.eyePosition;
-    p.eyeNormal = flat.eyeNormal;
-  } else {
-    p.eyePosition = w[0] * v[0]->eyePosition + w[1] * v[1]->eyePosition + w[2] * v[2]->eyePosition;
-    const Vec3 n = w[0] * v[0]->eyeNormal + w[1] * v[1]->eyeNormal + w[2] * v[2]->eyeNormal;
-    p.eyeNormal = glm::length(n) > 0 ? glm::normalize(n) : Vec3(0, 0, 1);
-  }
-  if (back) p.eyeNormal = -p.eyeNormal;
-}
 
-void drawTriangle(const DrawTarget& target, const Object& object, std::size_t objectIndex, std::size_t triangle,
-                  const TriangleSetup& t, const ProvokingVertex& flat) {
-  const FrameContext& frame = target.frame;
-  const bool back = frame.lightModel.twoSided && !t.frontFacing;
-  const bool vertexColors = !object.mesh->colors.empty();
-  const Texture* texture = object.mesh->uvs.empty() ? nullptr : object.diffuseTexture.get();
-  const int probeRow = target.probe ? frame.height - 1 - target.probe->y : -1;  // GL rows run bottom up
-  rasterizeTriangle(t, [&](int x, int y, Real l0, Real l1, Real l2) {
-    const Real z = l0 * t.z[0] + l1 * t.z[1] + l2 * t.z[2];
-    if (!target.fb.depthTest(x, y, z)) return;
-    ++target.stats.fragmentsShaded;
-    Color4 c;
-    switch (frame.shading) {
-      case Shading::Flat:
-        c = back ? flat.back : flat.front;
-        break;
-      case Shading::Gouraud:
-        c = shadeGouraudFragment(frame, t, perspectiveWeights(t, l0, l1, l2));
-        break;
-      case Shading::Phong:
-        c = shadePhongFragment(frame, object.material, vertexColors, t, perspectiveWeights(t, l0, l1, l2));
-        break;
-    }
-    const Color4 lit = c;
-    // GL_MODULATE: the lit colour times the texel, alpha included.
-    Vec4 texel(1);
-    if (texture) c *= (texel = sampleDiffuseTexture(*texture, t, l0, l1, l2));
-    if (frame.blend) target.fb.blendColor(x, y, c);
-    else target.fb.writeColor(x, y, c);
-    if (y == probeRow && x == target.probe->x)
-      recordProbe(target, object, objectIndex, triangle, t, flat, perspectiveWeights(t, l0, l1, l2), lit,
-                  texture ? &texel : nullptr, c);
-  });
-}
-
-void drawObject(const DrawTarget& target, const Object& object, std::size_t objectIndex) {
-  std::vector<ShadedVertex> vertices;
-  runVertexStage(target.frame, object, vertices);
-  std::vector<ShadedVertex> polygon;
-  const auto& indices = object.mesh->indices;
-  for (std::size_t i = 0; i + 2 < indices.size(); i += 3) {
-    ++target.stats.trianglesIn;
-    const std::array<ShadedVertex, 3> tri = {vertices[indices[i]], vertices[indices[i + 1]], vertices[indices[i + 2]]};
-    const ProvokingVertex flat{tri[2].front, tri[2].back, tri[2].eyePosition, tri[2].eyeNormal};
-    polygon.clear();
-    if (clipTriangle(tri, target.frame.width, target.frame.height, polygon) == ClipResult::Outside) continue;
-    // The clipped polygon is convex: draw it as a fan.
-    for (std::size_t k = 1; k + 1 < polygon.size(); ++k) {
-      TriangleSetup setup;
-      if (!setupTriangle(polygon[0], polygon[k], polygon[k + 1], target.frame.width, target.frame.height, setup)) continue;
-      ++target.stats.trianglesDrawn;
-      drawTriangle(target, object, objectIndex, i / 3, setup, flat);
+  void drawObject(const Object& object, std::uint32_t index) {
+    vertices_.resize(object.mesh->positions.size());
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vertices_.size(), kVertexGrain),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                        runVertexStage(frame_, object, vertices_, r.begin(), r.end());
+                      });
+    const std::size_t triangles = object.mesh->triangleCount();
+    stats_.trianglesIn += triangles;
+    const std::size_t chunks = (triangles + kTriangleChunk - 1) / kTriangleChunk;
+    // Set up a slice of chunks in parallel, then append their records in chunk order.
+    const std::size_t slice = std::max<std::size_t>(1, kBatchRecords / kTriangleChunk);
+    for (std::size_t c0 = 0; c0 < chunks; c0 += slice) {
+      const std::size_t c1 = std::min(chunks, c0 + slice);
+      if (chunkRecords_.size() < c1 - c0) chunkRecords_.resize(c1 - c0);
+      tbb::parallel_for(std::size_t(c0), c1, [&](std::size_t c) {
+        std::vector<DrawRecord>& out = chunkRecords_[c - c0];
+        out.clear();
+        setupTriangles(frame_, object, index, vertices_, c * kTriangleChunk, std::min(triangles, (c + 1) * kTriangleChunk),
+                       out);
+      });
+      for (std::size_t c = c0; c < c1; ++c) {
+        const auto& part = chunkRecords_[c - c0];
+        batch_.insert(batch_.end(), part.begin(), part.end());
+        stats_.trianglesDrawn += part.size();
+      }
+      if (batch_.size() >= kBatchRecords) flush();
     }
   }
-}
 
-// Pixels whose bytes differ from the cleared background's.
-std::size_t countPixelsUnlike(const Image& image, const Color4& background) {
-  const std::uint8_t clear[4] = {toUnorm8(background.r), toUnorm8(background.g), toUnorm8(background.b),
-                                 toUnorm8(background.a)};
-  std::size_t n = 0;
-  for (std::size_t i = 0; i < image.rgba.size(); i += 4) n += std::memcmp(&image.rgba[i], clear, 4) != 0;
-  return n;
-}
-
-bool isTranslucent(const Object& o) {
-  return o.material.diffuse.a < 1 || (o.diffuseTexture && o.diffuseTexture->hasTransparency()) ||
-         std::any_of(o.mesh->colors.begin(), o.mesh->colors.end(), [](const Color4& c) { return c.a < 1; });
-}
-
-// Scene order, or with blending the opaque objects first and then the translucent ones from the
-// farthest to the nearest (by the eye-space depth of their bounds' centre). Ties keep scene order.
-std::vector<const Object*> drawingOrder(const Scene& scene, const FrameContext& frame) {
-  std::vector<const Object*> order;
-  for (const Object& o : scene.objects) order.push_back(&o);
-  if (!scene.blend) return order;
-  const auto depth = [&](const Object* o) {
-    Vec3 lo(std::numeric_limits<Real>::max()), hi(-std::numeric_limits<Real>::max());
-    for (const Vec3& p : o->mesh->positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
-    return (frame.viewFromWorld * o->worldFromObject * Vec4((lo + hi) * Real(0.5), 1)).z;
-  };
-  std::vector<std::pair<Real, const Object*>> translucent;
-  std::vector<const Object*> opaque;
-  for (const Object* o : order) {
-    if (isTranslucent(*o)) translucent.push_back({depth(o), o});
-    else opaque.push_back(o);
+  // Bins what has been gathered and draws every tile, each on one thread.
+  void flush() {
+    if (batch_.empty()) return;
+    bins_.bin(batch_);
+    tbb::parallel_for(0, bins_.tileCount(), [&](int tile) {
+      const PixelRect rect = bins_.tileRect(tile);
+      std::size_t& fragments = tileFragments_[std::size_t(tile)];
+      for (std::uint32_t r : bins_.records(tile)) drawRecord(target_, batch_[r], rect, fragments);
+    });
+    bins_.clear();
+    batch_.clear();
   }
-  // Eye space looks down −Z: the most negative z is the farthest.
-  std::stable_sort(translucent.begin(), translucent.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-  for (const auto& [unused, o] : translucent) opaque.push_back(o);
-  return opaque;
-}
+
+  RenderStats stats() const {
+    RenderStats s = stats_;
+    for (std::size_t f : tileFragments_) s.fragmentsShaded += f;
+    return s;
+  }
+
+ private:
+  const FrameContext& frame_;
+  DrawTarget target_;
+  TileBins bins_;
+  std::vector<std::size_t> tileFragments_;
+  std::vector<ShadedVertex> vertices_;
+  std::vector<std::vector<DrawRecord>> chunkRecords_;
+  std::vector<DrawRecord> batch_;
+  RenderStats stats_;
+};
 
 }  // namespace
 
 Image renderScene(const Scene& scene, RenderStats* statsOut, PixelProbe* probe) {
   const FrameContext frame = FrameContext::fromScene(scene);
   Framebuffer fb(scene.width, scene.height, scene.background);
-  RenderStats stats;
   if (probe) probe->hit = false;
-  const DrawTarget target{frame, fb, stats, probe};
+  BinnedRenderer renderer(scene, frame, fb, probe);
   for (const Object* object : drawingOrder(scene, frame))
-    drawObject(target, *object, std::size_t(object - scene.objects.data()));
+    renderer.drawObject(*object, std::uint32_t(object - scene.objects.data()));
+  renderer.flush();
+  RenderStats stats = renderer.stats();
   Image image = fb.toImage();
   stats.pixelsDrawn = countPixelsUnlike(image, scene.background);
   stats.labelsSkipped = !drawLabels(image, scene);

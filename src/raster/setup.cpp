@@ -39,7 +39,7 @@ bool setupTriangle(const ShadedVertex& v0, const ShadedVertex& v1, const ShadedV
                    TriangleSetup& out) {
   std::array<WindowVertex, 3> w = {toWindow(v0, width, height), toWindow(v1, width, height),
                                    toWindow(v2, width, height)};
-  out.vertex = {&v0, &v1, &v2};
+  out.vertex = {v0, v1, v2};
   std::int64_t area2 = (w[1].x - w[0].x) * (w[2].y - w[0].y) - (w[2].x - w[0].x) * (w[1].y - w[0].y);
   if (area2 == 0) return false;
   out.frontFacing = area2 > 0;

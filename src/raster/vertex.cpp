@@ -4,15 +4,15 @@
 
 namespace illum {
 
-void runVertexStage(const FrameContext& frame, const Object& object, std::vector<ShadedVertex>& out) {
+void runVertexStage(const FrameContext& frame, const Object& object, std::vector<ShadedVertex>& out,
+                    std::size_t first, std::size_t last) {
   const Mesh& mesh = *object.mesh;
   const Mat4 viewFromObject = frame.viewFromWorld * object.worldFromObject;  // GL_MODELVIEW
   const Mat4 clipFromObject = frame.clipFromView * viewFromObject;
   const Mat3 normalFromObject = normalMatrix(viewFromObject);
   const bool lightVertices = frame.shading != Shading::Phong;
   const bool hasUvs = !mesh.uvs.empty(), hasColors = !mesh.colors.empty();
-  out.resize(mesh.positions.size());
-  for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+  for (std::size_t i = first; i < last; ++i) {
     ShadedVertex& v = out[i];
     const Vec4 p(mesh.positions[i], 1);
     v.clip = clipFromObject * p;

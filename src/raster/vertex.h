@@ -25,8 +25,10 @@ inline Material withVertexColor(Material m, const Color4& c) {
   return m;
 }
 
-// The object's vertices through the vertex stage; `out` is resized to the mesh's vertex count.
-void runVertexStage(const FrameContext& frame, const Object& object, std::vector<ShadedVertex>& out);
+// The object's vertices [first, last) through the vertex stage, into `out` (already sized to the
+// mesh's vertex count); each vertex independent of the others, so ranges can run in parallel.
+void runVertexStage(const FrameContext& frame, const Object& object, std::vector<ShadedVertex>& out,
+                    std::size_t first, std::size_t last);
 
 // Linear interpolation of every attribute, as clipping needs it.
 ShadedVertex lerp(const ShadedVertex& a, const ShadedVertex& b, Real t);

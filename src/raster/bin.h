@@ -1,0 +1,31 @@
+// Bin stage: which draw records touch which 64×64 tile, in submission order, so that each tile
+// can be drawn by one thread at a time (llvmpipe's scheme): no locks on the framebuffer, and every
+// pixel sees its fragments in the order GL would draw them.
+#pragma once
+
+#include "raster/draw.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace illum {
+
+constexpr int kTileSize = 64;
+
+class TileBins {
+ public:
+  TileBins(int width, int height);
+
+  int tileCount() const { return tilesX_ * tilesY_; }
+  PixelRect tileRect(int tile) const;
+  // Appends every record to the tiles its pixel bounding box overlaps.
+  void bin(const std::vector<DrawRecord>& records);
+  const std::vector<std::uint32_t>& records(int tile) const { return bins_[std::size_t(tile)]; }
+  void clear();
+
+ private:
+  int width_, height_, tilesX_, tilesY_;
+  std::vector<std::vector<std::uint32_t>> bins_;
+};
+
+}  // namespace illum

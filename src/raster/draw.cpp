@@ -1,0 +1,157 @@
+#include "raster/draw.h"
+
+#include "raster/clip.h"
+#include "raster/fragment.h"
+
+#include <algorithm>
+#include <cstring>
+#include <limits>
+
+namespace illum {
+namespace {
+
+// Records the fragment at the watched pixel: where it was lit and what it wrote.
+void recordProbe(const DrawTarget& target, const Object& object, std::size_t objectIndex, std::size_t triangle,
+                 const TriangleSetup& t, const ProvokingVertex& flat, const std::array<Real, 3>& w, const Color4& lit,
+                 const Vec4* texel, const Color4& c) {
+  PixelProbe& p = *target.probe;
+  const auto& v = t.vertex;
+  const bool back = target.frame.lightModel.twoSided && !t.frontFacing;
+  p.hit = true;
+  p.object = objectIndex;
+  p.triangle = triangle;
+  p.frontFacing = t.frontFacing;
+  p.written = c;
+  p.lit = lit;
+  p.textured = texel != nullptr;
+  p.texel = texel ? *texel : Vec4(1);
+  p.blended = target.frame.blend && c.a < 1;  // alpha 1 blends to the fragment itself
+  p.weights = w;
+  for (std::size_t i = 0; i < 3; ++i) {
+    p.vertexColors[i] = back ? v[i].back : v[i].front;
+    p.vertexPositions[i] = v[i].eyePosition;
+    p.vertexNormals[i] = back ? -v[i].eyeNormal : v[i].eyeNormal;
+    p.vertexMaterials[i] = object.mesh->colors.empty() ? object.material : withVertexColor(object.material, v[i].color);
+  }
+  p.material = object.material;
+  if (!object.mesh->colors.empty())
+    p.material = withVertexColor(object.material, w[0] * v[0].color + w[1] * v[1].color + w[2] * v[2].color);
+  if (target.frame.shading == Shading::Flat) {
+    p.eyePosition = flat.eyePosition;
+    p.eyeNormal = flat.eyeNormal;
+  } else {
+    p.eyePosition = w[0] * v[0].eyePosition + w[1] * v[1].eyePosition + w[2] * v[2].eyePosition;
+    const Vec3 n = w[0] * v[0].eyeNormal + w[1] * v[1].eyeNormal + w[2] * v[2].eyeNormal;
+    p.eyeNormal = glm::length(n) > 0 ? glm::normalize(n) : Vec3(0, 0, 1);
+  }
+  if (back) p.eyeNormal = -p.eyeNormal;
+}
+
+}  // namespace
+
+void drawRecord(const DrawTarget& target, const DrawRecord& record, const PixelRect& rect, std::size_t& fragments) {
+  const Object& object = target.scene.objects[record.object];
+  const std::size_t objectIndex = record.object, triangle = record.triangle;
+  const TriangleSetup& t = record.setup;
+  const ProvokingVertex& flat = record.flat;
+  const FrameContext& frame = target.frame;
+  const bool back = frame.lightModel.twoSided && !t.frontFacing;
+  const bool vertexColors = !object.mesh->colors.empty();
+  const Texture* texture = object.mesh->uvs.empty() ? nullptr : object.diffuseTexture.get();
+  const int probeRow = target.probe ? frame.height - 1 - target.probe->y : -1;  // GL rows run bottom up
+  rasterizeTriangle(t, rect, [&](int x, int y, Real l0, Real l1, Real l2) {
+    const Real z = l0 * t.z[0] + l1 * t.z[1] + l2 * t.z[2];
+    if (!target.fb.depthTest(x, y, z)) return;
+    ++fragments;
+    Color4 c;
+    switch (frame.shading) {
+      case Shading::Flat:
+        c = back ? flat.back : flat.front;
+        break;
+      case Shading::Gouraud:
+        c = shadeGouraudFragment(frame, t, perspectiveWeights(t, l0, l1, l2));
+        break;
+      case Shading::Phong:
+        c = shadePhongFragment(frame, object.material, vertexColors, t, perspectiveWeights(t, l0, l1, l2));
+        break;
+    }
+    const Color4 lit = c;
+    // GL_MODULATE: the lit colour times the texel, alpha included.
+    Vec4 texel(1);
+    if (texture) c *= (texel = sampleDiffuseTexture(*texture, t, l0, l1, l2));
+    if (frame.blend) target.fb.blendColor(x, y, c);
+    else target.fb.writeColor(x, y, c);
+    if (y == probeRow && x == target.probe->x)
+      recordProbe(target, object, objectIndex, triangle, t, flat, perspectiveWeights(t, l0, l1, l2), lit,
+                  texture ? &texel : nullptr, c);
+  });
+}
+
+std::size_t setupTriangles(const FrameContext& frame, const Object& object, std::uint32_t objectIndex,
+                           const std::vector<ShadedVertex>& vertices, std::size_t first, std::size_t last,
+                           std::vector<DrawRecord>& out) {
+  const std::size_t before = out.size();
+  const auto& indices = object.mesh->indices;
+  std::vector<ShadedVertex> polygon;
+  polygon.reserve(9);
+  for (std::size_t t = first; t < last; ++t) {
+    const std::size_t i = 3 * t;
+    const std::array<ShadedVertex, 3> tri = {vertices[indices[i]], vertices[indices[i + 1]], vertices[indices[i + 2]]};
+    const ProvokingVertex flat{tri[2].front, tri[2].back, tri[2].eyePosition, tri[2].eyeNormal};
+    polygon.clear();
+    if (clipTriangle(tri, frame.width, frame.height, polygon) == ClipResult::Outside) continue;
+    // The clipped polygon is convex: draw it as a fan.
+    for (std::size_t k = 1; k + 1 < polygon.size(); ++k) {
+      DrawRecord r;
+      if (!setupTriangle(polygon[0], polygon[k], polygon[k + 1], frame.width, frame.height, r.setup)) continue;
+      r.flat = flat;
+      r.object = objectIndex;
+      r.triangle = std::uint32_t(t);
+      out.push_back(r);
+    }
+  }
+  return out.size() - before;
+}
+
+// Pixels whose bytes differ from the cleared background's.
+std::size_t countPixelsUnlike(const Image& image, const Color4& background) {
+  const std::uint8_t clear[4] = {toUnorm8(background.r), toUnorm8(background.g), toUnorm8(background.b),
+                                 toUnorm8(background.a)};
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < image.rgba.size(); i += 4) n += std::memcmp(&image.rgba[i], clear, 4) != 0;
+  return n;
+}
+
+namespace {
+
+bool isTranslucent(const Object& o) {
+  return o.material.diffuse.a < 1 || (o.diffuseTexture && o.diffuseTexture->hasTransparency()) ||
+         std::any_of(o.mesh->colors.begin(), o.mesh->colors.end(), [](const Color4& c) { return c.a < 1; });
+}
+
+}  // namespace
+
+// Scene order, or with blending the opaque objects first and then the translucent ones from the
+// farthest to the nearest (by the eye-space depth of their bounds' centre). Ties keep scene order.
+std::vector<const Object*> drawingOrder(const Scene& scene, const FrameContext& frame) {
+  std::vector<const Object*> order;
+  for (const Object& o : scene.objects) order.push_back(&o);
+  if (!scene.blend) return order;
+  const auto depth = [&](const Object* o) {
+    Vec3 lo(std::numeric_limits<Real>::max()), hi(-std::numeric_limits<Real>::max());
+    for (const Vec3& p : o->mesh->positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    return (frame.viewFromWorld * o->worldFromObject * Vec4((lo + hi) * Real(0.5), 1)).z;
+  };
+  std::vector<std::pair<Real, const Object*>> translucent;
+  std::vector<const Object*> opaque;
+  for (const Object* o : order) {
+    if (isTranslucent(*o)) translucent.push_back({depth(o), o});
+    else opaque.push_back(o);
+  }
+  // Eye space looks down −Z: the most negative z is the farthest.
+  std::stable_sort(translucent.begin(), translucent.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (const auto& [unused, o] : translucent) opaque.push_back(o);
+  return opaque;
+}
+
+}  // namespace illum
