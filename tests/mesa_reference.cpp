@@ -174,12 +174,13 @@ MesaPath mesaPathFor(const Scene& scene) {
   return scene.model == LightingModel::BlinnPhong ? MesaPath::FixedFunction : MesaPath::GlslPerVertex;
 }
 
-Image renderWithMesa(const Scene& scene, MesaPath path) {
+MesaSession::MesaSession(const Scene& scene, MesaPath path)
+    : scene_(scene), buffer_(std::size_t(scene.width) * std::size_t(scene.height) * 4) {
   if (scene.lights.size() > 8) throw std::runtime_error("the Mesa reference takes at most 8 lights");
   OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, nullptr);
   if (!ctx) throw std::runtime_error("OSMesaCreateContextExt failed");
-  std::vector<std::uint8_t> buffer(std::size_t(scene.width) * std::size_t(scene.height) * 4);
-  if (!OSMesaMakeCurrent(ctx, buffer.data(), GL_UNSIGNED_BYTE, scene.width, scene.height)) {
+  context_ = ctx;
+  if (!OSMesaMakeCurrent(ctx, buffer_.data(), GL_UNSIGNED_BYTE, scene.width, scene.height)) {
     OSMesaDestroyContext(ctx);
     throw std::runtime_error("OSMesaMakeCurrent failed");
   }
@@ -188,7 +189,6 @@ Image renderWithMesa(const Scene& scene, MesaPath path) {
   glClearColor(GLfloat(scene.background.r), GLfloat(scene.background.g), GLfloat(scene.background.b),
                GLfloat(scene.background.a));
   glClearDepth(1);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glEnable(GL_NORMALIZE);
@@ -207,42 +207,79 @@ Image renderWithMesa(const Scene& scene, MesaPath path) {
   glLightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, scene.lightModel.localViewer ? 1 : 0);
   glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, scene.lightModel.twoSided ? 1 : 0);
 
-  GLuint program = 0;
   if (path == MesaPath::FixedFunction) {
     glEnable(GL_LIGHTING);
   } else {
-    program = buildProgram(path);
-    glUseProgram(program);
-    glUniform1i(glGetUniformLocation(program, "uLights"), GLint(scene.lights.size()));
-    glUniform1i(glGetUniformLocation(program, "uModel"), int(scene.model));
-    glUniform1i(glGetUniformLocation(program, "uLocalViewer"), scene.lightModel.localViewer ? 1 : 0);
-    if (GLint twoSided = glGetUniformLocation(program, "uTwoSided"); twoSided >= 0)
+    program_ = buildProgram(path);
+    glUseProgram(program_);
+    glUniform1i(glGetUniformLocation(program_, "uLights"), GLint(scene.lights.size()));
+    glUniform1i(glGetUniformLocation(program_, "uModel"), int(scene.model));
+    glUniform1i(glGetUniformLocation(program_, "uLocalViewer"), scene.lightModel.localViewer ? 1 : 0);
+    if (GLint twoSided = glGetUniformLocation(program_, "uTwoSided"); twoSided >= 0)
       glUniform1i(twoSided, scene.lightModel.twoSided ? 1 : 0);
     // Per-vertex colours pick gl_BackColor on back faces only when asked, like two-sided lighting.
     if (scene.lightModel.twoSided) glEnable(GL_VERTEX_PROGRAM_TWO_SIDE);
   }
 
+  // Every mesh in buffer objects once, so that a frame is only the draws (what an application does).
   for (const Object& object : scene.objects) {
+    const Mesh& mesh = *object.mesh;
+    std::vector<GLfloat> interleaved;
+    interleaved.reserve(mesh.positions.size() * 6);
+    for (std::size_t i = 0; i < mesh.positions.size(); ++i)
+      for (const Vec3& v : {mesh.positions[i], mesh.normals[i]})
+        interleaved.insert(interleaved.end(), {GLfloat(v.x), GLfloat(v.y), GLfloat(v.z)});
+    GLuint buffers[2];
+    glGenBuffers(2, buffers);
+    glBindBuffer(GL_ARRAY_BUFFER, buffers[0]);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(interleaved.size() * sizeof(GLfloat)), interleaved.data(), GL_STATIC_DRAW);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffers[1]);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(mesh.indices.size() * sizeof(std::uint32_t)), mesh.indices.data(),
+                 GL_STATIC_DRAW);
+    meshBuffers_.push_back({buffers[0], buffers[1]});
+  }
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glEnableClientState(GL_NORMAL_ARRAY);
+}
+
+MesaSession::~MesaSession() {
+  for (const auto& [vertices, indices] : meshBuffers_) {
+    const GLuint buffers[2] = {vertices, indices};
+    glDeleteBuffers(2, buffers);
+  }
+  if (program_) glDeleteProgram(program_);
+  OSMesaDestroyContext(static_cast<OSMesaContext>(context_));
+}
+
+void MesaSession::draw() {
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  const Mat4 view = scene_.camera.viewFromWorld();
+  for (std::size_t k = 0; k < scene_.objects.size(); ++k) {
+    const Object& object = scene_.objects[k];
     loadMatrix(view * object.worldFromObject);
     setMaterial(object.material);
-    const Mesh& mesh = *object.mesh;
-    glBegin(GL_TRIANGLES);
-    for (std::uint32_t i : mesh.indices) {
-      glNormal3f(GLfloat(mesh.normals[i].x), GLfloat(mesh.normals[i].y), GLfloat(mesh.normals[i].z));
-      glVertex3f(GLfloat(mesh.positions[i].x), GLfloat(mesh.positions[i].y), GLfloat(mesh.positions[i].z));
-    }
-    glEnd();
+    glBindBuffer(GL_ARRAY_BUFFER, meshBuffers_[k].first);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, meshBuffers_[k].second);
+    glVertexPointer(3, GL_FLOAT, 6 * sizeof(GLfloat), nullptr);
+    glNormalPointer(GL_FLOAT, 6 * sizeof(GLfloat), reinterpret_cast<const void*>(3 * sizeof(GLfloat)));
+    glDrawElements(GL_TRIANGLES, GLsizei(object.mesh->indices.size()), GL_UNSIGNED_INT, nullptr);
   }
   glFinish();
+}
 
+Image MesaSession::image() const {
   // OSMesa's rows run bottom to top; images run top to bottom.
-  Image image(scene.width, scene.height);
-  const std::size_t row = std::size_t(scene.width) * 4;
-  for (int y = 0; y < scene.height; ++y)
-    std::memcpy(image.pixel(0, y), &buffer[std::size_t(scene.height - 1 - y) * row], row);
-  if (program) glDeleteProgram(program);
-  OSMesaDestroyContext(ctx);
+  Image image(scene_.width, scene_.height);
+  const std::size_t row = std::size_t(scene_.width) * 4;
+  for (int y = 0; y < scene_.height; ++y)
+    std::memcpy(image.pixel(0, y), &buffer_[std::size_t(scene_.height - 1 - y) * row], row);
   return image;
+}
+
+Image renderWithMesa(const Scene& scene, MesaPath path) {
+  MesaSession session(scene, path);
+  session.draw();
+  return session.image();
 }
 
 }  // namespace illum::test

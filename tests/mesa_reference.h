@@ -6,6 +6,10 @@
 #include <illum/image.h>
 #include <illum/scene.h>
 
+#include <cstdint>
+#include <utility>
+#include <vector>
+
 namespace illum::test {
 
 enum class MesaPath { FixedFunction, GlslPerVertex, GlslPerPixel };
@@ -13,8 +17,29 @@ enum class MesaPath { FixedFunction, GlslPerVertex, GlslPerPixel };
 // The path that renders `scene` as GL would: fixed function where GL has it.
 MesaPath mesaPathFor(const Scene& scene);
 
-// Renders with Mesa; row 0 at the top, like illum's images. Throws std::runtime_error when
-// OSMesa cannot make a context or a shader does not compile.
+// One OSMesa context set up for a scene: GL state, lights, program, and every mesh in buffer
+// objects, so that draw() is one frame as an application would draw it (clear, the draws,
+// glFinish): what the bench times. Throws std::runtime_error when OSMesa cannot make a context or
+// a shader does not compile.
+class MesaSession {
+ public:
+  MesaSession(const Scene& scene, MesaPath path);
+  ~MesaSession();
+  MesaSession(const MesaSession&) = delete;
+  MesaSession& operator=(const MesaSession&) = delete;
+
+  void draw();
+  Image image() const;  // the last frame, row 0 at the top like illum's images
+
+ private:
+  const Scene& scene_;
+  std::vector<std::uint8_t> buffer_;
+  void* context_ = nullptr;
+  unsigned program_ = 0;
+  std::vector<std::pair<unsigned, unsigned>> meshBuffers_;  // vertex and index buffer per object
+};
+
+// Renders with Mesa; row 0 at the top, like illum's images.
 Image renderWithMesa(const Scene& scene, MesaPath path);
 
 }  // namespace illum::test
