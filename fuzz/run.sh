@@ -1,12 +1,20 @@
 #!/usr/bin/env bash
-# Fuzz illum for a fixed budget: fuzz/run.sh [SECONDS per target, default 60]
+# Fuzz illum for a fixed budget:
+#   fuzz/run.sh [SECONDS]   each target for SECONDS (default 60), from a random seed: for hunting
+#   fuzz/run.sh --ci        each target for a fixed number of runs from a fixed seed: the same
+#                           inputs on every run, about 45 s each on two cores (what CI runs)
 # Builds the libFuzzer targets with clang, ASan and UBSan (build-fuzz/), replays the regression
 # inputs of tests/regressions/, then fuzzes the scene parser and the model import from seed
 # corpora (the examples and test scenes; small files of Debian's assimp-testmodels). A crash
 # leaves its input as fuzz/artifacts/crash-*: add it to tests/regressions/ with the fix.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-seconds=${1:-60}
+budget=(-max_total_time="${1:-60}")
+label="${1:-60} s"
+if [ "${1:-}" = "--ci" ]; then
+  budget=(-seed=1)
+  label="a fixed seed"
+fi
 jobs=$(nproc 2>/dev/null || echo 2)
 
 cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
@@ -38,11 +46,18 @@ fi
 export ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 export LSAN_OPTIONS=suppressions=$PWD/tests/lsan.supp
-run() {  # run TARGET CORPUS
-  echo "illum: fuzzing $1 for ${seconds} s"
-  "build-fuzz/fuzz/illum_$1" -max_total_time="$seconds" -timeout=20 -rss_limit_mb=2048 -max_len=65536 \
-    -artifact_prefix=fuzz/artifacts/ -print_final_stats=1 "$2" 2>&1 | tail -n 12
+run() {  # run TARGET CORPUS RUNS: RUNS applies with --ci
+  local runs=()
+  [ "${budget[0]}" = "-seed=1" ] && runs=(-runs="$3")
+  echo "illum: fuzzing $1 ($label${runs:+, $3 runs})"
+  if ! "build-fuzz/fuzz/illum_$1" "${budget[@]}" "${runs[@]}" -timeout=20 -rss_limit_mb=2048 -max_len=65536 \
+      -artifact_prefix=fuzz/artifacts/ -print_final_stats=1 "$2" > "$work/$1.log" 2>&1; then
+    grep -v '^#' "$work/$1.log" | tail -n 60
+    echo "illum: $1 found a crash: fuzz/artifacts/ holds the input" >&2
+    return 1
+  fi
+  tail -n 6 "$work/$1.log"
 }
-run scene_fuzzer "$work/scene"
-run model_fuzzer "$work/model"
+run scene_fuzzer "$work/scene" 150000
+run model_fuzzer "$work/model" 2000
 echo "fuzz: 2 passed, 0 failed"

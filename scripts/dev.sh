@@ -52,7 +52,7 @@ case "${1:-}" in
     (cd build-asan && ASAN_OPTIONS=detect_leaks=1 LSAN_OPTIONS=suppressions=$PWD/../tests/lsan.supp \
       UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j "$jobs")
     echo "illum: fuzzing (libFuzzer, ASan+UBSan) for a fixed budget"
-    fuzz/run.sh "${ILLUM_FUZZ_SECONDS:-45}"
+    fuzz/run.sh --ci
     ;;
   *)
     echo "usage: scripts/dev.sh run|test" >&2

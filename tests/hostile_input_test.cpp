@@ -130,6 +130,13 @@ TEST_F(HostileFile, TessellationBombsAreRefused) {
                 "/objects/0/mesh");
 }
 
+// Found by fuzz/run.sh: a scene without width or height whose default size exceeds --max-pixels
+// threw an uncaught exception while naming the key at fault.
+TEST_F(HostileFile, DefaultSizeOverThePixelLimitIsRefused) {
+  expectRefused(kRegressions / "scene-default-size-over-max-pixels-abort.json", "raise it with --max-pixels",
+                "--max-pixels 4096");
+}
+
 TEST_F(HostileFile, LimitsCanBeRaisedAndLowered) {
   const fs::path scene = write("s.json", R"({"width":64,"height":48,"objects":[{"mesh":{"type":"sphere","slices":100,"stacks":100}}]})");
   expectRefused(scene, "raise it with --max-triangles", "--max-triangles 1000");

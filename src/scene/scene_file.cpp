@@ -306,7 +306,7 @@ Scene parseScene(const std::string& text, const std::string& name, const std::fi
   if (j.has("width")) s.width = j.at("width").integer(1, kMaxImageSize);
   if (j.has("height")) s.height = j.at("height").integer(1, kMaxImageSize);
   if (std::uint64_t(s.width) * std::uint64_t(s.height) > limits.maxPixels)
-    (j.has("height") ? j.at("height") : j.at("width"))
+    (j.has("height") ? j.at("height") : j.has("width") ? j.at("width") : j)
         .fail("an image of at most " + withThousands(limits.maxPixels) + " pixels (raise it with --max-pixels), got " +
               std::to_string(s.width) + "×" + std::to_string(s.height));
   if (j.has("background")) s.background = j.at("background").color34();
