@@ -15,11 +15,11 @@ PixelRect TileBins::tileRect(int tile) const {
 }
 
 void TileBins::bin(const std::vector<DrawRecord>& records) {
-  for (std::size_t i = 0; i < records.size(); ++i) {
-    const TriangleSetup& t = records[i].setup;
+  for (const DrawRecord& r : records) {
+    const TriangleSetup& t = r.setup;
     for (int ty = t.minY / kTileSize; ty <= t.maxY / kTileSize; ++ty)
       for (int tx = t.minX / kTileSize; tx <= t.maxX / kTileSize; ++tx)
-        bins_[std::size_t(ty * tilesX_ + tx)].push_back(std::uint32_t(i));
+        bins_[std::size_t(ty * tilesX_ + tx)].push_back(&r);
   }
 }
 

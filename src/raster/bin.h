@@ -18,14 +18,15 @@ class TileBins {
 
   int tileCount() const { return tilesX_ * tilesY_; }
   PixelRect tileRect(int tile) const;
-  // Appends every record to the tiles its pixel bounding box overlaps.
+  // Appends every record to the tiles its pixel bounding box overlaps. The records must stay where
+  // they are until clear().
   void bin(const std::vector<DrawRecord>& records);
-  const std::vector<std::uint32_t>& records(int tile) const { return bins_[std::size_t(tile)]; }
+  const std::vector<const DrawRecord*>& records(int tile) const { return bins_[std::size_t(tile)]; }
   void clear();
 
  private:
   int width_, height_, tilesX_, tilesY_;
-  std::vector<std::vector<std::uint32_t>> bins_;
+  std::vector<std::vector<const DrawRecord*>> bins_;
 };
 
 }  // namespace illum

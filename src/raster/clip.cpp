@@ -23,24 +23,39 @@ std::array<Plane, 6> clipPlanes(int width, int height) {
 
 }  // namespace
 
-ClipResult clipTriangle(const std::array<ShadedVertex, 3>& tri, int width, int height,
-                        std::vector<ShadedVertex>& polygon) {
-  const auto planes = clipPlanes(width, height);
+unsigned clipOutcode(const Vec4& clip, int width, int height) {
   // A vertex pushed to infinity (an overflowing transform) has no place on screen.
-  for (const ShadedVertex& v : tri)
-    if (!std::isfinite(v.clip.x) || !std::isfinite(v.clip.y) || !std::isfinite(v.clip.z) || !std::isfinite(v.clip.w))
-      return ClipResult::Outside;
+  if (!std::isfinite(clip.x) || !std::isfinite(clip.y) || !std::isfinite(clip.z) || !std::isfinite(clip.w))
+    return kNotFinite;
+  const auto planes = clipPlanes(width, height);
+  unsigned code = 0;
+  for (std::size_t p = 0; p < planes.size(); ++p)
+    if (glm::dot(planes[p], clip) < 0) code |= 1u << p;
+  return code;
+}
+
+ClipResult classifyTriangle(const ShadedVertex& a, const ShadedVertex& b, const ShadedVertex& c, int width, int height,
+                            unsigned* outsidePlanes) {
   // Trivial accept and reject with per-vertex outcodes.
   unsigned orCodes = 0, andCodes = ~0u;
-  for (const ShadedVertex& v : tri) {
-    unsigned code = 0;
-    for (std::size_t p = 0; p < planes.size(); ++p)
-      if (glm::dot(planes[p], v.clip) < 0) code |= 1u << p;
+  for (const ShadedVertex* v : {&a, &b, &c}) {
+    const unsigned code = clipOutcode(v->clip, width, height);
+    if (code & kNotFinite) return ClipResult::Outside;
     orCodes |= code;
     andCodes &= code;
   }
+  if (outsidePlanes) *outsidePlanes = orCodes;
   if (andCodes != 0) return ClipResult::Outside;
-  if (orCodes == 0) {
+  return orCodes == 0 ? ClipResult::Inside : ClipResult::Clipped;
+}
+
+ClipResult clipTriangle(const std::array<ShadedVertex, 3>& tri, int width, int height,
+                        std::vector<ShadedVertex>& polygon) {
+  const auto planes = clipPlanes(width, height);
+  unsigned orCodes = 0;
+  const ClipResult kind = classifyTriangle(tri[0], tri[1], tri[2], width, height, &orCodes);
+  if (kind == ClipResult::Outside) return kind;
+  if (kind == ClipResult::Inside) {
     polygon.insert(polygon.end(), tri.begin(), tri.end());
     return ClipResult::Inside;
   }

@@ -16,6 +16,16 @@ constexpr int kGuardBandPixels = 8192;
 
 enum class ClipResult { Outside, Inside, Clipped };
 
+// Which clip planes a clip-space position is beyond (bit p for plane p: near, far, −x, +x, −y,
+// +y of the guard band), and kNotFinite for a position no plane can judge. 0 is inside.
+constexpr unsigned kNotFinite = 1u << 6;
+unsigned clipOutcode(const Vec4& clip, int width, int height);
+
+// Trivial accept and reject: Outside (wholly beyond one plane, or not finite), Inside (needs no
+// cut), or Clipped (clipTriangle must cut it). `outsidePlanes` gets the planes any vertex is beyond.
+ClipResult classifyTriangle(const ShadedVertex& a, const ShadedVertex& b, const ShadedVertex& c, int width, int height,
+                            unsigned* outsidePlanes = nullptr);
+
 // Clips `tri` and appends the resulting convex polygon (0 or 3..9 vertices) to `polygon`.
 ClipResult clipTriangle(const std::array<ShadedVertex, 3>& tri, int width, int height,
                         std::vector<ShadedVertex>& polygon);

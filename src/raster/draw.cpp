@@ -96,19 +96,29 @@ std::size_t setupTriangles(const FrameContext& frame, const Object& object, std:
   polygon.reserve(9);
   for (std::size_t t = first; t < last; ++t) {
     const std::size_t i = 3 * t;
-    const std::array<ShadedVertex, 3> tri = {vertices[indices[i]], vertices[indices[i + 1]], vertices[indices[i + 2]]};
-    const ProvokingVertex flat{tri[2].front, tri[2].back, tri[2].eyePosition, tri[2].eyeNormal};
-    polygon.clear();
-    if (clipTriangle(tri, frame.width, frame.height, polygon) == ClipResult::Outside) continue;
-    // The clipped polygon is convex: draw it as a fan.
-    for (std::size_t k = 1; k + 1 < polygon.size(); ++k) {
-      DrawRecord r;
-      if (!setupTriangle(polygon[0], polygon[k], polygon[k + 1], frame.width, frame.height, r.setup)) continue;
+    const ShadedVertex &a = vertices[indices[i]], &b = vertices[indices[i + 1]], &c = vertices[indices[i + 2]];
+    const ProvokingVertex flat{c.front, c.back, c.eyePosition, c.eyeNormal};
+    const ClipResult kind = classifyTriangle(a, b, c, frame.width, frame.height);
+    if (kind == ClipResult::Outside) continue;
+    // Most triangles need no cut: set up straight into the record.
+    const auto emit = [&](const ShadedVertex& v0, const ShadedVertex& v1, const ShadedVertex& v2) {
+      DrawRecord& r = out.emplace_back();
+      if (!setupTriangle(v0, v1, v2, frame.width, frame.height, r.setup)) {
+        out.pop_back();
+        return;
+      }
       r.flat = flat;
       r.object = objectIndex;
       r.triangle = std::uint32_t(t);
-      out.push_back(r);
+    };
+    if (kind == ClipResult::Inside) {
+      emit(a, b, c);
+      continue;
     }
+    polygon.clear();
+    if (clipTriangle({a, b, c}, frame.width, frame.height, polygon) == ClipResult::Outside) continue;
+    // The clipped polygon is convex: draw it as a fan.
+    for (std::size_t k = 1; k + 1 < polygon.size(); ++k) emit(polygon[0], polygon[k], polygon[k + 1]);
   }
   return out.size() - before;
 }

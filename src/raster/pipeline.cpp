@@ -26,9 +26,7 @@ class BinnedRenderer {
  public:
   BinnedRenderer(const Scene& scene, const FrameContext& frame, Framebuffer& fb, PixelProbe* probe)
       : frame_(frame), target_{frame, scene, fb, probe}, bins_(frame.width, frame.height),
-        tileFragments_(std::size_t(bins_.tileCount()), 0) {
-    batch_.reserve(kBatchRecords + kTriangleChunk * 8);
-  }
+        tileFragments_(std::size_t(bins_.tileCount()), 0) {}
 
   void drawObject(const Object& object, std::uint32_t index) {
     vertices_.resize(object.mesh->positions.size());
@@ -39,37 +37,39 @@ class BinnedRenderer {
     const std::size_t triangles = object.mesh->triangleCount();
     stats_.trianglesIn += triangles;
     const std::size_t chunks = (triangles + kTriangleChunk - 1) / kTriangleChunk;
-    // Set up a slice of chunks in parallel, then append their records in chunk order.
+    // A slice of chunks is set up in parallel, each into a vector of its own, then binned in
+    // chunk order; the records stay in their vectors until the batch is drawn.
     const std::size_t slice = std::max<std::size_t>(1, kBatchRecords / kTriangleChunk);
     for (std::size_t c0 = 0; c0 < chunks; c0 += slice) {
       const std::size_t c1 = std::min(chunks, c0 + slice);
-      if (chunkRecords_.size() < c1 - c0) chunkRecords_.resize(c1 - c0);
-      tbb::parallel_for(std::size_t(c0), c1, [&](std::size_t c) {
-        std::vector<DrawRecord>& out = chunkRecords_[c - c0];
+      if (pool_.size() < used_ + (c1 - c0)) pool_.resize(used_ + (c1 - c0));
+      tbb::parallel_for(c0, c1, [&](std::size_t c) {
+        std::vector<DrawRecord>& out = pool_[used_ + (c - c0)];
         out.clear();
         setupTriangles(frame_, object, index, vertices_, c * kTriangleChunk, std::min(triangles, (c + 1) * kTriangleChunk),
                        out);
       });
       for (std::size_t c = c0; c < c1; ++c) {
-        const auto& part = chunkRecords_[c - c0];
-        batch_.insert(batch_.end(), part.begin(), part.end());
+        const std::vector<DrawRecord>& part = pool_[used_++];
+        bins_.bin(part);
+        batched_ += part.size();
         stats_.trianglesDrawn += part.size();
       }
-      if (batch_.size() >= kBatchRecords) flush();
+      if (batched_ >= kBatchRecords) flush();
     }
   }
 
-  // Bins what has been gathered and draws every tile, each on one thread.
+  // Draws every tile of what has been binned, each tile on one thread, its records in order.
   void flush() {
-    if (batch_.empty()) return;
-    bins_.bin(batch_);
+    if (batched_ == 0) return;
     tbb::parallel_for(0, bins_.tileCount(), [&](int tile) {
       const PixelRect rect = bins_.tileRect(tile);
       std::size_t& fragments = tileFragments_[std::size_t(tile)];
-      for (std::uint32_t r : bins_.records(tile)) drawRecord(target_, batch_[r], rect, fragments);
+      for (const DrawRecord* r : bins_.records(tile)) drawRecord(target_, *r, rect, fragments);
     });
     bins_.clear();
-    batch_.clear();
+    used_ = 0;
+    batched_ = 0;
   }
 
   RenderStats stats() const {
@@ -84,8 +84,8 @@ class BinnedRenderer {
   TileBins bins_;
   std::vector<std::size_t> tileFragments_;
   std::vector<ShadedVertex> vertices_;
-  std::vector<std::vector<DrawRecord>> chunkRecords_;
-  std::vector<DrawRecord> batch_;
+  std::vector<std::vector<DrawRecord>> pool_;  // per chunk; moving the outer vector keeps the records in place
+  std::size_t used_ = 0, batched_ = 0;
   RenderStats stats_;
 };
 

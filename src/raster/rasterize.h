@@ -16,10 +16,11 @@ struct PixelRect {
 
 template <class FragmentFn>
 void rasterizeTriangle(const TriangleSetup& t, const PixelRect& rect, FragmentFn&& fragment) {
-  const std::int64_t half = kSubpixelOne / 2;
-  const Real invArea = Real(1) / Real(t.area2);
   const int minX = std::max(t.minX, rect.minX), maxX = std::min(t.maxX, rect.maxX);
   const int minY = std::max(t.minY, rect.minY), maxY = std::min(t.maxY, rect.maxY);
+  if (minX > maxX || minY > maxY) return;
+  const std::int64_t half = kSubpixelOne / 2;
+  const Real invArea = Real(1) / Real(t.area2);
   for (int y = minY; y <= maxY; ++y) {
     const std::int64_t fy = std::int64_t(y) * kSubpixelOne + half;
     const std::int64_t fx0 = std::int64_t(minX) * kSubpixelOne + half;

@@ -6,19 +6,8 @@
 namespace illum {
 namespace {
 
-struct WindowVertex {
-  std::int64_t x, y;  // fixed point, 8 sub-pixel bits
-  Real z, invW;
-};
+using WindowVertex = WindowPosition;
 
-WindowVertex toWindow(const ShadedVertex& v, int width, int height) {
-  // Perspective division, then the viewport transform (glViewport(0,0,w,h), glDepthRange(0,1)).
-  const Real invW = Real(1) / v.clip.w;
-  const Real xw = (v.clip.x * invW + 1) * Real(0.5) * Real(width);
-  const Real yw = (v.clip.y * invW + 1) * Real(0.5) * Real(height);
-  const Real zw = (v.clip.z * invW + 1) * Real(0.5);
-  return {std::llround(double(xw) * kSubpixelOne), std::llround(double(yw) * kSubpixelOne), zw, invW};
-}
 
 // Edge from p to q, positive on its left (the inside of a counter-clockwise triangle, y up).
 EdgeFunction makeEdge(const WindowVertex& p, const WindowVertex& q) {
@@ -35,10 +24,18 @@ EdgeFunction makeEdge(const WindowVertex& p, const WindowVertex& q) {
 
 }  // namespace
 
+WindowPosition toWindow(const Vec4& clip, int width, int height) {
+  const Real invW = Real(1) / clip.w;
+  const Real xw = (clip.x * invW + 1) * Real(0.5) * Real(width);
+  const Real yw = (clip.y * invW + 1) * Real(0.5) * Real(height);
+  const Real zw = (clip.z * invW + 1) * Real(0.5);
+  return {std::llround(double(xw) * kSubpixelOne), std::llround(double(yw) * kSubpixelOne), zw, invW};
+}
+
 bool setupTriangle(const ShadedVertex& v0, const ShadedVertex& v1, const ShadedVertex& v2, int width, int height,
                    TriangleSetup& out) {
-  std::array<WindowVertex, 3> w = {toWindow(v0, width, height), toWindow(v1, width, height),
-                                   toWindow(v2, width, height)};
+  std::array<WindowVertex, 3> w = {toWindow(v0.clip, width, height), toWindow(v1.clip, width, height),
+                                   toWindow(v2.clip, width, height)};
   out.vertex = {v0, v1, v2};
   std::int64_t area2 = (w[1].x - w[0].x) * (w[2].y - w[0].y) - (w[2].x - w[0].x) * (w[1].y - w[0].y);
   if (area2 == 0) return false;

@@ -31,6 +31,11 @@ struct TriangleSetup {
   int minX = 0, maxX = -1, minY = 0, maxY = -1; // pixels to visit, inside the viewport
 };
 
+// Perspective division and the viewport transform of one clip-space position (glViewport(0,0,w,h),
+// glDepthRange(0,1)), x and y rounded to the sub-pixel grid. Only for positions inside the clip
+// volume (clip.h), where every value fits.
+WindowPosition toWindow(const Vec4& clip, int width, int height);
+
 // Returns false for triangles that cover no pixel centre's neighbourhood (zero area or off-screen).
 // Window coordinates are GL's: origin at the bottom-left, pixel centres at +0.5.
 bool setupTriangle(const ShadedVertex& v0, const ShadedVertex& v1, const ShadedVertex& v2, int width, int height,

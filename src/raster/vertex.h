@@ -4,9 +4,16 @@
 
 #include "raster/frame_context.h"
 
+#include <cstdint>
 #include <vector>
 
 namespace illum {
+
+// Window coordinates: x and y in fixed point with 8 sub-pixel bits (y up), depth in [0,1], 1/w.
+struct WindowPosition {
+  std::int64_t x = 0, y = 0;
+  Real z = 0, invW = 0;
+};
 
 struct ShadedVertex {
   Vec4 clip{0};       // clipFromView · viewFromObject · p

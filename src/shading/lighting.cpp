@@ -67,24 +67,25 @@ Vec3 viewerDirection(const Vec3& eyePosition, bool localViewer) {
   return len > 0 ? -eyePosition / len : Vec3(0, 0, 1);
 }
 
-void accumulateLight(LightingTerms& terms, const EyeLight& light, const Material& material,
-                     LightingModel model, const SurfaceGeometry& surface, LightDetail* detail) {
+namespace {
+
+// The one light term of §2.14.1. With kRecord every intermediate goes to `d` as well; without,
+// nothing but the sum is written (the renderer's hot path).
+template <bool kRecord>
+void lightTerm(LightingTerms& terms, const EyeLight& light, const Material& material, LightingModel model,
+               const SurfaceGeometry& surface, LightDetail* d) {
   const Vec3& N = surface.normal;
   const Vec3& V = surface.toViewer;
-  LightDetail local;
-  LightDetail& d = detail ? *detail : local;
-  d = LightDetail{};
 
   // Where the light is: the unit vector towards it and the attenuation.
   Vec3 L;
   Real attenuation = 1;
-  d.positional = light.isPositional();
   if (light.isPositional()) {
     Vec3 toLight = Vec3(light.position) / light.position.w - surface.position;
     Real dist = glm::length(toLight);
     L = dist > 0 ? toLight / dist : N;  // a light exactly at the point shines along the normal
     attenuation = distanceAttenuation(light.attenuation, dist);
-    d.distance = dist;
+    if constexpr (kRecord) d->distance = dist;
   } else {
     Real len = glm::length(Vec3(light.position));
     L = len > 0 ? Vec3(light.position) / len : Vec3(0, 0, 1);
@@ -96,38 +97,48 @@ void accumulateLight(LightingTerms& terms, const EyeLight& light, const Material
                              : Real(1);
   Real scale = attenuation * spot;
   Real NoL = glm::dot(N, L);
-  d.L = L, d.attenuation = attenuation, d.spot = spot, d.NoL = NoL;
-  if (scale == 0 && !detail) return;
+  if constexpr (kRecord) d->positional = light.isPositional(), d->L = L, d->attenuation = attenuation, d->spot = spot, d->NoL = NoL;
+  if (scale == 0 && !kRecord) return;
 
   // How the surface answers: ambient, Lambert's diffuse and the model's specular lobe.
-  LightingTerms& out = d.terms;
-  out.ambient = scale * Color3(material.ambient) * light.ambient;
-  out.diffuse = scale * Fd_Lambert(NoL) * Color3(material.diffuse) * light.diffuse;
-
+  const Color3 ambient = scale * Color3(material.ambient) * light.ambient;
+  const Color3 diffuse = scale * Fd_Lambert(NoL) * Color3(material.diffuse) * light.diffuse;
+  Color3 specular(0);
   // f_i = 0 when the light is behind the surface: no highlight without direct light.
   Real lobe = 0;
-  if (model == LightingModel::BlinnPhong) {
+  if (model == LightingModel::BlinnPhong && (NoL > 0 || kRecord)) {
     Vec3 H = L + V;
     Real len = glm::length(H);
     // L = −V (up to rounding) leaves H undefined; illum takes N·H = 0 (so only 0^0 = 1 survives).
     Real NoH = len > Real(1e-6) ? glm::dot(N, H) / len : Real(0);
-    d.H = len > Real(1e-6) ? H / len : Vec3(0), d.NoH = NoH;
+    if constexpr (kRecord) d->H = len > Real(1e-6) ? H / len : Vec3(0), d->NoH = NoH;
     if (NoL > 0) lobe = Fs_BlinnPhong(NoH, material.shininess);
-  } else if (model == LightingModel::Phong) {
+  } else if (model == LightingModel::Phong && (NoL > 0 || kRecord)) {
     Vec3 R = Real(2) * NoL * N - L;
-    d.R = R, d.RoV = glm::dot(R, V);
+    if constexpr (kRecord) d->R = R, d->RoV = glm::dot(R, V);
     if (NoL > 0) lobe = Fs_Phong(glm::dot(R, V), material.shininess);
   }
-  d.lobe = lobe;
-  if (model != LightingModel::Lambert && NoL > 0)
-    out.specular = scale * lobe * Color3(material.specular) * light.specular;
-  if (scale == 0) {
-    d.terms = LightingTerms{};
-    return;
+  if (model != LightingModel::Lambert && NoL > 0) specular = scale * lobe * Color3(material.specular) * light.specular;
+  if constexpr (kRecord) {
+    d->lobe = lobe;
+    if (scale == 0) return;  // the terms stay zero
+    d->terms.ambient = ambient, d->terms.diffuse = diffuse, d->terms.specular = specular;
   }
-  terms.ambient += out.ambient;
-  terms.diffuse += out.diffuse;
-  terms.specular += out.specular;
+  terms.ambient += ambient;
+  terms.diffuse += diffuse;
+  terms.specular += specular;
+}
+
+}  // namespace
+
+void accumulateLight(LightingTerms& terms, const EyeLight& light, const Material& material,
+                     LightingModel model, const SurfaceGeometry& surface, LightDetail* detail) {
+  if (detail) {
+    *detail = LightDetail{};
+    lightTerm<true>(terms, light, material, model, surface, detail);
+  } else {
+    lightTerm<false>(terms, light, material, model, surface, nullptr);
+  }
 }
 
 LightingTerms evaluateTerms(std::span<const EyeLight> lights, const LightModel& lightModel,
