@@ -12,8 +12,13 @@
 
 namespace illum {
 
+// round(clamp(c)·255), halves away from zero, as std::lround would. With float channels the
+// product is exact in double (24 + 8 bits), so adding 0.5 is exact too and truncation rounds the
+// same way, without a call into libm per channel; double channels keep std::lround.
 inline std::uint8_t toUnorm8(Real c) {
-  return std::uint8_t(std::lround(double(std::clamp(c, Real(0), Real(1))) * 255.0));
+  const double x = double(std::clamp(c, Real(0), Real(1))) * 255.0;
+  if constexpr (sizeof(Real) == sizeof(float)) return std::uint8_t(int(x + 0.5));
+  else return std::uint8_t(std::lround(x));
 }
 
 class Framebuffer {

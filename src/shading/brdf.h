@@ -13,19 +13,23 @@ namespace illum {
 // J. H. Lambert, Photometria (1760); OpenGL 2.1 §2.14.1, the term (n ⊙ VP_pli).
 inline Real Fd_Lambert(Real NoL) { return std::max(NoL, Real(0)); }
 
+// max(x, 0)^n, the lobes' common form: the values std::pow gives, with its exact cases (0^n and
+// 1^n, common where a light is behind or straight along the lobe) answered without the call.
+inline Real powLobe(Real x, Real n) {
+  if (x <= 0) return n == 0 ? Real(1) : Real(0);  // pow(0, 0) = 1, pow(0, n > 0) = 0
+  if (x == 1) return Real(1);                      // pow(1, n) = 1
+  return std::pow(x, n);
+}
+
 // Phong's specular lobe (R·V)^n with R = 2N(N·L) − L.
 // B. T. Phong, "Illumination for computer generated pictures", CACM 18(6), 1975.
 // std::pow(0, 0) is 1, as GL requires for a shininess of 0.
-inline Real Fs_Phong(Real RoV, Real shininess) {
-  return std::pow(std::max(RoV, Real(0)), shininess);
-}
+inline Real Fs_Phong(Real RoV, Real shininess) { return powLobe(RoV, shininess); }
 
 // Blinn's halfway-vector lobe (N·H)^n with H = normalize(L + V).
 // J. F. Blinn, "Models of light reflection for computer synthesized pictures", SIGGRAPH 1977;
 // OpenGL 2.1 §2.14.1, the term (n ⊙ ĥ_i)^s_rm. std::pow(0, 0) is 1.
-inline Real Fs_BlinnPhong(Real NoH, Real shininess) {
-  return std::pow(std::max(NoH, Real(0)), shininess);
-}
+inline Real Fs_BlinnPhong(Real NoH, Real shininess) { return powLobe(NoH, shininess); }
 
 // Distance attenuation 1 / (k_c + k_l·d + k_q·d²) for positional lights (OpenGL 2.1 §2.14.1).
 // With k = (0,0,1) it is the inverse-square law I/r².
