@@ -2,49 +2,65 @@
 #include <illum/image.h>
 #include <illum/output_file.h>
 
-#include <spng.h>
+#include <libdeflate.h>
 #include <stb_image.h>
 
-#include <cstdlib>
 #include <cstring>
 #include <memory>
 
 namespace illum {
 namespace {
 
-struct SpngContext {
-  void operator()(spng_ctx* ctx) const { spng_ctx_free(ctx); }
+struct Compressor {
+  void operator()(libdeflate_compressor* c) const { libdeflate_free_compressor(c); }
 };
+
+void putBigEndian(std::vector<std::uint8_t>& out, std::uint32_t v) {
+  for (int shift = 24; shift >= 0; shift -= 8) out.push_back(std::uint8_t(v >> shift));
+}
+
+// One PNG chunk: length, type, data, and the CRC-32 of type and data (PNG §5.3).
+void putChunk(std::vector<std::uint8_t>& out, const char type[4], const std::uint8_t* data, std::size_t size) {
+  putBigEndian(out, std::uint32_t(size));
+  const std::size_t start = out.size();
+  out.insert(out.end(), type, type + 4);
+  out.insert(out.end(), data, data + size);
+  putBigEndian(out, std::uint32_t(libdeflate_crc32(0, out.data() + start, size + 4)));
+}
 
 }  // namespace
 
-// libspng with zlib's fastest level and the "up" filter: rendered pictures are mostly smooth
-// regions, where this costs a few percent of size against the default settings and runs several
-// times faster. The bytes are the same on every run.
+// An RGBA8 PNG whose rows all use the "sub" filter (each byte minus the same channel of the pixel
+// to its left: rendered pictures are mostly smooth runs, which this turns into runs of zeros),
+// compressed by libdeflate at its fastest level: several times faster than stb_image_write or
+// zlib, a few percent larger than zlib's default. The PNG framing is the format's own (signature,
+// IHDR, one IDAT, IEND); the compression is libdeflate's. The same bytes on every run.
 std::vector<std::uint8_t> encodePng(const Image& image) {
-  const auto fail = [&](int code) -> std::vector<std::uint8_t> {
-    throw Error("cannot encode a " + std::to_string(image.width) + "x" + std::to_string(image.height) +
-                " PNG: " + spng_strerror(code));
-  };
-  std::unique_ptr<spng_ctx, SpngContext> ctx(spng_ctx_new(SPNG_CTX_ENCODER));
-  if (!ctx) fail(SPNG_EMEM);
-  spng_set_option(ctx.get(), SPNG_ENCODE_TO_BUFFER, 1);
-  spng_set_option(ctx.get(), SPNG_IMG_COMPRESSION_LEVEL, 1);
-  spng_set_option(ctx.get(), SPNG_FILTER_CHOICE, SPNG_FILTER_CHOICE_UP);
-  spng_ihdr ihdr{};
-  ihdr.width = std::uint32_t(image.width);
-  ihdr.height = std::uint32_t(image.height);
-  ihdr.bit_depth = 8;
-  ihdr.color_type = SPNG_COLOR_TYPE_TRUECOLOR_ALPHA;
-  if (int e = spng_set_ihdr(ctx.get(), &ihdr)) fail(e);
-  if (int e = spng_encode_image(ctx.get(), image.rgba.data(), image.rgba.size(), SPNG_FMT_PNG, SPNG_ENCODE_FINALIZE))
-    fail(e);
-  std::size_t size = 0;
-  int error = 0;
-  std::unique_ptr<void, decltype(&std::free)> png(spng_get_png_buffer(ctx.get(), &size, &error), &std::free);
-  if (!png) fail(error);
-  const auto* bytes = static_cast<const std::uint8_t*>(png.get());
-  return {bytes, bytes + size};
+  const std::size_t stride = std::size_t(image.width) * 4;
+  std::vector<std::uint8_t> filtered((stride + 1) * std::size_t(image.height));
+  for (int y = 0; y < image.height; ++y) {
+    std::uint8_t* out = &filtered[std::size_t(y) * (stride + 1)];
+    const std::uint8_t* row = image.pixel(0, y);
+    out[0] = 1;  // filter type 1: sub
+    std::memcpy(out + 1, row, std::min<std::size_t>(4, stride));
+    for (std::size_t i = 4; i < stride; ++i) out[1 + i] = std::uint8_t(row[i] - row[i - 4]);
+  }
+  const std::unique_ptr<libdeflate_compressor, Compressor> compressor(libdeflate_alloc_compressor(1));
+  if (!compressor) throw Error("cannot encode a PNG: out of memory");
+  std::vector<std::uint8_t> idat(libdeflate_zlib_compress_bound(compressor.get(), filtered.size()));
+  const std::size_t size = libdeflate_zlib_compress(compressor.get(), filtered.data(), filtered.size(), idat.data(), idat.size());
+  if (size == 0) throw Error("cannot encode a " + std::to_string(image.width) + "x" + std::to_string(image.height) + " PNG");
+
+  std::vector<std::uint8_t> png = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  png.reserve(size + 64);
+  std::vector<std::uint8_t> header;
+  putBigEndian(header, std::uint32_t(image.width));
+  putBigEndian(header, std::uint32_t(image.height));
+  header.insert(header.end(), {8, 6, 0, 0, 0});  // 8 bits, RGBA, deflate, adaptive filtering, no interlace
+  putChunk(png, "IHDR", header.data(), header.size());
+  putChunk(png, "IDAT", idat.data(), size);
+  putChunk(png, "IEND", nullptr, 0);
+  return png;
 }
 
 void writePng(const std::filesystem::path& path, const Image& image) {
