@@ -14,6 +14,7 @@
 #include <optional>
 #include <sstream>
 #include <thread>
+#include <utility>
 
 #include <sys/mman.h>
 #include <sys/resource.h>
@@ -174,7 +175,13 @@ int runWork(const std::function<void(IsolatedWriter&)>& work, int resultFd) {
 IsolationOutcome outcomeOf(int code, int resultFd) {
   IsolationOutcome o;
   switch (code) {
-    case kFinished: o.kind = IsolationOutcome::Kind::Finished; o.payload = readWhole(resultFd); break;
+    case kFinished: {
+      o.kind = IsolationOutcome::Kind::Finished;
+      struct stat st{};
+      if (::fstat(resultFd, &st) != 0) throw Error(std::string("cannot read the isolated result: ") + std::strerror(errno));
+      o.payload = MappedBytes(resultFd, std::size_t(st.st_size));
+      break;
+    }
     case kRefused: o.kind = IsolationOutcome::Kind::Refused; o.message = asText(readWhole(resultFd)); break;
     case kFailed: o.kind = IsolationOutcome::Kind::Failed; o.message = asText(readWhole(resultFd)); break;
     case kOutOfMemory: o.kind = IsolationOutcome::Kind::OutOfMemory; break;
@@ -206,6 +213,34 @@ IsolationOutcome outcomeOf(int code, int resultFd) {
 }
 
 }  // namespace
+
+MappedBytes::MappedBytes(int fd, std::size_t size) : size_(size) {
+  if (size == 0) return;
+  mapping_ = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE, fd, 0);
+  if (mapping_ == MAP_FAILED) {
+    mapping_ = nullptr;
+    throw Error(std::string("cannot map the isolated result: ") + std::strerror(errno));
+  }
+  data_ = static_cast<const std::uint8_t*>(mapping_);
+}
+
+MappedBytes::~MappedBytes() {
+  if (mapping_) ::munmap(mapping_, size_);
+}
+
+MappedBytes::MappedBytes(MappedBytes&& other) noexcept
+    : data_(std::exchange(other.data_, nullptr)), size_(std::exchange(other.size_, 0)),
+      mapping_(std::exchange(other.mapping_, nullptr)) {}
+
+MappedBytes& MappedBytes::operator=(MappedBytes&& other) noexcept {
+  if (this != &other) {
+    if (mapping_) ::munmap(mapping_, size_);
+    data_ = std::exchange(other.data_, nullptr);
+    size_ = std::exchange(other.size_, 0);
+    mapping_ = std::exchange(other.mapping_, nullptr);
+  }
+  return *this;
+}
 
 void IsolatedWriter::write(const void* data, std::size_t size) {
   const auto* bytes = static_cast<const std::uint8_t*>(data);

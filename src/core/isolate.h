@@ -17,6 +17,28 @@ struct IsolationLimits {
   std::size_t outputBytes = std::size_t(1) << 30;  // what the child may hand back
 };
 
+// What the child handed back, mapped from its memory file rather than copied: a big model is not
+// held twice.
+class MappedBytes {
+ public:
+  MappedBytes() = default;
+  MappedBytes(int fd, std::size_t size);  // maps the first `size` bytes of `fd` read-only
+  ~MappedBytes();
+  MappedBytes(MappedBytes&& other) noexcept;
+  MappedBytes& operator=(MappedBytes&& other) noexcept;
+  MappedBytes(const MappedBytes&) = delete;
+  MappedBytes& operator=(const MappedBytes&) = delete;
+
+  const std::uint8_t* begin() const { return data_; }
+  const std::uint8_t* end() const { return data_ + size_; }
+  std::size_t size() const { return size_; }
+
+ private:
+  const std::uint8_t* data_ = nullptr;
+  std::size_t size_ = 0;
+  void* mapping_ = nullptr;
+};
+
 struct IsolationOutcome {
   enum class Kind {
     Finished,      // the work returned: `payload` holds what it wrote
@@ -28,7 +50,7 @@ struct IsolationOutcome {
     Crashed,       // it died: `message` names the signal and the last line it printed, if any
   };
   Kind kind = Kind::Crashed;
-  std::vector<std::uint8_t> payload;
+  MappedBytes payload;
   std::string message;
 };
 

@@ -31,7 +31,7 @@ ImportedModel importModel(const std::filesystem::path& path, const ImportOptions
   const std::string mib = std::to_string((limits.memoryBytes + (1 << 20) - 1) >> 20);
   const std::string where = path.string() + ": ";
   switch (outcome.kind) {
-    case IsolationOutcome::Kind::Finished: return readModel(outcome.payload);
+    case IsolationOutcome::Kind::Finished: return readModel({outcome.payload.begin(), outcome.payload.size()});
     case IsolationOutcome::Kind::Refused: throw InputError(outcome.message);
     case IsolationOutcome::Kind::Failed: throw InputError(where + "cannot read the model: " + outcome.message);
     case IsolationOutcome::Kind::OutOfMemory:
