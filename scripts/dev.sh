@@ -48,7 +48,7 @@ case "${1:-}" in
     build build all
     (cd build && ctest --output-on-failure -j "$jobs")
     echo "illum: the same suite under AddressSanitizer and UndefinedBehaviorSanitizer"
-    build build-asan all -DILLUM_SANITIZE=ON
+    build build-asan all -DILLUM_SANITIZE=ON -DILLUM_BUILD_BENCH=OFF
     (cd build-asan && ASAN_OPTIONS=detect_leaks=1 LSAN_OPTIONS=suppressions=$PWD/../tests/lsan.supp \
       UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j "$jobs")
     echo "illum: fuzzing (libFuzzer, ASan+UBSan) for a fixed budget"
