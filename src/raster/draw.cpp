@@ -2,6 +2,7 @@
 
 #include "raster/clip.h"
 #include "raster/fragment.h"
+#include "raster/labels.h"
 
 #include <algorithm>
 #include <cstring>
@@ -123,6 +124,8 @@ std::size_t setupTriangles(const FrameContext& frame, const Object& object, std:
   return out.size() - before;
 }
 
+namespace {
+
 // Pixels whose bytes differ from the cleared background's.
 std::size_t countPixelsUnlike(const Image& image, const Color4& background) {
   const std::uint8_t clear[4] = {toUnorm8(background.r), toUnorm8(background.g), toUnorm8(background.b),
@@ -130,6 +133,15 @@ std::size_t countPixelsUnlike(const Image& image, const Color4& background) {
   std::size_t n = 0;
   for (std::size_t i = 0; i < image.rgba.size(); i += 4) n += std::memcmp(&image.rgba[i], clear, 4) != 0;
   return n;
+}
+
+}  // namespace
+
+Image finishFrame(const Framebuffer& fb, const Scene& scene, RenderStats& stats) {
+  Image image = fb.toImage();
+  stats.pixelsDrawn = countPixelsUnlike(image, scene.background);
+  stats.labelsSkipped = !drawLabels(image, scene);
+  return image;
 }
 
 namespace {

@@ -52,7 +52,8 @@ void drawRecord(const DrawTarget& target, const DrawRecord& record, const PixelR
 // farthest to the nearest. Ties keep scene order.
 std::vector<const Object*> drawingOrder(const Scene& scene, const FrameContext& frame);
 
-// Pixels whose bytes differ from the cleared background's.
-std::size_t countPixelsUnlike(const Image& image, const Color4& background);
+// The finished picture: the framebuffer as an image, the pixels drawn counted (labels aside),
+// then the scene's labels drawn over it.
+Image finishFrame(const Framebuffer& fb, const Scene& scene, RenderStats& stats);
 
 }  // namespace illum

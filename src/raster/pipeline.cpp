@@ -8,7 +8,6 @@
 
 #include "raster/bin.h"
 #include "raster/draw.h"
-#include "raster/labels.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -100,9 +99,7 @@ Image renderScene(const Scene& scene, RenderStats* statsOut, PixelProbe* probe) 
     renderer.drawObject(*object, std::uint32_t(object - scene.objects.data()));
   renderer.flush();
   RenderStats stats = renderer.stats();
-  Image image = fb.toImage();
-  stats.pixelsDrawn = countPixelsUnlike(image, scene.background);
-  stats.labelsSkipped = !drawLabels(image, scene);
+  Image image = finishFrame(fb, scene, stats);
   if (statsOut) *statsOut = stats;
   return image;
 }

@@ -1,7 +1,6 @@
 #include "raster/reference/reference_pipeline.h"
 
 #include "raster/draw.h"
-#include "raster/labels.h"
 
 namespace illum {
 
@@ -22,9 +21,7 @@ Image renderSceneReference(const Scene& scene, RenderStats* statsOut) {
     stats.trianglesDrawn += setupTriangles(frame, *object, index, vertices, 0, object->mesh->triangleCount(), records);
     for (const DrawRecord& r : records) drawRecord(target, r, viewport, stats.fragmentsShaded);
   }
-  Image image = fb.toImage();
-  stats.pixelsDrawn = countPixelsUnlike(image, scene.background);
-  stats.labelsSkipped = !drawLabels(image, scene);
+  Image image = finishFrame(fb, scene, stats);
   if (statsOut) *statsOut = stats;
   return image;
 }
