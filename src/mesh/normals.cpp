@@ -53,22 +53,6 @@ struct PositionHash {
   }
 };
 
-struct CornerKey {
-  std::uint32_t position;
-  Vec3 normal;
-  Vec2 uv;
-  Vec4 color;
-  bool operator==(const CornerKey&) const = default;
-};
-struct CornerHash {
-  std::size_t operator()(const CornerKey& k) const {
-    const std::hash<Real> h;
-    return std::size_t(k.position) * 2654435761u ^ h(k.normal.x) * 73856093u ^ h(k.normal.y) * 19349663u ^
-           h(k.normal.z) * 83492791u ^ h(k.uv.x) * 3u ^ h(k.uv.y) * 5u ^ h(k.color.r) * 7u ^ h(k.color.g) * 11u ^
-           h(k.color.b) * 13u;
-  }
-};
-
 // Copies vertex `from` of `src` (position, uv, colour) to the end of `dst` with normal `n`.
 std::uint32_t appendVertex(const Mesh& src, std::uint32_t from, const Vec3& n, Mesh& dst) {
   dst.positions.push_back(src.positions[from]);
@@ -102,6 +86,7 @@ void generateCreaseNormals(Mesh& mesh, Real creaseAngleDegrees) {
   const std::size_t triangles = mesh.indices.size() / 3;
   // Weld by position so that faces meeting at split vertices (uv seams, STL soups) still share.
   std::unordered_map<PositionKey, std::uint32_t, PositionHash> ids;
+  ids.reserve(mesh.positions.size());
   std::vector<std::uint32_t> positionId(mesh.positions.size());
   for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
     const Vec3& p = mesh.positions[i];
@@ -130,8 +115,14 @@ void generateCreaseNormals(Mesh& mesh, Real creaseAngleDegrees) {
   const Real cosCrease = std::cos(glm::radians(glm::clamp(creaseAngleDegrees, Real(0), Real(180))));
   Mesh out;
   out.positions.reserve(mesh.positions.size());
-  // Corners at one position with the same normal, uv and colour share one new vertex.
-  std::unordered_map<CornerKey, std::uint32_t, CornerHash> corners;
+  out.normals.reserve(mesh.positions.size());
+  out.indices.reserve(mesh.indices.size());
+  // Corners at one position with the same normal, uv and colour share one new vertex. The new
+  // vertices of each welded position form a short list (head per position, next per vertex),
+  // searched by comparing the three attributes exactly.
+  constexpr std::uint32_t kNone = ~std::uint32_t(0);
+  std::vector<std::uint32_t> head(ids.size(), kNone), next;
+  next.reserve(mesh.positions.size());
   for (std::size_t k = 0; k < mesh.indices.size(); ++k) {
     const std::size_t f = k / 3;
     const std::uint32_t v = mesh.indices[k];
@@ -143,10 +134,18 @@ void generateCreaseNormals(Mesh& mesh, Real creaseAngleDegrees) {
     }
     const Real len = glm::length(sum);
     const Vec3 n = len > Real(1e-20) ? sum / len : (faceN[f] != Vec3(0) ? faceN[f] : Vec3(0, 0, 1));
-    const CornerKey key{pid, n, mesh.uvs.empty() ? Vec2(0) : mesh.uvs[v], mesh.colors.empty() ? Vec4(0) : mesh.colors[v]};
-    auto [it, inserted] = corners.try_emplace(key, 0);
-    if (inserted) it->second = appendVertex(mesh, v, n, out);
-    out.indices.push_back(it->second);
+    const Vec2 uv = mesh.uvs.empty() ? Vec2(0) : mesh.uvs[v];
+    const Vec4 color = mesh.colors.empty() ? Vec4(0) : mesh.colors[v];
+    std::uint32_t found = head[pid];
+    while (found != kNone && !(out.normals[found] == n && (mesh.uvs.empty() || out.uvs[found] == uv) &&
+                               (mesh.colors.empty() || out.colors[found] == color)))
+      found = next[found];
+    if (found == kNone) {
+      found = appendVertex(mesh, v, n, out);
+      next.push_back(head[pid]);
+      head[pid] = found;
+    }
+    out.indices.push_back(found);
   }
   mesh = std::move(out);
 }
