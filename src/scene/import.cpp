@@ -39,6 +39,29 @@ std::string lowerExtension(const fs::path& p) {
   return e;
 }
 
+// Vertices no triangle uses (left over from points, lines or an exporter) are dropped, so that they
+// neither frame the picture nor cost memory; assimp's JoinIdenticalVertices used to do this.
+void dropUnusedVertices(Mesh& mesh) {
+  constexpr std::uint32_t kUnused = ~std::uint32_t(0);
+  std::vector<std::uint32_t> remap(mesh.positions.size(), kUnused);
+  for (std::uint32_t i : mesh.indices) remap[i] = 0;
+  std::uint32_t kept = 0;
+  for (std::uint32_t& r : remap)
+    if (r != kUnused) r = kept++;
+  if (kept == mesh.positions.size()) return;
+  const auto compact = [&](auto& attribute) {
+    if (attribute.empty()) return;
+    for (std::size_t i = 0; i < remap.size(); ++i)
+      if (remap[i] != kUnused) attribute[remap[i]] = attribute[i];
+    attribute.resize(kept);
+  };
+  compact(mesh.positions);
+  compact(mesh.normals);
+  compact(mesh.uvs);
+  compact(mesh.colors);
+  for (std::uint32_t& i : mesh.indices) i = remap[i];
+}
+
 // One assimp mesh as an illum mesh, with normals chosen by `options`.
 Mesh convertMesh(const aiMesh& m, const fs::path& path, const ImportOptions& options, bool normalsArePerFace) {
   const std::string where = path.string() + ": mesh \"" + m.mName.C_Str() + "\"";
@@ -80,6 +103,10 @@ Mesh convertMesh(const aiMesh& m, const fs::path& path, const ImportOptions& opt
     }
   }
 
+  dropUnusedVertices(mesh);
+  // Usable means every vertex a triangle uses has a finite, non-zero normal (stored as 0 if not).
+  if (m.mNormals)
+    fileNormalsUsable = std::none_of(mesh.normals.begin(), mesh.normals.end(), [](const Vec3& n) { return n == Vec3(0); });
   switch (options.normals) {
     case NormalMode::Flat: generateFlatNormals(mesh); break;
     case NormalMode::Smooth: generateCreaseNormals(mesh, 180); break;
@@ -339,7 +366,7 @@ ImportedModel importModelInProcess(const fs::path& path, const ImportOptions& op
                      withThousands(options.limits.maxTriangles) + " triangles (raise it with --max-triangles)");
   const std::string nonSurfaces = describeNonSurfaces(*scene);
   const bool onlyPointsAndLines = nonSurfaces.find("only") != std::string::npos;
-  scene = importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_SortByPType);
+  scene = importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_SortByPType);
   if (!scene && onlyPointsAndLines) throw InputError(path.string() + ": " + nonSurfaces);  // SortByPType removed them all
   if (!scene) readFailed(path, importer);
   if ((scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !scene->mRootNode || scene->mNumMeshes == 0)
