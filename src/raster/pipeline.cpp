@@ -18,8 +18,8 @@ namespace illum {
 namespace {
 
 constexpr std::size_t kVertexGrain = 4096;       // vertices per parallel task
-constexpr std::size_t kTriangleChunk = 2048;     // triangles set up per parallel task
-constexpr std::size_t kBatchRecords = 1 << 15;   // records gathered before they are binned and drawn
+constexpr std::size_t kTriangleChunk = 1024;     // triangles set up per parallel task
+constexpr std::size_t kBatchRecords = 1 << 13;   // records gathered before they are binned and drawn
 
 class BinnedRenderer {
  public:
