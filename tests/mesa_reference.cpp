@@ -221,8 +221,40 @@ MesaSession::MesaSession(const Scene& scene, MesaPath path)
     if (scene.lightModel.twoSided) glEnable(GL_VERTEX_PROGRAM_TWO_SIDE);
   }
 
+  if (scene.blend) {
+    glEnable(GL_BLEND);
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  }
+  // Vertex colours replace the ambient and diffuse material (GL_COLOR_MATERIAL), as illum does.
+  glColorMaterial(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE);
+
   // Every mesh in buffer objects once, so that a frame is only the draws (what an application does).
   for (const Object& object : scene.objects) {
+    const Mesh& m = *object.mesh;
+    std::vector<GLfloat> colors, uvs;
+    for (const Vec4& c : m.colors) colors.insert(colors.end(), {GLfloat(c.r), GLfloat(c.g), GLfloat(c.b), GLfloat(c.a)});
+    for (const Vec2& t : m.uvs) uvs.insert(uvs.end(), {GLfloat(t.x), GLfloat(t.y)});
+    colors_.push_back(std::move(colors));
+    uvs_.push_back(std::move(uvs));
+    GLuint texture = 0;
+    if (object.diffuseTexture && !m.uvs.empty()) {
+      // GL_MODULATE with GL_LINEAR_MIPMAP_LINEAR and GL_REPEAT; GL's rows run bottom to top.
+      const Image image = object.diffuseTexture->baseImage();
+      std::vector<std::uint8_t> rows(image.rgba.size());
+      const std::size_t row = std::size_t(image.width) * 4;
+      for (int y = 0; y < image.height; ++y)
+        std::memcpy(&rows[std::size_t(y) * row], image.pixel(0, image.height - 1 - y), row);
+      glGenTextures(1, &texture);
+      glBindTexture(GL_TEXTURE_2D, texture);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+      glTexParameteri(GL_TEXTURE_2D, GL_GENERATE_MIPMAP, GL_TRUE);
+      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width, image.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, rows.data());
+      glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+    }
+    textures_.push_back(texture);
     const Mesh& mesh = *object.mesh;
     std::vector<GLfloat> interleaved;
     interleaved.reserve(mesh.positions.size() * 6);
@@ -243,6 +275,8 @@ MesaSession::MesaSession(const Scene& scene, MesaPath path)
 }
 
 MesaSession::~MesaSession() {
+  for (GLuint t : textures_)
+    if (t) glDeleteTextures(1, &t);
   for (const auto& [vertices, indices] : meshBuffers_) {
     const GLuint buffers[2] = {vertices, indices};
     glDeleteBuffers(2, buffers);
@@ -262,7 +296,28 @@ void MesaSession::draw() {
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, meshBuffers_[k].second);
     glVertexPointer(3, GL_FLOAT, 6 * sizeof(GLfloat), nullptr);
     glNormalPointer(GL_FLOAT, 6 * sizeof(GLfloat), reinterpret_cast<const void*>(3 * sizeof(GLfloat)));
+    glBindBuffer(GL_ARRAY_BUFFER, 0);  // colours and uvs from client memory
+    const bool colors = !colors_[k].empty(), textured = textures_[k] != 0;
+    if (colors) {
+      glEnable(GL_COLOR_MATERIAL);
+      glEnableClientState(GL_COLOR_ARRAY);
+      glColorPointer(4, GL_FLOAT, 0, colors_[k].data());
+    }
+    if (textured) {
+      glEnable(GL_TEXTURE_2D);
+      glBindTexture(GL_TEXTURE_2D, textures_[k]);
+      glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+      glTexCoordPointer(2, GL_FLOAT, 0, uvs_[k].data());
+    }
     glDrawElements(GL_TRIANGLES, GLsizei(object.mesh->indices.size()), GL_UNSIGNED_INT, nullptr);
+    if (colors) {
+      glDisableClientState(GL_COLOR_ARRAY);
+      glDisable(GL_COLOR_MATERIAL);
+    }
+    if (textured) {
+      glDisableClientState(GL_TEXTURE_COORD_ARRAY);
+      glDisable(GL_TEXTURE_2D);
+    }
   }
   glFinish();
 }

@@ -37,6 +37,8 @@ class MesaSession {
   void* context_ = nullptr;
   unsigned program_ = 0;
   std::vector<std::pair<unsigned, unsigned>> meshBuffers_;  // vertex and index buffer per object
+  std::vector<std::vector<float>> colors_, uvs_;             // per object, from client memory
+  std::vector<unsigned> textures_;                          // per object, 0 for none
 };
 
 // Renders with Mesa; row 0 at the top, like illum's images.
