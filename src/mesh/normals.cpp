@@ -3,7 +3,8 @@
 
 #include <cmath>
 #include <cstring>
-#include <unordered_map>
+#include <algorithm>
+#include <cstdint>
 
 namespace illum {
 
@@ -42,16 +43,43 @@ std::vector<Vec3> generateSmoothNormals(const std::vector<Vec3>& positions,
 namespace illum {
 namespace {
 
-struct PositionKey {
-  Real x, y, z;
-  bool operator==(const PositionKey&) const = default;
-};
-struct PositionHash {
-  std::size_t operator()(const PositionKey& k) const {
-    const std::hash<Real> h;
-    return h(k.x) * 73856093u ^ h(k.y) * 19349663u ^ h(k.z) * 83492791u;
+// An id per distinct position, numbered in order of first appearance: an open-addressing table
+// (linear probing over a power-of-two array) keyed by the coordinates' bits, so that equal
+// positions, and only they, share an id (−0 counts as +0).
+std::vector<std::uint32_t> weldByPosition(const std::vector<Vec3>& positions) {
+  constexpr std::uint32_t kEmpty = ~std::uint32_t(0);
+  std::size_t capacity = 16;
+  while (capacity < positions.size() * 2) capacity *= 2;
+  std::vector<std::uint32_t> slots(capacity, kEmpty);  // the first vertex seen at each position
+  std::vector<std::uint32_t> ids(positions.size());
+  std::vector<std::uint32_t> idOfFirst(positions.size(), 0);
+  std::uint32_t next = 0;
+  const auto bits = [](Real r) {
+    if (r == 0) r = 0;  // −0 is the same place as +0
+    std::uint64_t u = 0;
+    std::memcpy(&u, &r, sizeof r);
+    return u;
+  };
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    const Vec3& p = positions[i];
+    std::uint64_t h = bits(p.x) * 0x9E3779B97F4A7C15ull ^ bits(p.y) * 0xC2B2AE3D27D4EB4Full ^ bits(p.z) * 0x165667B19E3779F9ull;
+    h ^= h >> 29;
+    for (std::size_t s = std::size_t(h) & (capacity - 1);; s = (s + 1) & (capacity - 1)) {
+      const std::uint32_t v = slots[s];
+      if (v == kEmpty) {
+        slots[s] = std::uint32_t(i);
+        idOfFirst[i] = ids[i] = next++;
+        break;
+      }
+      const Vec3& q = positions[v];
+      if (bits(q.x) == bits(p.x) && bits(q.y) == bits(p.y) && bits(q.z) == bits(p.z)) {
+        ids[i] = idOfFirst[v];
+        break;
+      }
+    }
   }
-};
+  return ids;
+}
 
 // Copies vertex `from` of `src` (position, uv, colour) to the end of `dst` with normal `n`.
 std::uint32_t appendVertex(const Mesh& src, std::uint32_t from, const Vec3& n, Mesh& dst) {
@@ -85,13 +113,8 @@ void generateFlatNormals(Mesh& mesh) {
 void generateCreaseNormals(Mesh& mesh, Real creaseAngleDegrees) {
   const std::size_t triangles = mesh.indices.size() / 3;
   // Weld by position so that faces meeting at split vertices (uv seams, STL soups) still share.
-  std::unordered_map<PositionKey, std::uint32_t, PositionHash> ids;
-  ids.reserve(mesh.positions.size());
-  std::vector<std::uint32_t> positionId(mesh.positions.size());
-  for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
-    const Vec3& p = mesh.positions[i];
-    positionId[i] = ids.try_emplace(PositionKey{p.x, p.y, p.z}, std::uint32_t(ids.size())).first->second;
-  }
+  const std::vector<std::uint32_t> positionId = weldByPosition(mesh.positions);
+  const std::size_t welded = positionId.empty() ? 0 : *std::max_element(positionId.begin(), positionId.end()) + 1;
   // Face normals and corner angles.
   std::vector<Vec3> faceN(triangles);
   std::vector<Real> cornerAngle(triangles * 3);
@@ -106,7 +129,7 @@ void generateCreaseNormals(Mesh& mesh, Real creaseAngleDegrees) {
     }
   }
   // Faces around each welded position (compressed rows).
-  std::vector<std::uint32_t> start(ids.size() + 1, 0), faces(triangles * 3);
+  std::vector<std::uint32_t> start(welded + 1, 0), faces(triangles * 3);
   for (std::uint32_t v : mesh.indices) ++start[positionId[v] + 1];
   for (std::size_t i = 1; i < start.size(); ++i) start[i] += start[i - 1];
   std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
@@ -121,7 +144,7 @@ void generateCreaseNormals(Mesh& mesh, Real creaseAngleDegrees) {
   // vertices of each welded position form a short list (head per position, next per vertex),
   // searched by comparing the three attributes exactly.
   constexpr std::uint32_t kNone = ~std::uint32_t(0);
-  std::vector<std::uint32_t> head(ids.size(), kNone), next;
+  std::vector<std::uint32_t> head(welded, kNone), next;
   next.reserve(mesh.positions.size());
   for (std::size_t k = 0; k < mesh.indices.size(); ++k) {
     const std::size_t f = k / 3;

@@ -112,5 +112,22 @@ TEST(Primitives, GlutSizes) {
   EXPECT_NEAR(widestBody, 1, 1e-3);
 }
 
+// A triangle soup (every triangle with vertices of its own, as STL stores them) is welded by
+// position, −0 and +0 alike: the shared vertices get one smooth normal.
+TEST(CreaseNormals, SoupIsWeldedByPositionIncludingSignedZeros) {
+  Mesh soup;
+  // Two triangles folded 60° along the edge from (0,0,0) to (0,1,0); the second spells 0 as −0.
+  soup.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {-0.0f, 0, -0.0f}, {0, 1, -0.0f}, {-0.5f, 0, 0.866025f}};
+  soup.indices = {0, 1, 2, 3, 4, 5};
+  generateCreaseNormals(soup, 90);
+  // The edge's two positions each become one vertex shared by both triangles.
+  EXPECT_EQ(soup.positions.size(), 4u);
+  const Vec3 n = soup.normals[soup.indices[0]];
+  EXPECT_EQ(soup.indices[0], soup.indices[3]);
+  EXPECT_NEAR(glm::length(n), 1, 1e-6);
+  EXPECT_GT(n.x, 0.2f);  // between the two faces' normals, (0,0,1) and (0.87,0,0.5)
+  EXPECT_GT(n.z, 0.6f);
+}
+
 }  // namespace
 }  // namespace illum
