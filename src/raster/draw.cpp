@@ -48,44 +48,66 @@ void recordProbe(const DrawTarget& target, const Object& object, std::size_t obj
   if (back) p.eyeNormal = -p.eyeNormal;
 }
 
-}  // namespace
-
-void drawRecord(const DrawTarget& target, const DrawRecord& record, const PixelRect& rect, std::size_t& fragments) {
+// One record's pixels with every per-draw choice fixed at compile time (the shading frequency,
+// texturing, blending, a watched pixel), so the pixel loop never branches on them.
+template <Shading kShading, bool kTextured, bool kBlend, bool kProbe>
+void drawPixels(const DrawTarget& target, const DrawRecord& record, const PixelRect& rect, std::size_t& fragments) {
   const Object& object = target.scene.objects[record.object];
-  const std::size_t objectIndex = record.object, triangle = record.triangle;
   const TriangleSetup& t = record.setup;
-  const ProvokingVertex& flat = record.flat;
   const FrameContext& frame = target.frame;
   const bool back = frame.lightModel.twoSided && !t.frontFacing;
   const bool vertexColors = !object.mesh->colors.empty();
-  const Texture* texture = object.mesh->uvs.empty() ? nullptr : object.diffuseTexture.get();
-  const int probeRow = target.probe ? frame.height - 1 - target.probe->y : -1;  // GL rows run bottom up
+  const Texture* texture = kTextured ? object.diffuseTexture.get() : nullptr;
+  const Color4 flatColor = back ? record.flat.back : record.flat.front;
+  const int probeRow = kProbe ? frame.height - 1 - target.probe->y : -1;  // GL rows run bottom up
   rasterizeTriangle(t, rect, [&](int x, int y, Real l0, Real l1, Real l2) {
     const Real z = l0 * t.z[0] + l1 * t.z[1] + l2 * t.z[2];
     if (!target.fb.depthTest(x, y, z)) return;
     ++fragments;
     Color4 c;
-    switch (frame.shading) {
-      case Shading::Flat:
-        c = back ? flat.back : flat.front;
-        break;
-      case Shading::Gouraud:
-        c = shadeGouraudFragment(frame, t, perspectiveWeights(t, l0, l1, l2));
-        break;
-      case Shading::Phong:
-        c = shadePhongFragment(frame, object.material, vertexColors, t, perspectiveWeights(t, l0, l1, l2));
-        break;
-    }
+    if constexpr (kShading == Shading::Flat) c = flatColor;
+    else if constexpr (kShading == Shading::Gouraud) c = shadeGouraudFragment(frame, t, perspectiveWeights(t, l0, l1, l2));
+    else c = shadePhongFragment(frame, object.material, vertexColors, t, perspectiveWeights(t, l0, l1, l2));
     const Color4 lit = c;
     // GL_MODULATE: the lit colour times the texel, alpha included.
     Vec4 texel(1);
-    if (texture) c *= (texel = sampleDiffuseTexture(*texture, t, l0, l1, l2));
-    if (frame.blend) target.fb.blendColor(x, y, c);
+    if constexpr (kTextured) c *= (texel = sampleDiffuseTexture(*texture, t, l0, l1, l2));
+    if constexpr (kBlend) target.fb.blendColor(x, y, c);
     else target.fb.writeColor(x, y, c);
-    if (y == probeRow && x == target.probe->x)
-      recordProbe(target, object, objectIndex, triangle, t, flat, perspectiveWeights(t, l0, l1, l2), lit,
-                  texture ? &texel : nullptr, c);
+    if constexpr (kProbe)
+      if (y == probeRow && x == target.probe->x)
+        recordProbe(target, object, record.object, record.triangle, t, record.flat, perspectiveWeights(t, l0, l1, l2),
+                    lit, kTextured ? &texel : nullptr, c);
   });
+}
+
+template <Shading kShading, bool kTextured, bool kBlend>
+void drawPixels(const DrawTarget& target, const DrawRecord& record, const PixelRect& rect, std::size_t& fragments) {
+  if (target.probe) drawPixels<kShading, kTextured, kBlend, true>(target, record, rect, fragments);
+  else drawPixels<kShading, kTextured, kBlend, false>(target, record, rect, fragments);
+}
+
+template <Shading kShading, bool kTextured>
+void drawPixels(const DrawTarget& target, const DrawRecord& record, const PixelRect& rect, std::size_t& fragments) {
+  if (target.frame.blend) drawPixels<kShading, kTextured, true>(target, record, rect, fragments);
+  else drawPixels<kShading, kTextured, false>(target, record, rect, fragments);
+}
+
+template <Shading kShading>
+void drawPixels(const DrawTarget& target, const DrawRecord& record, const PixelRect& rect, std::size_t& fragments) {
+  const Object& object = target.scene.objects[record.object];
+  if (object.diffuseTexture && !object.mesh->uvs.empty()) drawPixels<kShading, true>(target, record, rect, fragments);
+  else drawPixels<kShading, false>(target, record, rect, fragments);
+}
+
+}  // namespace
+
+void drawRecord(const DrawTarget& target, const DrawRecord& record, const PixelRect& rect, std::size_t& fragments) {
+  switch (target.frame.shading) {
+    case Shading::Flat: return drawPixels<Shading::Flat>(target, record, rect, fragments);
+    case Shading::Gouraud: return drawPixels<Shading::Gouraud>(target, record, rect, fragments);
+    case Shading::Phong: return drawPixels<Shading::Phong>(target, record, rect, fragments);
+  }
 }
 
 std::size_t setupTriangles(const FrameContext& frame, const Object& object, std::uint32_t objectIndex,
