@@ -155,46 +155,48 @@ void checkStl(const fs::path& path, u64 fileSize, const Limits& limits) {
   checkDeclaredBytes(path, add(84, mul(count, 50)), fileSize, withThousands(count) + " triangles");
 }
 
-// AC3D: "subdiv N" asks for N rounds of subdivision, each quadrupling the surfaces.
-void checkAc3d(const fs::path& path, const Limits& limits) {
+// Calls `each(keyword, rest of the line)` for every line of a text format.
+template <class Fn>
+void forEachLine(const fs::path& path, Fn&& each) {
   std::ifstream in(path);
   std::string line;
-  u64 subdiv = 0, triangles = 0;
   while (std::getline(in, line)) {
     std::istringstream words(line);
     std::string keyword;
     words >> keyword;
+    each(keyword, words);
+  }
+}
+
+// base·4^n, saturating.
+u64 timesPowerOfFour(u64 base, u64 n) {
+  for (u64 i = 0; i < n && base != kSaturated; ++i) base = mul(base, 4);
+  return base;
+}
+
+// AC3D: "subdiv N" asks for N rounds of subdivision, each quadrupling the surfaces.
+void checkAc3d(const fs::path& path, const Limits& limits) {
+  u64 subdiv = 0, triangles = 0;
+  forEachLine(path, [&](const std::string& keyword, std::istringstream& words) {
     if (keyword == "OBJECT") subdiv = 0;
     else if (keyword == "subdiv") words >> subdiv;
     else if (keyword == "numsurf" && subdiv > 0) {
       u64 surfaces = 0;
       words >> surfaces;
-      u64 factor = 1;
-      for (u64 i = 0; i < subdiv && factor != kSaturated; ++i) factor = mul(factor, 4);
-      triangles = add(triangles, mul(mul(surfaces, 2), factor));
+      triangles = add(triangles, timesPowerOfFour(mul(surfaces, 2), subdiv));
     }
-  }
+  });
   checkTriangles(path, triangles, limits, "AC3D subdivision");
 }
 
 // NFF: "tess N" sets how finely later spheres are made: an icosahedron subdivided N times,
 // 20·4^N triangles each.
 void checkNff(const fs::path& path, const Limits& limits) {
-  std::ifstream in(path);
-  std::string line;
   u64 tess = 4, triangles = 0;
-  while (std::getline(in, line)) {
-    std::istringstream words(line);
-    std::string keyword;
-    words >> keyword;
-    if (keyword == "tess") {
-      words >> tess;
-    } else if (keyword == "s") {
-      u64 each = 20;
-      for (u64 i = 0; i < tess && each != kSaturated; ++i) each = mul(each, 4);
-      triangles = add(triangles, each);
-    }
-  }
+  forEachLine(path, [&](const std::string& keyword, std::istringstream& words) {
+    if (keyword == "tess") words >> tess;
+    else if (keyword == "s") triangles = add(triangles, timesPowerOfFour(20, tess));
+  });
   checkTriangles(path, triangles, limits, "NFF tessellation");
 }
 
