@@ -19,7 +19,6 @@ namespace illum::cli {
 namespace {
 
 namespace fs = std::filesystem;
-using RenderOptions = SceneOptions;
 
 bool isSceneFile(const std::string& path) {
   std::string ext = fs::path(path).extension().string();
@@ -40,7 +39,7 @@ Vec3 parseUp(const std::string& text) {
   throw InputError("--up: expected one of +X, -X, +Y, -Y, +Z, -Z, got \"" + text + "\"");
 }
 
-void parseResolution(const std::string& text, RenderOptions& o) {
+void parseResolution(const std::string& text, SceneOptions& o) {
   const auto comma = text.find(',');
   const auto dimension = [&](const std::string& part) {
     const Real v = parseNumber("--resolution", part, 1, 16384);
@@ -62,7 +61,7 @@ Real finitePositive(const char* option, double v) {
   return Real(v);
 }
 
-ImportOptions importOptions(const RenderOptions& o) {
+ImportOptions importOptions(const SceneOptions& o) {
   ImportOptions io;
   io.limits = o.limits;
   if (!o.normals.empty()) {
@@ -80,7 +79,7 @@ ImportOptions importOptions(const RenderOptions& o) {
   return io;
 }
 
-ViewOptions viewOptions(const RenderOptions& o) {
+ViewOptions viewOptions(const SceneOptions& o) {
   ViewOptions v;
   if (!o.up.empty()) v.up = parseUp(o.up);
   const auto angle = [](const char* option, double degrees) {
@@ -100,7 +99,7 @@ ViewOptions viewOptions(const RenderOptions& o) {
 }
 
 // Options that place the camera explicitly apply to scene files too.
-void applyExplicitCamera(const RenderOptions& o, Camera& cam) {
+void applyExplicitCamera(const SceneOptions& o, Camera& cam) {
   if (!o.cameraPosition.empty()) cam.eye = parseVec3("--camera-position", o.cameraPosition);
   if (!o.cameraFocalPoint.empty()) cam.center = parseVec3("--camera-focal-point", o.cameraFocalPoint);
   if (!o.cameraViewUp.empty()) cam.up = parseVec3("--camera-view-up", o.cameraViewUp);
@@ -114,7 +113,7 @@ void applyExplicitCamera(const RenderOptions& o, Camera& cam) {
 
 // The camera the options made, checked by the rules scene cameras meet; the message names the
 // options that set the faulty part (or says the file's framing did).
-void validateCamera(const RenderOptions& o, const Camera& cam, Real aspect) {
+void validateCamera(const SceneOptions& o, const Camera& cam, Real aspect) {
   const CameraFault fault = cameraFault(cam, aspect);
   if (fault == CameraFault::None) return;
   std::vector<std::string> named;
@@ -141,7 +140,7 @@ void validateCamera(const RenderOptions& o, const Camera& cam, Real aspect) {
 }
 
 // Options that cannot both be meant.
-void rejectConflicts(const RenderOptions& o) {
+void rejectConflicts(const SceneOptions& o) {
   if (!o.resolution.empty() && (o.width || o.height))
     throw InputError("--resolution: give the size either as --resolution W,H or as --width and --height, not both");
   if (o.noBackground && !o.background.empty())
@@ -150,7 +149,7 @@ void rejectConflicts(const RenderOptions& o) {
     throw InputError("--camera-view-angle: an orthographic camera has no view angle; drop it or --orthographic");
 }
 
-Scene modelScene(const RenderOptions& o, ImportedModel& model) {
+Scene modelScene(const SceneOptions& o, ImportedModel& model) {
   Scene s;
   s.width = o.width.value_or(1000);
   s.height = o.height.value_or(600);
@@ -178,7 +177,7 @@ Scene modelScene(const RenderOptions& o, ImportedModel& model) {
   return s;
 }
 
-void rejectModelOnlyOptions(const RenderOptions& o) {
+void rejectModelOnlyOptions(const SceneOptions& o) {
   const auto reject = [](bool given, const char* name) {
     if (given) throw InputError(std::string(name) + ": applies to model files, not scene files (the scene sets it)");
   };
