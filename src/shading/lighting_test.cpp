@@ -62,8 +62,8 @@ TEST(Lambert, NoLightFromBehindAndNoSpecular) {
 }
 
 TEST(Lambert, NamedTermClampsNegativeCosines) {
-  EXPECT_EQ(Fd_Lambert(Real(-0.3)), 0);
-  EXPECT_NEAR(Fd_Lambert(Real(0.25)), 0.25, kTol);
+  EXPECT_EQ(Fd_LambertCosine(Real(-0.3)), 0);
+  EXPECT_NEAR(Fd_LambertCosine(Real(0.25)), 0.25, kTol);
 }
 
 // The exercise at the end of the "Colored light" part of seed 003: D = 1, θ(N,L) = 30°,

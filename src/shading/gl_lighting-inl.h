@@ -1,0 +1,145 @@
+// How a GL material answers (OpenGL 2.1 §2.14.1), over lanes, and the one composition of the
+// equation:
+//   c = e_cm + a_cm·a_cs + Σ_i att_i · spot_i · [a_cm·a_cli + (n⊙VP)·d_cm·d_cli + f_i·(n⊙ĥ)^s·s_cm·s_cli]
+// per channel in eye space. The vertex stage, the per-pixel kernels, the reference pipeline,
+// `illum eval` and `--debug-pixel` all come here; the recorder (kRecord) writes every
+// intermediate of lane 0 without changing what is computed.
+
+#if defined(ILLUM_SHADING_GL_LIGHTING_INL_H_) == defined(HWY_TARGET_TOGGLE)
+#ifdef ILLUM_SHADING_GL_LIGHTING_INL_H_
+#undef ILLUM_SHADING_GL_LIGHTING_INL_H_
+#else
+#define ILLUM_SHADING_GL_LIGHTING_INL_H_
+#endif
+
+#include <illum/lighting.h>
+
+#include "shading/brdf-inl.h"
+#include "shading/light_sample-inl.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace illum::HWY_NAMESPACE {
+
+// The surface at each lane, in eye space: N the unit normal of the side being lit (already −N for
+// a back face), V the unit vector towards the viewer.
+template <class V>
+struct SurfaceL {
+  Vec3L<V> P, N, toViewer;
+};
+
+// The material colours that may vary per lane: GL_COLOR_MATERIAL(GL_AMBIENT_AND_DIFFUSE) puts the
+// vertex colour in both. Specular, emission and shininess are the object's.
+template <class V>
+struct MaterialColorsL {
+  Vec3L<V> ambient, diffuse;
+  V alpha;  // the diffuse alpha, which the lit colour carries
+};
+
+template <class V>
+struct TermsL {
+  Vec3L<V> emission, ambient, diffuse, specular;
+};
+
+template <class D, class V = hn::VFromD<D>>
+HWY_INLINE MaterialColorsL<V> UniformColors(D d, const Material& m) {
+  return {Broadcast(d, Vec3(m.ambient)), Broadcast(d, Vec3(m.diffuse)), hn::Set(d, m.diffuse.a)};
+}
+
+// The direction to the viewer: (0,0,1) for GL's infinite viewer; with GL_LIGHT_MODEL_LOCAL_VIEWER
+// towards the eye at the origin (a point at the eye itself takes the infinite viewer's).
+template <class D, class V = hn::VFromD<D>>
+HWY_INLINE Vec3L<V> ToViewer(D d, const Vec3L<V>& P, bool localViewer) {
+  const Vec3L<V> infinite = Broadcast(d, Vec3(0, 0, 1));
+  if (!localViewer) return infinite;
+  const V len = Length(P);
+  const auto away = len > hn::Zero(d);
+  return Select(away, -P / hn::IfThenElse(away, len, hn::Set(d, Real(1))), infinite);
+}
+
+// Emission and the light model's global ambient: the terms before any light.
+template <class D, class V = hn::VFromD<D>>
+HWY_INLINE TermsL<V> TermsWithoutLights(D d, const LightModel& lightModel, const Material& material,
+                                        const MaterialColorsL<V>& colors) {
+  const Vec3L<V> zero = Broadcast(d, Vec3(0));
+  return {Broadcast(d, Vec3(material.emission)), Mul(Broadcast(d, lightModel.ambient), colors.ambient), zero, zero};
+}
+
+// One light's bracket, attenuation and spot applied, added to `terms`.
+template <bool kRecord, class D, class V = hn::VFromD<D>>
+HWY_INLINE void AccumulateGlLight(D d, TermsL<V>& terms, const EyeLight& light, const Material& material,
+                                  const MaterialColorsL<V>& colors, LightingModel model, const SurfaceL<V>& s,
+                                  LightDetail* record) {
+  // Where is the light.
+  const LightSample<V> ls = SampleLight(d, light, s.P, s.N);
+  const V scale = ls.attenuation * ls.spot;
+  const V NoL = Dot(s.N, ls.L);
+  if constexpr (kRecord) {
+    record->positional = light.isPositional();
+    record->L = Lane0(ls.L);
+    record->distance = hn::GetLane(ls.distance);
+    record->attenuation = hn::GetLane(ls.attenuation);
+    record->spot = hn::GetLane(ls.spot);
+    record->NoL = hn::GetLane(NoL);
+  } else if (hn::AllTrue(d, scale == hn::Zero(d))) {
+    return;  // out of every lane's cone, or attenuated to nothing
+  }
+
+  // How the surface answers: ambient, Lambert's diffuse and the model's specular lobe, the last
+  // only where N·L > 0 (f_i = 0: no highlight without direct light).
+  const Vec3L<V> ambient = Mul(scale * colors.ambient, Broadcast(d, light.ambient));
+  const Vec3L<V> diffuse = Mul((scale * Fd_LambertCosine(NoL)) * colors.diffuse, Broadcast(d, light.diffuse));
+  const auto lit = NoL > hn::Zero(d);
+  V lobe = hn::Zero(d);
+  if (model == LightingModel::BlinnPhong && (kRecord || !hn::AllFalse(d, lit))) {
+    const Vec3L<V> H = ls.L + s.toViewer;
+    const V len = Length(H);
+    // L = −V (up to rounding) leaves H undefined; illum takes N·H = 0 (so only 0^0 = 1 survives).
+    const auto defined = len > hn::Set(d, Real(1e-6));
+    const V safeLen = hn::IfThenElse(defined, len, hn::Set(d, Real(1)));
+    const V NoH = hn::IfThenElseZero(defined, Dot(s.N, H) / safeLen);
+    lobe = hn::IfThenElseZero(lit, Fs_BlinnPhong(d, NoH, material.shininess));
+    if constexpr (kRecord) {
+      record->H = hn::GetLane(len) > Real(1e-6) ? Lane0(H / safeLen) : Vec3(0);
+      record->NoH = hn::GetLane(NoH);
+    }
+  } else if (model == LightingModel::Phong && (kRecord || !hn::AllFalse(d, lit))) {
+    const Vec3L<V> R = (hn::Set(d, Real(2)) * NoL) * s.N - ls.L;
+    const V RoV = Dot(R, s.toViewer);
+    lobe = hn::IfThenElseZero(lit, Fs_Phong(d, RoV, material.shininess));
+    if constexpr (kRecord) record->R = Lane0(R), record->RoV = hn::GetLane(RoV);
+  }
+  const Vec3L<V> specular = Mul((scale * lobe) * Broadcast(d, Vec3(material.specular)), Broadcast(d, light.specular));
+  if constexpr (kRecord) {
+    record->lobe = hn::GetLane(lobe);
+    if (hn::GetLane(scale) != 0) record->terms = {Vec3(0), Lane0(ambient), Lane0(diffuse), Lane0(specular)};
+  }
+  terms.ambient = terms.ambient + ambient;
+  terms.diffuse = terms.diffuse + diffuse;
+  terms.specular = terms.specular + specular;
+}
+
+// The whole equation at each lane: emission, global ambient, then every light in order.
+template <class D, class V = hn::VFromD<D>>
+HWY_INLINE TermsL<V> ShadeGl(D d, std::span<const EyeLight> lights, const LightModel& lightModel,
+                             const Material& material, const MaterialColorsL<V>& colors, LightingModel model,
+                             const SurfaceL<V>& s) {
+  TermsL<V> terms = TermsWithoutLights(d, lightModel, material, colors);
+  for (const EyeLight& light : lights) AccumulateGlLight<false>(d, terms, light, material, colors, model, s, nullptr);
+  return terms;
+}
+
+// The colour GL writes: each channel of the sum clamped to [0,1], alpha the diffuse alpha's.
+template <class D, class V = hn::VFromD<D>>
+HWY_INLINE void ClampedColor(D d, const TermsL<V>& t, V alpha, V& r, V& g, V& b, V& a) {
+  const V zero = hn::Zero(d), one = hn::Set(d, Real(1));
+  const Vec3L<V> sum = t.emission + t.ambient + t.diffuse + t.specular;
+  r = hn::Min(hn::Max(sum.x, zero), one);
+  g = hn::Min(hn::Max(sum.y, zero), one);
+  b = hn::Min(hn::Max(sum.z, zero), one);
+  a = hn::Min(hn::Max(alpha, zero), one);
+}
+
+}  // namespace illum::HWY_NAMESPACE
+HWY_AFTER_NAMESPACE();
+
+#endif  // ILLUM_SHADING_GL_LIGHTING_INL_H_

@@ -1,0 +1,161 @@
+// shadePoints, compiled once per SIMD target (Highway's foreach_target) and dispatched at run time,
+// and the one-point entry points of the equation (lighting.h, brdf.h), which run the same lines
+// on one lane.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "shading/shade_points.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+
+#include "shading/gl_lighting-inl.h"
+#include "shading/shade_points.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace illum::HWY_NAMESPACE {
+
+// Points [first, first + lanes) of `p`, read from and written to arrays offset by `first`.
+template <class D>
+HWY_INLINE void ShadeLanes(D d, const ShadeSetup& setup, const MaterialColorsL<hn::VFromD<D>>& uniform,
+                           const Real* const position[3], const Real* const normal[3], const Real* const color[4],
+                           Real* const out[4]) {
+  using V = hn::VFromD<D>;
+  SurfaceL<V> s;
+  s.P = {hn::LoadU(d, position[0]), hn::LoadU(d, position[1]), hn::LoadU(d, position[2])};
+  s.N = {hn::LoadU(d, normal[0]), hn::LoadU(d, normal[1]), hn::LoadU(d, normal[2])};
+  s.toViewer = ToViewer(d, s.P, setup.lightModel.localViewer);
+  MaterialColorsL<V> colors = uniform;
+  if (color[0]) {
+    const Vec3L<V> c{hn::LoadU(d, color[0]), hn::LoadU(d, color[1]), hn::LoadU(d, color[2])};
+    colors = {c, c, hn::LoadU(d, color[3])};
+  }
+  const TermsL<V> terms = ShadeGl(d, setup.lights, setup.lightModel, setup.material, colors, setup.model, s);
+  V r, g, b, a;
+  ClampedColor(d, terms, colors.alpha, r, g, b, a);
+  hn::StoreU(r, d, out[0]);
+  hn::StoreU(g, d, out[1]);
+  hn::StoreU(b, d, out[2]);
+  hn::StoreU(a, d, out[3]);
+}
+
+void ShadePoints(const ShadeSetup& setup, const SurfacePoints& p, Real* const out[4]) {
+  const hn::ScalableTag<Real> d;
+  const std::size_t lanes = hn::Lanes(d);
+  const auto uniform = UniformColors(d, setup.material);
+  const bool colored = p.color[0] != nullptr;
+  std::size_t i = 0;
+  for (; i + lanes <= p.count; i += lanes) {
+    const Real* position[3] = {p.position[0] + i, p.position[1] + i, p.position[2] + i};
+    const Real* normal[3] = {p.normal[0] + i, p.normal[1] + i, p.normal[2] + i};
+    const Real* color[4] = {};
+    if (colored) color[0] = p.color[0] + i, color[1] = p.color[1] + i, color[2] = p.color[2] + i, color[3] = p.color[3] + i;
+    Real* const dst[4] = {out[0] + i, out[1] + i, out[2] + i, out[3] + i};
+    ShadeLanes(d, setup, uniform, position, normal, color, dst);
+  }
+  if (i == p.count) return;
+  // The last few points: copied into full vectors, the spare lanes repeating the last point.
+  constexpr std::size_t kMax = hn::MaxLanes(d);
+  HWY_ALIGN Real in[10][kMax], result[4][kMax];
+  const Real* const* sources[3] = {p.position, p.normal, p.color};
+  for (std::size_t k = 0; k < lanes; ++k) {
+    const std::size_t from = std::min(i + k, p.count - 1);
+    for (int a = 0; a < 10; ++a) {
+      const Real* src = sources[a < 3 ? 0 : a < 6 ? 1 : 2][a < 3 ? a : a < 6 ? a - 3 : a - 6];
+      in[a][k] = src ? src[from] : Real(0);
+    }
+  }
+  const Real* position[3] = {in[0], in[1], in[2]};
+  const Real* normal[3] = {in[3], in[4], in[5]};
+  const Real* color[4] = {};
+  if (colored) color[0] = in[6], color[1] = in[7], color[2] = in[8], color[3] = in[9];
+  Real* const dst[4] = {result[0], result[1], result[2], result[3]};
+  ShadeLanes(d, setup, uniform, position, normal, color, dst);
+  for (std::size_t k = 0; i + k < p.count; ++k)
+    for (int c = 0; c < 4; ++c) out[c][i + k] = result[c][k];
+}
+
+const char* TargetName() { return hwy::TargetName(HWY_TARGET); }
+
+}  // namespace illum::HWY_NAMESPACE
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+#include "shading/brdf.h"
+
+namespace illum {
+
+HWY_EXPORT(ShadePoints);
+HWY_EXPORT(TargetName);
+
+void shadePoints(const ShadeSetup& setup, const SurfacePoints& points, Real* const out[4]) {
+  HWY_DYNAMIC_DISPATCH(ShadePoints)(setup, points, out);
+}
+
+const char* simdTargetName() { return HWY_DYNAMIC_DISPATCH(TargetName)(); }
+
+// One point: the same templates on a single lane of the static target (which gives the same bits
+// as every other target, see lane_math-inl.h).
+namespace hn = hwy::HWY_NAMESPACE;
+namespace one {
+using D = hn::CappedTag<Real, 1>;
+using V = hn::VFromD<D>;
+constexpr D d;
+
+V lane(Real x) { return hn::Set(d, x); }
+HWY_NAMESPACE::Vec3L<V> lanes(const Vec3& v) { return HWY_NAMESPACE::Broadcast(d, v); }
+HWY_NAMESPACE::SurfaceL<V> surface(const SurfaceGeometry& s) {
+  return {lanes(s.position), lanes(s.normal), lanes(s.toViewer)};
+}
+HWY_NAMESPACE::MaterialColorsL<V> colors(const Material& m) { return HWY_NAMESPACE::UniformColors(d, m); }
+
+}  // namespace one
+
+void accumulateLight(LightingTerms& terms, const EyeLight& light, const Material& material, LightingModel model,
+                     const SurfaceGeometry& surface, LightDetail* detail) {
+  const HWY_NAMESPACE::TermsL<one::V> zero{one::lanes(Vec3(0)), one::lanes(Vec3(0)), one::lanes(Vec3(0)),
+                                                one::lanes(Vec3(0))};
+  auto t = zero;
+  if (detail) {
+    *detail = LightDetail{};
+    HWY_NAMESPACE::AccumulateGlLight<true>(one::d, t, light, material, one::colors(material), model,
+                                           one::surface(surface), detail);
+  } else {
+    HWY_NAMESPACE::AccumulateGlLight<false>(one::d, t, light, material, one::colors(material), model,
+                                            one::surface(surface), nullptr);
+  }
+  terms.ambient += HWY_NAMESPACE::Lane0(t.ambient);
+  terms.diffuse += HWY_NAMESPACE::Lane0(t.diffuse);
+  terms.specular += HWY_NAMESPACE::Lane0(t.specular);
+}
+
+LightingTerms evaluateTerms(std::span<const EyeLight> lights, const LightModel& lightModel, const Material& material,
+                            LightingModel model, const SurfaceGeometry& surface) {
+  const auto t = HWY_NAMESPACE::ShadeGl(one::d, lights, lightModel, material, one::colors(material), model,
+                                        one::surface(surface));
+  return {HWY_NAMESPACE::Lane0(t.emission), HWY_NAMESPACE::Lane0(t.ambient), HWY_NAMESPACE::Lane0(t.diffuse),
+          HWY_NAMESPACE::Lane0(t.specular)};
+}
+
+Color4 clampedColor(const LightingTerms& terms, const Material& material) {
+  const HWY_NAMESPACE::TermsL<one::V> t{one::lanes(terms.emission), one::lanes(terms.ambient),
+                                        one::lanes(terms.diffuse), one::lanes(terms.specular)};
+  one::V r, g, b, a;
+  HWY_NAMESPACE::ClampedColor(one::d, t, one::lane(material.diffuse.a), r, g, b, a);
+  return {hn::GetLane(r), hn::GetLane(g), hn::GetLane(b), hn::GetLane(a)};
+}
+
+Vec3 viewerDirection(const Vec3& eyePosition, bool localViewer) {
+  return HWY_NAMESPACE::Lane0(HWY_NAMESPACE::ToViewer(one::d, one::lanes(eyePosition), localViewer));
+}
+
+Real Fd_LambertCosine(Real NoL) { return hn::GetLane(HWY_NAMESPACE::Fd_LambertCosine(one::lane(NoL))); }
+Real Fs_Phong(Real RoV, Real shininess) { return hn::GetLane(HWY_NAMESPACE::Fs_Phong(one::d, one::lane(RoV), shininess)); }
+Real Fs_BlinnPhong(Real NoH, Real shininess) {
+  return hn::GetLane(HWY_NAMESPACE::Fs_BlinnPhong(one::d, one::lane(NoH), shininess));
+}
+Real distanceAttenuation(const Vec3& k, Real d) {
+  return hn::GetLane(HWY_NAMESPACE::DistanceAttenuation(one::d, k, one::lane(d)));
+}
+Real spotFactor(Real minusLoS, Real cosCutoff, Real exponent) {
+  return hn::GetLane(HWY_NAMESPACE::SpotFactor(one::d, one::lane(minusLoS), cosCutoff, exponent));
+}
+
+}  // namespace illum
+#endif  // HWY_ONCE
