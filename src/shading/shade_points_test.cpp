@@ -1,0 +1,155 @@
+// The SIMD equation against the one-lane equation, and every SIMD target against every other:
+// the same bits, for every model, light kind and option. And the lanes' power function against
+// std::pow.
+#include "shading/shade_points.h"
+
+#include <illum/lighting.h>
+
+#include "shading/brdf.h"
+
+#include <gtest/gtest.h>
+#include <hwy/targets.h>
+
+#include <cmath>
+#include <cstring>
+#include <random>
+#include <vector>
+
+namespace illum {
+namespace {
+
+struct Batch {
+  std::vector<Real> v[10];  // position xyz, normal xyz, colour rgba
+  SurfacePoints points() const {
+    SurfacePoints p;
+    p.count = v[0].size();
+    for (int c = 0; c < 3; ++c) p.position[c] = v[c].data(), p.normal[c] = v[3 + c].data();
+    if (!v[6].empty())
+      for (int c = 0; c < 4; ++c) p.color[c] = v[6 + c].data();
+    return p;
+  }
+};
+
+// Points scattered in front of the eye with random unit normals, some facing away from the lights.
+Batch randomPoints(std::size_t n, bool colors, std::mt19937& rng) {
+  std::uniform_real_distribution<Real> u(-1, 1);
+  Batch b;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3 p(3 * u(rng), 3 * u(rng), -4 + 3 * u(rng));
+    Vec3 nrm(u(rng), u(rng), u(rng));
+    nrm = glm::length(nrm) > Real(1e-3) ? glm::normalize(nrm) : Vec3(0, 0, 1);
+    for (int c = 0; c < 3; ++c) b.v[c].push_back(p[c]), b.v[3 + c].push_back(nrm[c]);
+    if (colors)
+      for (int c = 0; c < 4; ++c) b.v[6 + c].push_back((u(rng) + 1) / 2);
+  }
+  return b;
+}
+
+std::vector<EyeLight> lightsOfKind(int kind) {
+  EyeLight l;
+  l.diffuse = {0.9f, 0.7f, 0.5f};
+  l.specular = {1, 0.9f, 0.8f};
+  l.ambient = {0.05f, 0.04f, 0.03f};
+  switch (kind) {
+    case 0: l.position = {0.3f, 0.8f, 0.5f, 0}; break;                              // directional
+    case 1: l.position = {1, 2, -1, 1}, l.attenuation = {1, 0.1f, 0.02f}; break;    // positional, attenuated
+    case 2:                                                                         // spot
+      l.position = {0, 0, 0, 1}, l.spotDirection = glm::normalize(Vec3(0, 0, -1));
+      l.spotCutoff = 30, l.spotCosCutoff = std::cos(glm::radians(Real(30))), l.spotExponent = 8;
+      break;
+    default: {  // eight of every kind
+      std::vector<EyeLight> all;
+      for (int k = 0; k < 8; ++k) {
+        EyeLight m = l;
+        m.position = {Real(k) - 4, Real(k % 3), Real(-k), Real(k % 2)};
+        all.push_back(m);
+      }
+      return all;
+    }
+  }
+  return {l};
+}
+
+std::vector<Real> shadeAll(const ShadeSetup& setup, const Batch& b) {
+  const std::size_t n = b.v[0].size();
+  std::vector<Real> out(4 * n);
+  Real* const dst[4] = {out.data(), out.data() + n, out.data() + 2 * n, out.data() + 3 * n};
+  shadePoints(setup, b.points(), dst);
+  return out;
+}
+
+bool sameBits(Real a, Real b) { return std::memcmp(&a, &b, sizeof(Real)) == 0; }
+
+class EveryModelAndLight : public testing::TestWithParam<std::tuple<LightingModel, int, bool, bool>> {};
+
+TEST_P(EveryModelAndLight, SimdEqualsOneLaneBitForBit) {
+  const auto [model, kind, colors, localViewer] = GetParam();
+  std::mt19937 rng(1234 + kind);
+  const std::vector<EyeLight> lights = lightsOfKind(kind);
+  ShadeSetup setup{lights, {}, model, {}};
+  setup.lightModel.localViewer = localViewer;
+  setup.material.specular = {0.8f, 0.8f, 0.8f, 1};
+  setup.material.emission = {0.01f, 0.02f, 0.03f, 1};
+  setup.material.shininess = 37;
+  const std::size_t n = 203;  // not a multiple of any lane count: the tail is tested too
+  const Batch b = randomPoints(n, colors, rng);
+  const std::vector<Real> simd = shadeAll(setup, b);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3 p(b.v[0][i], b.v[1][i], b.v[2][i]), nrm(b.v[3][i], b.v[4][i], b.v[5][i]);
+    Material m = setup.material;
+    if (colors) m.ambient = m.diffuse = {b.v[6][i], b.v[7][i], b.v[8][i], b.v[9][i]};
+    const SurfaceGeometry s{p, nrm, viewerDirection(p, localViewer)};
+    const Color4 one = clampedColor(evaluateTerms(lights, setup.lightModel, m, model, s), m);
+    for (int c = 0; c < 4; ++c)
+      ASSERT_TRUE(sameBits(simd[c * n + i], one[c])) << "point " << i << " channel " << c << ": " << simd[c * n + i]
+                                                     << " vs " << one[c];
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Shading, EveryModelAndLight,
+                         testing::Combine(testing::Values(LightingModel::BlinnPhong, LightingModel::Phong,
+                                                          LightingModel::Lambert),
+                                          testing::Values(0, 1, 2, 3), testing::Bool(), testing::Bool()));
+
+TEST(ShadePoints, EverySimdTargetGivesTheSameBits) {
+  std::mt19937 rng(99);
+  const std::vector<EyeLight> lights = lightsOfKind(3);
+  ShadeSetup setup{lights, {}, LightingModel::BlinnPhong, {}};
+  setup.material.specular = {1, 1, 1, 1};
+  setup.material.shininess = 90;
+  const Batch b = randomPoints(1000, true, rng);
+  const std::vector<Real> reference = shadeAll(setup, b);
+  int tried = 0;
+  for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+    hwy::SetSupportedTargetsForTest(target);
+    EXPECT_STREQ(simdTargetName(), hwy::TargetName(target));
+    const std::vector<Real> out = shadeAll(setup, b);
+    ++tried;
+    for (std::size_t i = 0; i < out.size(); ++i)
+      ASSERT_TRUE(sameBits(out[i], reference[i])) << hwy::TargetName(target) << " differs at " << i;
+  }
+  hwy::SetSupportedTargetsForTest(0);
+  EXPECT_GE(tried, 2);  // at least the SIMD target and the portable one
+}
+
+TEST(PowLobe, FollowsStdPowClosely) {
+  for (const Real n : {Real(0.5), Real(1), Real(5), Real(25), Real(128), Real(1000)}) {
+    for (Real x = Real(1e-4); x < 1; x *= Real(1.07)) {
+      const double expected = std::pow(double(x), double(n));
+      const double got = Fs_BlinnPhong(x, n);
+      // Float lanes: about 1e-7 relative per unit of |n·log2 x|.
+      const double tolerance = 2e-7 * std::max(1.0, std::abs(n * std::log2(double(x)))) * expected + 1e-38;
+      ASSERT_NEAR(got, expected, tolerance) << x << "^" << n;
+    }
+  }
+  EXPECT_EQ(Fs_Phong(1, 77), 1);
+  EXPECT_EQ(Fs_Phong(0, 3), 0);
+  EXPECT_EQ(Fs_Phong(Real(-0.2), 3), 0);
+  EXPECT_EQ(Fs_Phong(Real(0.5), 1), Real(0.5));
+  EXPECT_EQ(Fs_Phong(Real(0.25), Real(0.5)), Real(0.5));
+  EXPECT_GT(Fs_Phong(Real(1e-39), Real(0.5)), Real(3e-20));  // a denormal base
+  EXPECT_EQ(Fs_Phong(Real(1e-3), 40), 0);                    // below the smallest float
+}
+
+}  // namespace
+}  // namespace illum
