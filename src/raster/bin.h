@@ -10,8 +10,6 @@
 
 namespace illum {
 
-constexpr int kTileSize = 64;
-
 class TileBins {
  public:
   TileBins(int width, int height);

@@ -9,12 +9,13 @@
 #include <limits>
 
 namespace illum {
-namespace {
 
-// Records the fragment at the watched pixel: where it was lit and what it wrote.
-void recordProbe(const DrawTarget& target, const Object& object, std::size_t objectIndex, std::size_t triangle,
-                 const TriangleSetup& t, const ProvokingVertex& flat, const std::array<Real, 3>& w, const Color4& lit,
+void recordProbe(const DrawTarget& target, const DrawRecord& record, const std::array<Real, 3>& w, const Color4& lit,
                  const Vec4* texel, const Color4& c) {
+  const Object& object = target.scene.objects[record.object];
+  const std::size_t objectIndex = record.object, triangle = record.triangle;
+  const TriangleSetup& t = record.setup;
+  const ProvokingVertex& flat = record.flat;
   PixelProbe& p = *target.probe;
   const auto& v = t.vertex;
   const bool back = target.frame.lightModel.twoSided && !t.frontFacing;
@@ -48,6 +49,8 @@ void recordProbe(const DrawTarget& target, const Object& object, std::size_t obj
   if (back) p.eyeNormal = -p.eyeNormal;
 }
 
+namespace {
+
 // One record's pixels with every per-draw choice fixed at compile time (the shading frequency,
 // texturing, blending, a watched pixel), so the pixel loop never branches on them.
 template <Shading kShading, bool kTextured, bool kBlend, bool kProbe>
@@ -76,8 +79,7 @@ void drawPixels(const DrawTarget& target, const DrawRecord& record, const PixelR
     else target.fb.writeColor(x, y, c);
     if constexpr (kProbe)
       if (y == probeRow && x == target.probe->x)
-        recordProbe(target, object, record.object, record.triangle, t, record.flat, perspectiveWeights(t, l0, l1, l2),
-                    lit, kTextured ? &texel : nullptr, c);
+        recordProbe(target, record, perspectiveWeights(t, l0, l1, l2), lit, kTextured ? &texel : nullptr, c);
   });
 }
 

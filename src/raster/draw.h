@@ -48,6 +48,11 @@ std::size_t setupTriangles(const FrameContext& frame, const Object& object, std:
 // Draws the record's pixels inside `rect`; adds the fragments that passed the depth test.
 void drawRecord(const DrawTarget& target, const DrawRecord& record, const PixelRect& rect, std::size_t& fragments);
 
+// Records the fragment at the watched pixel: where it was lit (weights w), the lit colour, the
+// texel that modulated it (null without a texture) and what was written.
+void recordProbe(const DrawTarget& target, const DrawRecord& record, const std::array<Real, 3>& w, const Color4& lit,
+                 const Vec4* texel, const Color4& written);
+
 // Scene order, or with blending the opaque objects first and then the translucent ones from the
 // farthest to the nearest. Ties keep scene order.
 std::vector<const Object*> drawingOrder(const Scene& scene, const FrameContext& frame);

@@ -2,19 +2,25 @@
 
 namespace illum {
 
+PhongSurface phongSurface(const FrameContext& frame, bool vertexColors, const TriangleSetup& t,
+                          const std::array<Real, 3>& w) {
+  const auto& v = t.vertex;
+  PhongSurface s;
+  s.color = vertexColors ? w[0] * v[0].color + w[1] * v[1].color + w[2] * v[2].color : Color4(1);
+  s.position = w[0] * v[0].eyePosition + w[1] * v[1].eyePosition + w[2] * v[2].eyePosition;
+  const Vec3 normal = w[0] * v[0].eyeNormal + w[1] * v[1].eyeNormal + w[2] * v[2].eyeNormal;
+  const Real len = glm::length(normal);
+  s.normal = len > 0 ? normal / len : Vec3(0, 0, 1);
+  // Two-sided lighting lights back faces with −N, as GL does per vertex.
+  if (frame.lightModel.twoSided && !t.frontFacing) s.normal = -s.normal;
+  return s;
+}
+
 Color4 shadePhongFragment(const FrameContext& frame, const Material& baseMaterial, bool vertexColors,
                           const TriangleSetup& t, const std::array<Real, 3>& w) {
-  const auto& v = t.vertex;
-  const Material material =
-      vertexColors ? withVertexColor(baseMaterial, w[0] * v[0].color + w[1] * v[1].color + w[2] * v[2].color)
-                   : baseMaterial;
-  const Vec3 position = w[0] * v[0].eyePosition + w[1] * v[1].eyePosition + w[2] * v[2].eyePosition;
-  Vec3 normal = w[0] * v[0].eyeNormal + w[1] * v[1].eyeNormal + w[2] * v[2].eyeNormal;
-  const Real len = glm::length(normal);
-  normal = len > 0 ? normal / len : Vec3(0, 0, 1);
-  // Two-sided lighting lights back faces with −N, as GL does per vertex.
-  if (frame.lightModel.twoSided && !t.frontFacing) normal = -normal;
-  const SurfaceGeometry s{position, normal, viewerDirection(position, frame.lightModel.localViewer)};
+  const PhongSurface p = phongSurface(frame, vertexColors, t, w);
+  const Material material = vertexColors ? withVertexColor(baseMaterial, p.color) : baseMaterial;
+  const SurfaceGeometry s{p.position, p.normal, viewerDirection(p.position, frame.lightModel.localViewer)};
   return clampedColor(evaluateTerms(frame.lights, frame.lightModel, material, frame.model, s), material);
 }
 

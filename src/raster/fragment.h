@@ -18,8 +18,18 @@ inline std::array<Real, 3> perspectiveWeights(const TriangleSetup& t, Real l0, R
   return {q0 * inv, q1 * inv, q2 * inv};
 }
 
-// The per-pixel lighting of Phong shading. `frontFacing` picks N or −N under two-sided lighting;
-// `vertexColors` substitutes the interpolated vertex colour for the ambient and diffuse material.
+// What Phong shading lights at a pixel: the interpolated eye position, the interpolated normal
+// renormalized (−N for a back face under two-sided lighting), and with `vertexColors` the
+// interpolated vertex colour, which stands for the ambient and diffuse material.
+struct PhongSurface {
+  Vec3 position, normal;
+  Color4 color;
+};
+PhongSurface phongSurface(const FrameContext& frame, bool vertexColors, const TriangleSetup& t,
+                          const std::array<Real, 3>& w);
+
+// The per-pixel lighting of Phong shading, one pixel at a time (the binned pipeline lights its
+// pixels in batches, shade_tile.cpp, with the same equation).
 Color4 shadePhongFragment(const FrameContext& frame, const Material& material, bool vertexColors,
                           const TriangleSetup& t, const std::array<Real, 3>& w);
 

@@ -1,5 +1,7 @@
 // Framebuffer stage: an RGBA8 colour buffer and a float depth buffer in GL window coordinates
 // (row 0 at the bottom), the depth test GL_LESS, and 8-bit conversion round(clamp(c)·255).
+// Stored tile by tile (64×64 pixels, row-major inside a tile, edge tiles padded to full size), so
+// that the thread drawing a tile owns one contiguous block and full SIMD rows never leave it.
 #pragma once
 
 #include <illum/image.h>
@@ -11,6 +13,8 @@
 #include <vector>
 
 namespace illum {
+
+constexpr int kTileSize = 64;
 
 // round(clamp(c)·255), halves away from zero, as std::lround would. With float channels the
 // product is exact in double (24 + 8 bits), so adding 0.5 is exact too and truncation rounds the
@@ -51,10 +55,18 @@ class Framebuffer {
   // The picture as an image file stores it: row 0 at the top.
   Image toImage() const;
 
- private:
-  std::size_t index(int x, int y) const { return std::size_t(y) * std::size_t(width_) + std::size_t(x); }
+  // The tile whose bottom-left pixel is (x0, y0) (multiples of kTileSize): kTileSize² depths and
+  // RGBA pixels, row by row from the bottom.
+  Real* depthTile(int x0, int y0) { return &depth_[index(x0, y0)]; }
+  std::uint8_t* colorTile(int x0, int y0) { return &color_[index(x0, y0) * 4]; }
 
-  int width_, height_;
+ private:
+  std::size_t index(int x, int y) const {
+    const std::size_t tile = std::size_t(y / kTileSize) * std::size_t(tilesX_) + std::size_t(x / kTileSize);
+    return tile * kTileSize * kTileSize + std::size_t(y % kTileSize) * kTileSize + std::size_t(x % kTileSize);
+  }
+
+  int width_, height_, tilesX_;
   std::vector<std::uint8_t> color_;
   std::vector<Real> depth_;
 };

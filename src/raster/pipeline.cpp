@@ -8,8 +8,10 @@
 
 #include "raster/bin.h"
 #include "raster/draw.h"
+#include "raster/shade_tile.h"
 
 #include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -58,13 +60,20 @@ class BinnedRenderer {
     }
   }
 
-  // Draws every tile of what has been binned, each tile on one thread, its records in order.
+  // Draws every tile of what has been binned, each tile on one thread, its records in order:
+  // opaque drawing shades each visible pixel once (shade_tile.h), blending fragment by fragment.
   void flush() {
     if (batched_ == 0) return;
     tbb::parallel_for(0, bins_.tileCount(), [&](int tile) {
       const PixelRect rect = bins_.tileRect(tile);
+      const auto& records = bins_.records(tile);
+      if (records.empty()) return;
       std::size_t& fragments = tileFragments_[std::size_t(tile)];
-      for (const DrawRecord* r : bins_.records(tile)) drawRecord(target_, *r, rect, fragments);
+      if (frame_.blend) {
+        for (const DrawRecord* r : records) drawRecord(target_, *r, rect, fragments);
+      } else {
+        fragments += drawOpaqueTile(target_, records, rect, scratch_.local());
+      }
     });
     bins_.clear();
     used_ = 0;
@@ -83,6 +92,7 @@ class BinnedRenderer {
   TileBins bins_;
   std::vector<std::size_t> tileFragments_;
   std::vector<ShadedVertex> vertices_;
+  tbb::enumerable_thread_specific<TileScratch> scratch_;
   std::vector<std::vector<DrawRecord>> pool_;  // per chunk; moving the outer vector keeps the records in place
   std::size_t used_ = 0, batched_ = 0;
   RenderStats stats_;

@@ -13,7 +13,7 @@ constexpr int kSubpixelBits = 8;
 constexpr std::int64_t kSubpixelOne = 1 << kSubpixelBits;
 
 // E(x, y) = a·x + b·y + c over fixed-point window coordinates; the inside is E > 0, or E = 0 on a
-// top or left edge (the bias folds that rule in: inside ⇔ E + bias > 0).
+// top or left edge (the bias folds that rule in: inside ⇔ E + bias ≥ 0).
 struct EdgeFunction {
   std::int64_t a = 0, b = 0, c = 0, bias = 0;
   std::int64_t at(std::int64_t x, std::int64_t y) const { return a * x + b * y + c; }

@@ -1,0 +1,135 @@
+#include "raster/shade_tile.h"
+
+#include "raster/fragment.h"
+#include "shading/shade_points.h"
+
+namespace illum {
+namespace {
+
+struct VisiblePixel {
+  int x, y;
+  Real l0, l1, l2;  // screen-space barycentrics, exactly as the rasterizer computes them
+};
+
+VisiblePixel visiblePixel(const TriangleSetup& t, const PixelRect& rect, int index) {
+  const int x = rect.minX + index % kTileSize, y = rect.minY + index / kTileSize;
+  const std::int64_t fx = std::int64_t(x) * kSubpixelOne + kSubpixelOne / 2;
+  const std::int64_t fy = std::int64_t(y) * kSubpixelOne + kSubpixelOne / 2;
+  const Real invArea = Real(1) / Real(t.area2);
+  return {x, y, Real(t.edge[0].at(fx, fy)) * invArea, Real(t.edge[1].at(fx, fy)) * invArea,
+          Real(t.edge[2].at(fx, fy)) * invArea};
+}
+
+const Texture* textureOf(const Object& object) {
+  return object.diffuseTexture && !object.mesh->uvs.empty() ? object.diffuseTexture.get() : nullptr;
+}
+
+// Writes a coloured pixel: GL_MODULATE by the texel, then the framebuffer, then the probe.
+void writePixel(const DrawTarget& target, const DrawRecord& r, const VisiblePixel& p, const Color4& lit,
+                const Vec4* texel) {
+  const Color4 c = texel ? lit * *texel : lit;
+  target.fb.writeColor(p.x, p.y, c);
+  if (target.probe && p.x == target.probe->x && p.y == target.frame.height - 1 - target.probe->y)
+    recordProbe(target, r, perspectiveWeights(r.setup, p.l0, p.l1, p.l2), lit, texel, c);
+}
+
+// Flat and Gouraud: the colours were lit at the vertices.
+void colorVertexLit(const DrawTarget& target, std::span<const DrawRecord* const> records, const PixelRect& rect,
+                    const TileScratch& scratch) {
+  const bool twoSided = target.frame.lightModel.twoSided;
+  for (int i = 0; i < kTileSize * kTileSize; ++i) {
+    const std::uint32_t slot = scratch.winners[std::size_t(i)];
+    if (slot == kNoWinner) continue;
+    const DrawRecord& r = *records[slot];
+    const VisiblePixel p = visiblePixel(r.setup, rect, i);
+    const Color4 lit = target.frame.shading == Shading::Flat
+                           ? (twoSided && !r.setup.frontFacing ? r.flat.back : r.flat.front)
+                           : shadeGouraudFragment(target.frame, r.setup, perspectiveWeights(r.setup, p.l0, p.l1, p.l2));
+    const Texture* texture = textureOf(target.scene.objects[r.object]);
+    if (!texture) {
+      writePixel(target, r, p, lit, nullptr);
+      continue;
+    }
+    const Vec4 texel = sampleDiffuseTexture(*texture, r.setup, p.l0, p.l1, p.l2);
+    writePixel(target, r, p, lit, &texel);
+  }
+}
+
+// Phong: the pixels of one object at a time gathered into a batch and lit together.
+class PhongBatch {
+ public:
+  PhongBatch(const DrawTarget& target, std::span<const DrawRecord* const> records, const PixelRect& rect,
+             TileScratch& scratch)
+      : target_(target), records_(records), rect_(rect), s_(scratch) {}
+
+  void add(int index, std::uint32_t slot) {
+    const DrawRecord& r = *records_[slot];
+    if (n_ == TileScratch::kBatch || (n_ > 0 && r.object != object_)) flush();
+    object_ = r.object;
+    const Object& object = target_.scene.objects[r.object];
+    const VisiblePixel p = visiblePixel(r.setup, rect_, index);
+    const PhongSurface surface =
+        phongSurface(target_.frame, !object.mesh->colors.empty(), r.setup, perspectiveWeights(r.setup, p.l0, p.l1, p.l2));
+    for (int c = 0; c < 3; ++c) s_.soa[c][n_] = surface.position[c], s_.soa[3 + c][n_] = surface.normal[c];
+    for (int c = 0; c < 4; ++c) s_.soa[6 + c][n_] = surface.color[c];
+    if (const Texture* texture = textureOf(object)) {
+      const Vec4 texel = sampleDiffuseTexture(*texture, r.setup, p.l0, p.l1, p.l2);
+      for (int c = 0; c < 4; ++c) s_.soa[10 + c][n_] = texel[c];
+    }
+    s_.pixel[n_] = std::uint16_t(index);
+    s_.slot[n_] = slot;
+    ++n_;
+  }
+
+  void flush() {
+    if (n_ == 0) return;
+    const Object& object = target_.scene.objects[object_];
+    const ShadeSetup setup{target_.frame.lights, target_.frame.lightModel, target_.frame.model, object.material};
+    SurfacePoints points;
+    points.count = n_;
+    for (int c = 0; c < 3; ++c) points.position[c] = s_.soa[c], points.normal[c] = s_.soa[3 + c];
+    if (!object.mesh->colors.empty())
+      for (int c = 0; c < 4; ++c) points.color[c] = s_.soa[6 + c];
+    Real* const lit[4] = {s_.soa[14], s_.soa[15], s_.soa[16], s_.soa[17]};
+    shadePoints(setup, points, lit);
+    const bool textured = textureOf(object) != nullptr;
+    for (std::size_t k = 0; k < n_; ++k) {
+      const DrawRecord& r = *records_[s_.slot[k]];
+      const VisiblePixel p = visiblePixel(r.setup, rect_, s_.pixel[k]);
+      const Color4 color(lit[0][k], lit[1][k], lit[2][k], lit[3][k]);
+      const Vec4 texel(s_.soa[10][k], s_.soa[11][k], s_.soa[12][k], s_.soa[13][k]);
+      writePixel(target_, r, p, color, textured ? &texel : nullptr);
+    }
+    n_ = 0;
+  }
+
+ private:
+  const DrawTarget& target_;
+  std::span<const DrawRecord* const> records_;
+  const PixelRect& rect_;
+  TileScratch& s_;
+  std::size_t n_ = 0;
+  std::uint32_t object_ = 0;
+};
+
+}  // namespace
+
+std::size_t drawOpaqueTile(const DrawTarget& target, std::span<const DrawRecord* const> records, const PixelRect& rect,
+                           TileScratch& scratch) {
+  Real* depth = target.fb.depthTile(rect.minX, rect.minY);
+  std::size_t fragments = 0;
+  for (std::size_t i = 0; i < records.size(); ++i)
+    fragments += rasterizeDepth(records[i]->setup, rect, depth, std::uint32_t(i), scratch.winners.data());
+  if (target.frame.shading == Shading::Phong) {
+    PhongBatch batch(target, records, rect, scratch);
+    for (int i = 0; i < kTileSize * kTileSize; ++i)
+      if (scratch.winners[std::size_t(i)] != kNoWinner) batch.add(i, scratch.winners[std::size_t(i)]);
+    batch.flush();
+  } else {
+    colorVertexLit(target, records, rect, scratch);
+  }
+  scratch.winners.fill(kNoWinner);
+  return fragments;
+}
+
+}  // namespace illum

@@ -1,0 +1,23 @@
+// Rasterize stage, SIMD: the depth pass of one triangle over one 64×64 tile. Pixels are visited
+// a row at a time, as many as the CPU's widest double vector holds; the fixed-point edge functions
+// are evaluated exactly in double lanes (|E| < 2^53), so coverage, barycentrics and depth come out
+// bit for bit as the scalar rasterizer (rasterize.h) computes them.
+#pragma once
+
+#include "raster/rasterize.h"
+
+#include <cstddef>
+#include <cstdint>
+
+namespace illum {
+
+constexpr std::uint32_t kNoWinner = 0xFFFFFFFF;
+
+// GL_LESS against the tile's depths (kTileSize² of them, the tile's bottom-left pixel first); where
+// a fragment passes, its depth is stored and `slot` written to `winners` (the same layout), so that
+// afterwards each pixel names the triangle it shows. `tile` is the tile's rectangle, clipped to the
+// viewport. Returns the number of fragments that passed.
+std::size_t rasterizeDepth(const TriangleSetup& t, const PixelRect& tile, Real* depth, std::uint32_t slot,
+                           std::uint32_t* winners);
+
+}  // namespace illum
