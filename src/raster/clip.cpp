@@ -39,7 +39,7 @@ ClipResult classifyTriangle(const ShadedVertex& a, const ShadedVertex& b, const 
   // Trivial accept and reject with per-vertex outcodes.
   unsigned orCodes = 0, andCodes = ~0u;
   for (const ShadedVertex* v : {&a, &b, &c}) {
-    const unsigned code = clipOutcode(v->clip, width, height);
+    const unsigned code = v->outcode != kOutcodeUnknown ? v->outcode : clipOutcode(v->clip, width, height);
     if (code & kNotFinite) return ClipResult::Outside;
     orCodes |= code;
     andCodes &= code;

@@ -8,6 +8,13 @@ namespace {
 
 using WindowVertex = WindowPosition;
 
+// std::llround without the call into libm: exact for |x| < 2^52, where x − trunc(x) is exact.
+std::int64_t roundHalfAway(double x) {
+  const std::int64_t t = std::int64_t(x);
+  const double fraction = x - double(t);
+  return t + (fraction >= 0.5) - (fraction <= -0.5);
+}
+
 
 // Edge from p to q, positive on its left (the inside of a counter-clockwise triangle, y up).
 EdgeFunction makeEdge(const WindowVertex& p, const WindowVertex& q) {
@@ -29,17 +36,30 @@ WindowPosition toWindow(const Vec4& clip, int width, int height) {
   const Real xw = (clip.x * invW + 1) * Real(0.5) * Real(width);
   const Real yw = (clip.y * invW + 1) * Real(0.5) * Real(height);
   const Real zw = (clip.z * invW + 1) * Real(0.5);
-  return {std::llround(double(xw) * kSubpixelOne), std::llround(double(yw) * kSubpixelOne), zw, invW};
+  return {roundHalfAway(double(xw) * kSubpixelOne), roundHalfAway(double(yw) * kSubpixelOne), zw, invW};
 }
 
 bool setupTriangle(const ShadedVertex& v0, const ShadedVertex& v1, const ShadedVertex& v2, int width, int height,
                    TriangleSetup& out) {
-  std::array<WindowVertex, 3> w = {toWindow(v0.clip, width, height), toWindow(v1.clip, width, height),
-                                   toWindow(v2.clip, width, height)};
-  out.vertex = {v0, v1, v2};
+  const auto windowOf = [&](const ShadedVertex& v) { return v.hasWindow ? v.window : toWindow(v.clip, width, height); };
+  std::array<WindowVertex, 3> w = {windowOf(v0), windowOf(v1), windowOf(v2)};
   std::int64_t area2 = (w[1].x - w[0].x) * (w[2].y - w[0].y) - (w[2].x - w[0].x) * (w[1].y - w[0].y);
   if (area2 == 0) return false;
+  // Pixel centres (x + 0.5) inside the bounding box, limited to the viewport (the scissor).
+  const std::int64_t half = kSubpixelOne / 2;
+  const std::int64_t minFx = std::min({w[0].x, w[1].x, w[2].x}), maxFx = std::max({w[0].x, w[1].x, w[2].x});
+  const std::int64_t minFy = std::min({w[0].y, w[1].y, w[2].y}), maxFy = std::max({w[0].y, w[1].y, w[2].y});
+  const auto firstCentre = [&](std::int64_t f) { return (f - half + kSubpixelOne - 1) >> kSubpixelBits; };
+  const auto lastCentre = [&](std::int64_t f) { return (f - half) >> kSubpixelBits; };
+  out.minX = int(std::max<std::int64_t>(0, firstCentre(minFx)));
+  out.maxX = int(std::min<std::int64_t>(width - 1, lastCentre(maxFx)));
+  out.minY = int(std::max<std::int64_t>(0, firstCentre(minFy)));
+  out.maxY = int(std::min<std::int64_t>(height - 1, lastCentre(maxFy)));
+  // Most of a dense mesh's triangles hold no pixel centre: they stop here, before any copying.
+  if (out.minX > out.maxX || out.minY > out.maxY) return false;
+
   out.frontFacing = area2 > 0;
+  out.vertex = {v0, v1, v2};
   if (area2 < 0) {
     // Make the triangle counter-clockwise; attributes travel with their vertices.
     std::swap(w[1], w[2]);
@@ -54,18 +74,7 @@ bool setupTriangle(const ShadedVertex& v0, const ShadedVertex& v1, const ShadedV
   out.edge[0] = makeEdge(w[1], w[2]);
   out.edge[1] = makeEdge(w[2], w[0]);
   out.edge[2] = makeEdge(w[0], w[1]);
-
-  // Pixel centres (x + 0.5) inside the bounding box, limited to the viewport (the scissor).
-  const std::int64_t half = kSubpixelOne / 2;
-  const std::int64_t minFx = std::min({w[0].x, w[1].x, w[2].x}), maxFx = std::max({w[0].x, w[1].x, w[2].x});
-  const std::int64_t minFy = std::min({w[0].y, w[1].y, w[2].y}), maxFy = std::max({w[0].y, w[1].y, w[2].y});
-  const auto firstCentre = [&](std::int64_t f) { return (f - half + kSubpixelOne - 1) >> kSubpixelBits; };
-  const auto lastCentre = [&](std::int64_t f) { return (f - half) >> kSubpixelBits; };
-  out.minX = int(std::max<std::int64_t>(0, firstCentre(minFx)));
-  out.maxX = int(std::min<std::int64_t>(width - 1, lastCentre(maxFx)));
-  out.minY = int(std::max<std::int64_t>(0, firstCentre(minFy)));
-  out.maxY = int(std::min<std::int64_t>(height - 1, lastCentre(maxFy)));
-  return out.minX <= out.maxX && out.minY <= out.maxY;
+  return true;
 }
 
 }  // namespace illum

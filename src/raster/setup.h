@@ -22,7 +22,7 @@ struct EdgeFunction {
 // Self-contained: the vertices travel by value, so a record stays valid after the clipped polygon
 // it came from is gone (triangles are binned, then drawn later by whichever thread owns a tile).
 struct TriangleSetup {
-  std::array<ShadedVertex, 3> vertex{};         // counter-clockwise on screen
+  std::array<VertexAttributes, 3> vertex{};     // counter-clockwise on screen
   std::array<Real, 3> z{};                      // window depth in [0,1]
   std::array<Real, 3> invW{};                   // 1/w_clip, for perspective-correct attributes
   std::array<EdgeFunction, 3> edge{};           // edge[i] is opposite vertex[i]

@@ -1,6 +1,8 @@
 #include "raster/vertex.h"
 
 #include "math/transform.h"
+#include "raster/clip.h"
+#include "raster/setup.h"
 #include "shading/shade_points.h"
 
 #include <algorithm>
@@ -55,6 +57,9 @@ void runVertexStage(const FrameContext& frame, const Object& object, std::vector
     ShadedVertex& v = out[i];
     const Vec4 p(mesh.positions[i], 1);
     v.clip = clipFromObject * p;
+    v.outcode = clipOutcode(v.clip, frame.width, frame.height);
+    v.hasWindow = v.outcode == 0;
+    if (v.hasWindow) v.window = toWindow(v.clip, frame.width, frame.height);
     v.eyePosition = Vec3(viewFromObject * p);
     const Vec3 n = normalFromObject * mesh.normals[i];
     const Real len = glm::length(n);

@@ -15,14 +15,25 @@ struct WindowPosition {
   Real z = 0, invW = 0;
 };
 
-struct ShadedVertex {
-  Vec4 clip{0};       // clipFromView · viewFromObject · p
+// What the fragment stage interpolates across a triangle.
+struct VertexAttributes {
   Vec3 eyePosition{0};
   Vec3 eyeNormal{0};  // unit length (GL_NORMALIZE)
   Color4 front{0};    // lit with N (flat, Gouraud)
   Color4 back{0};     // lit with −N (two-sided lighting only)
   Vec2 uv{0};         // texture coordinates, when the mesh has them
   Color4 color{1};    // the vertex colour, when the mesh has them (GL_COLOR_MATERIAL)
+};
+
+constexpr unsigned kOutcodeUnknown = ~0u;
+
+// A vertex after the vertex stage: its attributes, its clip-space position and, computed once
+// here rather than once per triangle that shares it, its clip outcode and window position.
+struct ShadedVertex : VertexAttributes {
+  Vec4 clip{0};                       // clipFromView · viewFromObject · p
+  unsigned outcode = kOutcodeUnknown;  // clipOutcode(clip) (clip.h), once known
+  bool hasWindow = false;              // `window` is toWindow(clip): the vertex is inside the clip volume
+  WindowPosition window;
 };
 
 // The material GL uses at a vertex with colour `c` under GL_COLOR_MATERIAL(GL_AMBIENT_AND_DIFFUSE).
