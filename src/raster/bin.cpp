@@ -14,8 +14,9 @@ PixelRect TileBins::tileRect(int tile) const {
           std::min(height_, (ty + 1) * kTileSize) - 1};
 }
 
-void TileBins::bin(const std::vector<DrawRecord>& records) {
-  for (const DrawRecord& r : records) {
+void TileBins::bin(const RecordArena& records) {
+  for (std::size_t i = 0; i < records.size(); ++i) {
+    const DrawRecord& r = records[i];
     const TriangleSetup& t = r.setup;
     for (int ty = t.minY / kTileSize; ty <= t.maxY / kTileSize; ++ty)
       for (int tx = t.minX / kTileSize; tx <= t.maxX / kTileSize; ++tx)

@@ -18,7 +18,7 @@ class TileBins {
   PixelRect tileRect(int tile) const;
   // Appends every record to the tiles its pixel bounding box overlaps. The records must stay where
   // they are until clear().
-  void bin(const std::vector<DrawRecord>& records);
+  void bin(const RecordArena& records);
   const std::vector<const DrawRecord*>& records(int tile) const { return bins_[std::size_t(tile)]; }
   void clear();
 

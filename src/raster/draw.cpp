@@ -1,6 +1,5 @@
 #include "raster/draw.h"
 
-#include "raster/clip.h"
 #include "raster/fragment.h"
 #include "raster/labels.h"
 
@@ -10,14 +9,19 @@
 
 namespace illum {
 
+DrawTarget::DrawTarget(const FrameContext& frame, const Scene& scene, Framebuffer& fb, PixelProbe* probe)
+    : frame(frame), scene(scene), fb(fb), probe(probe) {
+  for (const Object& o : scene.objects) layouts.push_back(AttributeLayout::forObject(frame, o, probe != nullptr));
+}
+
 void recordProbe(const DrawTarget& target, const DrawRecord& record, const std::array<Real, 3>& w, const Color4& lit,
                  const Vec4* texel, const Color4& c) {
   const Object& object = target.scene.objects[record.object];
   const std::size_t objectIndex = record.object, triangle = record.triangle;
   const TriangleSetup& t = record.setup;
-  const ProvokingVertex& flat = record.flat;
+  const AttributeLayout& l = target.layout(record);
+  const VertexValues v[3] = {{record.vertex(0, l), l}, {record.vertex(1, l), l}, {record.vertex(2, l), l}};
   PixelProbe& p = *target.probe;
-  const auto& v = t.vertex;
   const bool back = target.frame.lightModel.twoSided && !t.frontFacing;
   p.hit = true;
   p.object = objectIndex;
@@ -30,20 +34,21 @@ void recordProbe(const DrawTarget& target, const DrawRecord& record, const std::
   p.blended = target.frame.blend && c.a < 1;  // alpha 1 blends to the fragment itself
   p.weights = w;
   for (std::size_t i = 0; i < 3; ++i) {
-    p.vertexColors[i] = back ? v[i].back : v[i].front;
-    p.vertexPositions[i] = v[i].eyePosition;
-    p.vertexNormals[i] = back ? -v[i].eyeNormal : v[i].eyeNormal;
-    p.vertexMaterials[i] = object.mesh->colors.empty() ? object.material : withVertexColor(object.material, v[i].color);
+    p.vertexColors[i] = v[i].lit();  // already the side shown
+    p.vertexPositions[i] = v[i].position();
+    p.vertexNormals[i] = back ? -v[i].normal() : v[i].normal();
+    p.vertexMaterials[i] = object.mesh->colors.empty() ? object.material : withVertexColor(object.material, v[i].color());
   }
   p.material = object.material;
   if (!object.mesh->colors.empty())
-    p.material = withVertexColor(object.material, w[0] * v[0].color + w[1] * v[1].color + w[2] * v[2].color);
+    p.material = withVertexColor(object.material, w[0] * v[0].color() + w[1] * v[1].color() + w[2] * v[2].color());
   if (target.frame.shading == Shading::Flat) {
-    p.eyePosition = flat.eyePosition;
-    p.eyeNormal = flat.eyeNormal;
+    const Real* provoking = record.provoking(l);
+    p.eyePosition = Vec3(provoking[0], provoking[1], provoking[2]);
+    p.eyeNormal = Vec3(provoking[3], provoking[4], provoking[5]);
   } else {
-    p.eyePosition = w[0] * v[0].eyePosition + w[1] * v[1].eyePosition + w[2] * v[2].eyePosition;
-    const Vec3 n = w[0] * v[0].eyeNormal + w[1] * v[1].eyeNormal + w[2] * v[2].eyeNormal;
+    p.eyePosition = w[0] * v[0].position() + w[1] * v[1].position() + w[2] * v[2].position();
+    const Vec3 n = w[0] * v[0].normal() + w[1] * v[1].normal() + w[2] * v[2].normal();
     p.eyeNormal = glm::length(n) > 0 ? glm::normalize(n) : Vec3(0, 0, 1);
   }
   if (back) p.eyeNormal = -p.eyeNormal;
@@ -58,23 +63,22 @@ void drawPixels(const DrawTarget& target, const DrawRecord& record, const PixelR
   const Object& object = target.scene.objects[record.object];
   const TriangleSetup& t = record.setup;
   const FrameContext& frame = target.frame;
-  const bool back = frame.lightModel.twoSided && !t.frontFacing;
+  const AttributeLayout& l = target.layout(record);
   const bool vertexColors = !object.mesh->colors.empty();
   const Texture* texture = kTextured ? object.diffuseTexture.get() : nullptr;
-  const Color4 flatColor = back ? record.flat.back : record.flat.front;
   const int probeRow = kProbe ? frame.height - 1 - target.probe->y : -1;  // GL rows run bottom up
   rasterizeTriangle(t, rect, [&](int x, int y, Real l0, Real l1, Real l2) {
     const Real z = l0 * t.z[0] + l1 * t.z[1] + l2 * t.z[2];
     if (!target.fb.depthTest(x, y, z)) return;
     ++fragments;
     Color4 c;
-    if constexpr (kShading == Shading::Flat) c = flatColor;
-    else if constexpr (kShading == Shading::Gouraud) c = shadeGouraudFragment(frame, t, perspectiveWeights(t, l0, l1, l2));
-    else c = shadePhongFragment(frame, object.material, vertexColors, t, perspectiveWeights(t, l0, l1, l2));
+    if constexpr (kShading == Shading::Flat) c = record.flat;
+    else if constexpr (kShading == Shading::Gouraud) c = gouraudColor(record, l, perspectiveWeights(t, l0, l1, l2));
+    else c = shadePhongFragment(frame, object.material, vertexColors, record, l, perspectiveWeights(t, l0, l1, l2));
     const Color4 lit = c;
     // GL_MODULATE: the lit colour times the texel, alpha included.
     Vec4 texel(1);
-    if constexpr (kTextured) c *= (texel = sampleDiffuseTexture(*texture, t, l0, l1, l2));
+    if constexpr (kTextured) c *= (texel = sampleDiffuseTexture(*texture, record, l, l0, l1, l2));
     if constexpr (kBlend) target.fb.blendColor(x, y, c);
     else target.fb.writeColor(x, y, c);
     if constexpr (kProbe)
@@ -110,42 +114,6 @@ void drawRecord(const DrawTarget& target, const DrawRecord& record, const PixelR
     case Shading::Gouraud: return drawPixels<Shading::Gouraud>(target, record, rect, fragments);
     case Shading::Phong: return drawPixels<Shading::Phong>(target, record, rect, fragments);
   }
-}
-
-std::size_t setupTriangles(const FrameContext& frame, const Object& object, std::uint32_t objectIndex,
-                           const std::vector<ShadedVertex>& vertices, std::size_t first, std::size_t last,
-                           std::vector<DrawRecord>& out) {
-  const std::size_t before = out.size();
-  const auto& indices = object.mesh->indices;
-  std::vector<ShadedVertex> polygon;
-  polygon.reserve(9);
-  for (std::size_t t = first; t < last; ++t) {
-    const std::size_t i = 3 * t;
-    const ShadedVertex &a = vertices[indices[i]], &b = vertices[indices[i + 1]], &c = vertices[indices[i + 2]];
-    const ProvokingVertex flat{c.front, c.back, c.eyePosition, c.eyeNormal};
-    const ClipResult kind = classifyTriangle(a, b, c, frame.width, frame.height);
-    if (kind == ClipResult::Outside) continue;
-    // Most triangles need no cut: set up straight into the record.
-    const auto emit = [&](const ShadedVertex& v0, const ShadedVertex& v1, const ShadedVertex& v2) {
-      DrawRecord& r = out.emplace_back();
-      if (!setupTriangle(v0, v1, v2, frame.width, frame.height, r.setup)) {
-        out.pop_back();
-        return;
-      }
-      r.flat = flat;
-      r.object = objectIndex;
-      r.triangle = std::uint32_t(t);
-    };
-    if (kind == ClipResult::Inside) {
-      emit(a, b, c);
-      continue;
-    }
-    polygon.clear();
-    if (clipTriangle({a, b, c}, frame.width, frame.height, polygon) == ClipResult::Outside) continue;
-    // The clipped polygon is convex: draw it as a fan.
-    for (std::size_t k = 1; k + 1 < polygon.size(); ++k) emit(polygon[0], polygon[k], polygon[k + 1]);
-  }
-  return out.size() - before;
 }
 
 namespace {

@@ -1,10 +1,11 @@
 // What the two drivers of the pipeline share (pipeline.cpp, binned and parallel; reference/, in
-// submission order on one thread): turning an object's triangles into self-contained draw records
-// (clip → setup), and drawing one record's fragments (rasterize → fragment → framebuffer).
+// submission order on one thread): drawing one record's fragments (rasterize → fragment →
+// framebuffer), the drawing order and the finished frame. Records come from draw_record.h.
 #pragma once
 
 #include <illum/render.h>
 
+#include "raster/draw_record.h"
 #include "raster/frame_context.h"
 #include "raster/framebuffer.h"
 #include "raster/rasterize.h"
@@ -16,34 +17,17 @@
 
 namespace illum {
 
-// Flat shading's colours and what they were lit with: GL's provoking vertex is the triangle's last.
-struct ProvokingVertex {
-  Color4 front, back;
-  Vec3 eyePosition, eyeNormal;
-};
-
-// One triangle ready to draw, needing nothing but the frame and its object.
-struct DrawRecord {
-  TriangleSetup setup;
-  ProvokingVertex flat;
-  std::uint32_t object = 0;    // index into Scene::objects
-  std::uint32_t triangle = 0;  // of that object's mesh
-};
-
 // What every triangle of a frame draws into.
 struct DrawTarget {
   const FrameContext& frame;
   const Scene& scene;
   Framebuffer& fb;
   PixelProbe* probe;  // null unless a pixel is watched
-};
+  std::vector<AttributeLayout> layouts;  // per object: what its records carry
 
-// Clips and sets up triangles [first, last) of `object` (its vertices already through the vertex
-// stage), appending a record for each drawn (clipped) piece in submission order. Returns how many
-// were appended.
-std::size_t setupTriangles(const FrameContext& frame, const Object& object, std::uint32_t objectIndex,
-                           const std::vector<ShadedVertex>& vertices, std::size_t first, std::size_t last,
-                           std::vector<DrawRecord>& out);
+  DrawTarget(const FrameContext& frame, const Scene& scene, Framebuffer& fb, PixelProbe* probe);
+  const AttributeLayout& layout(const DrawRecord& r) const { return layouts[r.object]; }
+};
 
 // Draws the record's pixels inside `rect`; adds the fragments that passed the depth test.
 void drawRecord(const DrawTarget& target, const DrawRecord& record, const PixelRect& rect, std::size_t& fragments);

@@ -2,36 +2,36 @@
 
 namespace illum {
 
-PhongSurface phongSurface(const FrameContext& frame, bool vertexColors, const TriangleSetup& t,
+PhongSurface phongSurface(const FrameContext& frame, bool vertexColors, const DrawRecord& r, const AttributeLayout& l,
                           const std::array<Real, 3>& w) {
-  const auto& v = t.vertex;
+  const VertexValues v[3] = {{r.vertex(0, l), l}, {r.vertex(1, l), l}, {r.vertex(2, l), l}};
   PhongSurface s;
-  s.color = vertexColors ? w[0] * v[0].color + w[1] * v[1].color + w[2] * v[2].color : Color4(1);
-  s.position = w[0] * v[0].eyePosition + w[1] * v[1].eyePosition + w[2] * v[2].eyePosition;
-  const Vec3 normal = w[0] * v[0].eyeNormal + w[1] * v[1].eyeNormal + w[2] * v[2].eyeNormal;
+  s.color = vertexColors ? w[0] * v[0].color() + w[1] * v[1].color() + w[2] * v[2].color() : Color4(1);
+  s.position = w[0] * v[0].position() + w[1] * v[1].position() + w[2] * v[2].position();
+  const Vec3 normal = w[0] * v[0].normal() + w[1] * v[1].normal() + w[2] * v[2].normal();
   const Real len = glm::length(normal);
   s.normal = len > 0 ? normal / len : Vec3(0, 0, 1);
   // Two-sided lighting lights back faces with −N, as GL does per vertex.
-  if (frame.lightModel.twoSided && !t.frontFacing) s.normal = -s.normal;
+  if (frame.lightModel.twoSided && !r.setup.frontFacing) s.normal = -s.normal;
   return s;
 }
 
 Color4 shadePhongFragment(const FrameContext& frame, const Material& baseMaterial, bool vertexColors,
-                          const TriangleSetup& t, const std::array<Real, 3>& w) {
-  const PhongSurface p = phongSurface(frame, vertexColors, t, w);
+                          const DrawRecord& r, const AttributeLayout& l, const std::array<Real, 3>& w) {
+  const PhongSurface p = phongSurface(frame, vertexColors, r, l, w);
   const Material material = vertexColors ? withVertexColor(baseMaterial, p.color) : baseMaterial;
   const SurfaceGeometry s{p.position, p.normal, viewerDirection(p.position, frame.lightModel.localViewer)};
   return clampedColor(evaluateTerms(frame.lights, frame.lightModel, material, frame.model, s), material);
 }
 
-}  // namespace illum
-
-namespace illum {
-
-Vec4 sampleDiffuseTexture(const Texture& texture, const TriangleSetup& t, Real l0, Real l1, Real l2) {
+Vec4 sampleDiffuseTexture(const Texture& texture, const DrawRecord& r, const AttributeLayout& l, Real l0, Real l1,
+                          Real l2) {
+  const TriangleSetup& t = r.setup;
+  const Vec2 uv0 = VertexValues{r.vertex(0, l), l}.uv(), uv1 = VertexValues{r.vertex(1, l), l}.uv(),
+             uv2 = VertexValues{r.vertex(2, l), l}.uv();
   const auto uvAt = [&](Real a, Real b, Real c) {
     const auto w = perspectiveWeights(t, a, b, c);
-    return w[0] * t.vertex[0].uv + w[1] * t.vertex[1].uv + w[2] * t.vertex[2].uv;
+    return w[0] * uv0 + w[1] * uv1 + w[2] * uv2;
   };
   // Screen-space barycentrics are linear: one pixel right adds a·256/area, one up adds b·256/area.
   const Real step = Real(kSubpixelOne) / Real(t.area2);

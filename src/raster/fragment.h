@@ -4,6 +4,7 @@
 //   phong:   normal and eye position interpolated perspective-correctly, lit per pixel.
 #pragma once
 
+#include "raster/draw_record.h"
 #include "raster/frame_context.h"
 #include "raster/setup.h"
 
@@ -25,24 +26,23 @@ struct PhongSurface {
   Vec3 position, normal;
   Color4 color;
 };
-PhongSurface phongSurface(const FrameContext& frame, bool vertexColors, const TriangleSetup& t,
+PhongSurface phongSurface(const FrameContext& frame, bool vertexColors, const DrawRecord& r, const AttributeLayout& l,
                           const std::array<Real, 3>& w);
 
 // The per-pixel lighting of Phong shading, one pixel at a time (the binned pipeline lights its
 // pixels in batches, shade_tile.cpp, with the same equation).
-Color4 shadePhongFragment(const FrameContext& frame, const Material& material, bool vertexColors,
-                          const TriangleSetup& t, const std::array<Real, 3>& w);
+Color4 shadePhongFragment(const FrameContext& frame, const Material& material, bool vertexColors, const DrawRecord& r,
+                          const AttributeLayout& l, const std::array<Real, 3>& w);
 
-// The texel that modulates the pixel (x, y), trilinearly filtered for the pixel's footprint,
-// which is found by evaluating the perspective-correct uv one pixel to the right and one up.
-Vec4 sampleDiffuseTexture(const Texture& texture, const TriangleSetup& t, Real l0, Real l1, Real l2);
+// The texel that modulates the pixel, trilinearly filtered for the pixel's footprint, which is
+// found by evaluating the perspective-correct uv one pixel to the right and one up.
+Vec4 sampleDiffuseTexture(const Texture& texture, const DrawRecord& r, const AttributeLayout& l, Real l0, Real l1,
+                          Real l2);
 
-// Gouraud: interpolated vertex colours of the visible side.
-inline Color4 shadeGouraudFragment(const FrameContext& frame, const TriangleSetup& t, const std::array<Real, 3>& w) {
-  const bool back = frame.lightModel.twoSided && !t.frontFacing;
-  const auto& v = t.vertex;
-  return back ? w[0] * v[0].back + w[1] * v[1].back + w[2] * v[2].back
-              : w[0] * v[0].front + w[1] * v[1].front + w[2] * v[2].front;
+// Gouraud: the vertex colours (lit for the side shown), interpolated.
+inline Color4 gouraudColor(const DrawRecord& r, const AttributeLayout& l, const std::array<Real, 3>& w) {
+  return w[0] * VertexValues{r.vertex(0, l), l}.lit() + w[1] * VertexValues{r.vertex(1, l), l}.lit() +
+         w[2] * VertexValues{r.vertex(2, l), l}.lit();
 }
 
 }  // namespace illum

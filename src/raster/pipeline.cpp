@@ -26,7 +26,7 @@ constexpr std::size_t kBatchRecords = 1 << 13;   // records gathered before they
 class BinnedRenderer {
  public:
   BinnedRenderer(const Scene& scene, const FrameContext& frame, Framebuffer& fb, PixelProbe* probe)
-      : frame_(frame), target_{frame, scene, fb, probe}, bins_(frame.width, frame.height),
+      : frame_(frame), target_(frame, scene, fb, probe), bins_(frame.width, frame.height),
         tileFragments_(std::size_t(bins_.tileCount()), 0) {}
 
   void drawObject(const Object& object, std::uint32_t index) {
@@ -45,13 +45,13 @@ class BinnedRenderer {
       const std::size_t c1 = std::min(chunks, c0 + slice);
       if (pool_.size() < used_ + (c1 - c0)) pool_.resize(used_ + (c1 - c0));
       tbb::parallel_for(c0, c1, [&](std::size_t c) {
-        std::vector<DrawRecord>& out = pool_[used_ + (c - c0)];
-        out.clear();
+        RecordArena& out = pool_[used_ + (c - c0)];
+        out.reset(target_.layouts[index]);
         setupTriangles(frame_, object, index, vertices_, c * kTriangleChunk, std::min(triangles, (c + 1) * kTriangleChunk),
                        out);
       });
       for (std::size_t c = c0; c < c1; ++c) {
-        const std::vector<DrawRecord>& part = pool_[used_++];
+        const RecordArena& part = pool_[used_++];
         bins_.bin(part);
         batched_ += part.size();
         stats_.trianglesDrawn += part.size();
@@ -93,7 +93,7 @@ class BinnedRenderer {
   std::vector<std::size_t> tileFragments_;
   std::vector<ShadedVertex> vertices_;
   tbb::enumerable_thread_specific<TileScratch> scratch_;
-  std::vector<std::vector<DrawRecord>> pool_;  // per chunk; moving the outer vector keeps the records in place
+  std::vector<RecordArena> pool_;  // per chunk; moving the outer vector keeps the records in place
   std::size_t used_ = 0, batched_ = 0;
   RenderStats stats_;
 };

@@ -59,11 +59,10 @@ bool setupTriangle(const ShadedVertex& v0, const ShadedVertex& v1, const ShadedV
   if (out.minX > out.maxX || out.minY > out.maxY) return false;
 
   out.frontFacing = area2 > 0;
-  out.vertex = {v0, v1, v2};
-  if (area2 < 0) {
-    // Make the triangle counter-clockwise; attributes travel with their vertices.
+  out.swapped = area2 < 0;
+  if (out.swapped) {
+    // Make the triangle counter-clockwise; the caller moves the attributes along.
     std::swap(w[1], w[2]);
-    std::swap(out.vertex[1], out.vertex[2]);
     area2 = -area2;
   }
   out.area2 = area2;

@@ -19,15 +19,15 @@ struct EdgeFunction {
   std::int64_t at(std::int64_t x, std::int64_t y) const { return a * x + b * y + c; }
 };
 
-// Self-contained: the vertices travel by value, so a record stays valid after the clipped polygon
-// it came from is gone (triangles are binned, then drawn later by whichever thread owns a tile).
+// A triangle's geometry on screen, counter-clockwise (setup swaps the last two vertices of a
+// clockwise one and says so). Its attributes travel beside it (draw_record.h).
 struct TriangleSetup {
-  std::array<VertexAttributes, 3> vertex{};     // counter-clockwise on screen
-  std::array<Real, 3> z{};                      // window depth in [0,1]
-  std::array<Real, 3> invW{};                   // 1/w_clip, for perspective-correct attributes
-  std::array<EdgeFunction, 3> edge{};           // edge[i] is opposite vertex[i]
+  std::array<Real, 3> z;                        // window depth in [0,1]
+  std::array<Real, 3> invW;                     // 1/w_clip, for perspective-correct attributes
+  std::array<EdgeFunction, 3> edge;             // edge[i] is opposite vertex i
   std::int64_t area2 = 0;                       // twice the area, fixed-point², > 0
   bool frontFacing = true;                      // counter-clockwise as submitted (GL_CCW front)
+  bool swapped = false;                         // vertices 1 and 2 swapped to make it counter-clockwise
   int minX = 0, maxX = -1, minY = 0, maxY = -1; // pixels to visit, inside the viewport
 };
 

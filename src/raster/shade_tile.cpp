@@ -36,21 +36,20 @@ void writePixel(const DrawTarget& target, const DrawRecord& r, const VisiblePixe
 // Flat and Gouraud: the colours were lit at the vertices.
 void colorVertexLit(const DrawTarget& target, std::span<const DrawRecord* const> records, const PixelRect& rect,
                     const TileScratch& scratch) {
-  const bool twoSided = target.frame.lightModel.twoSided;
   for (int i = 0; i < kTileSize * kTileSize; ++i) {
     const std::uint32_t slot = scratch.winners[std::size_t(i)];
     if (slot == kNoWinner) continue;
     const DrawRecord& r = *records[slot];
     const VisiblePixel p = visiblePixel(r.setup, rect, i);
     const Color4 lit = target.frame.shading == Shading::Flat
-                           ? (twoSided && !r.setup.frontFacing ? r.flat.back : r.flat.front)
-                           : shadeGouraudFragment(target.frame, r.setup, perspectiveWeights(r.setup, p.l0, p.l1, p.l2));
+                           ? r.flat
+                           : gouraudColor(r, target.layout(r), perspectiveWeights(r.setup, p.l0, p.l1, p.l2));
     const Texture* texture = textureOf(target.scene.objects[r.object]);
     if (!texture) {
       writePixel(target, r, p, lit, nullptr);
       continue;
     }
-    const Vec4 texel = sampleDiffuseTexture(*texture, r.setup, p.l0, p.l1, p.l2);
+    const Vec4 texel = sampleDiffuseTexture(*texture, r, target.layout(r), p.l0, p.l1, p.l2);
     writePixel(target, r, p, lit, &texel);
   }
 }
@@ -69,11 +68,12 @@ class PhongBatch {
     const Object& object = target_.scene.objects[r.object];
     const VisiblePixel p = visiblePixel(r.setup, rect_, index);
     const PhongSurface surface =
-        phongSurface(target_.frame, !object.mesh->colors.empty(), r.setup, perspectiveWeights(r.setup, p.l0, p.l1, p.l2));
+        phongSurface(target_.frame, !object.mesh->colors.empty(), r, target_.layout(r),
+                     perspectiveWeights(r.setup, p.l0, p.l1, p.l2));
     for (int c = 0; c < 3; ++c) s_.soa[c][n_] = surface.position[c], s_.soa[3 + c][n_] = surface.normal[c];
     for (int c = 0; c < 4; ++c) s_.soa[6 + c][n_] = surface.color[c];
     if (const Texture* texture = textureOf(object)) {
-      const Vec4 texel = sampleDiffuseTexture(*texture, r.setup, p.l0, p.l1, p.l2);
+      const Vec4 texel = sampleDiffuseTexture(*texture, r, target_.layout(r), p.l0, p.l1, p.l2);
       for (int c = 0; c < 4; ++c) s_.soa[10 + c][n_] = texel[c];
     }
     s_.pixel[n_] = std::uint16_t(index);

@@ -8,18 +8,18 @@ Image renderSceneReference(const Scene& scene, RenderStats* statsOut) {
   const FrameContext frame = FrameContext::fromScene(scene);
   Framebuffer fb(scene.width, scene.height, scene.background);
   RenderStats stats;
-  const DrawTarget target{frame, scene, fb, nullptr};
+  const DrawTarget target(frame, scene, fb, nullptr);
   const PixelRect viewport{0, 0, scene.width - 1, scene.height - 1};
   std::vector<ShadedVertex> vertices;
-  std::vector<DrawRecord> records;
+  RecordArena records;
   for (const Object* object : drawingOrder(scene, frame)) {
     const auto index = std::uint32_t(object - scene.objects.data());
     vertices.resize(object->mesh->positions.size());
     runVertexStage(frame, *object, vertices, 0, vertices.size());
-    records.clear();
+    records.reset(target.layouts[index]);
     stats.trianglesIn += object->mesh->triangleCount();
     stats.trianglesDrawn += setupTriangles(frame, *object, index, vertices, 0, object->mesh->triangleCount(), records);
-    for (const DrawRecord& r : records) drawRecord(target, r, viewport, stats.fragmentsShaded);
+    for (std::size_t i = 0; i < records.size(); ++i) drawRecord(target, records[i], viewport, stats.fragmentsShaded);
   }
   Image image = finishFrame(fb, scene, stats);
   if (statsOut) *statsOut = stats;

@@ -1,0 +1,106 @@
+#include "raster/draw_record.h"
+
+#include "raster/clip.h"
+
+#include <cstring>
+
+namespace illum {
+
+AttributeLayout AttributeLayout::forObject(const FrameContext& frame, const Object& object, bool probe) {
+  const bool textured = object.diffuseTexture && !object.mesh->uvs.empty();
+  const bool colors = !object.mesh->colors.empty();
+  AttributeLayout l;
+  l.probe = probe;
+  const auto take = [&](int n) {
+    const int at = l.stride;
+    l.stride += n;
+    return at;
+  };
+  if (probe || frame.shading == Shading::Gouraud) l.lit = take(4);
+  if (probe || frame.shading == Shading::Phong) l.position = take(3), l.normal = take(3);
+  if (probe || (frame.shading == Shading::Phong && colors)) l.color = take(4);
+  if (textured) l.uv = take(2);
+  return l;
+}
+
+void RecordArena::reset(const AttributeLayout& layout) {
+  layout_ = layout;
+  count_ = 0;
+  const std::size_t bytes = sizeof(DrawRecord) + layout.reals() * sizeof(Real);
+  const std::size_t blocks = (bytes + sizeof(Block) - 1) / sizeof(Block);
+  if (blocks != blocksPerRecord_) capacity_ = 0;  // a different size: the old records are gone anyway
+  blocksPerRecord_ = blocks;
+}
+
+DrawRecord& RecordArena::append() {
+  if (count_ == capacity_) {
+    const std::size_t capacity = std::max<std::size_t>(64, 2 * capacity_);
+    std::unique_ptr<Block[]> grown(new Block[capacity * blocksPerRecord_]);
+    if (count_) std::memcpy(grown.get(), blocks_.get(), count_ * blocksPerRecord_ * sizeof(Block));
+    blocks_ = std::move(grown);
+    capacity_ = capacity;
+  }
+  return *new (blocks_.get() + count_++ * blocksPerRecord_) DrawRecord;
+}
+
+namespace {
+
+// Copies the values the layout carries from vertex `v`, for the side the triangle shows.
+void packVertex(const ShadedVertex& v, bool back, const AttributeLayout& l, Real* out) {
+  const auto put = [&](int at, const auto& value, int n) {
+    if (at >= 0)
+      for (int k = 0; k < n; ++k) out[at + k] = value[k];
+  };
+  put(l.lit, back ? v.back : v.front, 4);
+  put(l.position, v.eyePosition, 3);
+  put(l.normal, v.eyeNormal, 3);
+  put(l.color, v.color, 4);
+  put(l.uv, v.uv, 2);
+}
+
+}  // namespace
+
+std::size_t setupTriangles(const FrameContext& frame, const Object& object, std::uint32_t objectIndex,
+                           const std::vector<ShadedVertex>& vertices, std::size_t first, std::size_t last,
+                           RecordArena& out) {
+  const std::size_t before = out.size();
+  const AttributeLayout& layout = out.layout();
+  const auto& indices = object.mesh->indices;
+  std::vector<ShadedVertex> polygon;
+  for (std::size_t t = first; t < last; ++t) {
+    const std::size_t i = 3 * t;
+    const ShadedVertex &a = vertices[indices[i]], &b = vertices[indices[i + 1]], &c = vertices[indices[i + 2]];
+    const ClipResult kind = classifyTriangle(a, b, c, frame.width, frame.height);
+    if (kind == ClipResult::Outside) continue;
+    // c is the provoking vertex: flat shading shows its colour on every piece.
+    const auto emit = [&](const ShadedVertex& v0, const ShadedVertex& v1, const ShadedVertex& v2) {
+      DrawRecord& r = out.append();
+      if (!setupTriangle(v0, v1, v2, frame.width, frame.height, r.setup)) {
+        out.drop();
+        return;
+      }
+      const bool back = frame.lightModel.twoSided && !r.setup.frontFacing;
+      r.flat = back ? c.back : c.front;
+      r.object = objectIndex;
+      r.triangle = std::uint32_t(t);
+      // Counter-clockwise on screen: setup swapped the last two when the triangle came clockwise.
+      const ShadedVertex* ordered[3] = {&v0, r.setup.swapped ? &v2 : &v1, r.setup.swapped ? &v1 : &v2};
+      for (int k = 0; k < 3; ++k) packVertex(*ordered[k], back, layout, r.vertex(k, layout));
+      if (layout.probe) {
+        Real* p = r.vertex(3, layout);
+        for (int k = 0; k < 3; ++k) p[k] = c.eyePosition[k], p[3 + k] = c.eyeNormal[k];
+      }
+    };
+    if (kind == ClipResult::Inside) {
+      emit(a, b, c);
+      continue;
+    }
+    polygon.clear();
+    if (clipTriangle({a, b, c}, frame.width, frame.height, polygon) == ClipResult::Outside) continue;
+    // The clipped polygon is convex: draw it as a fan.
+    for (std::size_t k = 1; k + 1 < polygon.size(); ++k) emit(polygon[0], polygon[k], polygon[k + 1]);
+  }
+  return out.size() - before;
+}
+
+}  // namespace illum
