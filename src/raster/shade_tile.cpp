@@ -117,10 +117,32 @@ class PhongBatch {
 std::size_t drawOpaqueTile(const DrawTarget& target, std::span<const DrawRecord* const> records, const PixelRect& rect,
                            TileScratch& scratch) {
   Real* depth = target.fb.depthTile(rect.minX, rect.minY);
+  auto* color = reinterpret_cast<std::uint32_t*>(target.fb.colorTile(rect.minX, rect.minY));
+  const Shading shading = target.frame.shading;
+  // Flat and Gouraud colour their pixels in the depth pass itself, unless a texel or the probe
+  // needs the second pass (or the channels are double, which the SIMD conversion does not take).
+  const bool direct = sizeof(Real) == 4 && !target.probe && shading != Shading::Phong;
+  std::uint32_t* winners = scratch.winners.data();
+  bool anyWinner = false;
   std::size_t fragments = 0;
-  for (std::size_t i = 0; i < records.size(); ++i)
-    fragments += rasterizeDepth(records[i]->setup, rect, depth, std::uint32_t(i), scratch.winners.data());
-  if (target.frame.shading == Shading::Phong) {
+  for (std::size_t i = 0; i < records.size(); ++i) {
+    const DrawRecord& r = *records[i];
+    if (!direct || textureOf(target.scene.objects[r.object])) {
+      fragments += rasterizeDepth(r.setup, rect, depth, std::uint32_t(i), winners);
+      anyWinner = true;
+    } else if (shading == Shading::Flat) {
+      const std::uint32_t packed = std::uint32_t(toUnorm8(r.flat.r)) | std::uint32_t(toUnorm8(r.flat.g)) << 8 |
+                                   std::uint32_t(toUnorm8(r.flat.b)) << 16 | std::uint32_t(toUnorm8(r.flat.a)) << 24;
+      fragments += rasterizeFlat(r.setup, rect, depth, color, anyWinner ? winners : nullptr, packed);
+    } else {
+      const AttributeLayout& l = target.layout(r);
+      const Color4 lit[3] = {VertexValues{r.vertex(0, l), l}.lit(), VertexValues{r.vertex(1, l), l}.lit(),
+                             VertexValues{r.vertex(2, l), l}.lit()};
+      fragments += rasterizeGouraud(r.setup, rect, depth, color, anyWinner ? winners : nullptr, lit);
+    }
+  }
+  if (!anyWinner) return fragments;
+  if (shading == Shading::Phong) {
     PhongBatch batch(target, records, rect, scratch);
     for (int i = 0; i < kTileSize * kTileSize; ++i)
       if (scratch.winners[std::size_t(i)] != kNoWinner) batch.add(i, scratch.winners[std::size_t(i)]);

@@ -14,14 +14,21 @@ HWY_BEFORE_NAMESPACE();
 namespace illum::HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
-std::size_t RasterizeDepth(const TriangleSetup& t, const PixelRect& tile, Real* depth, std::uint32_t slot,
-                           std::uint32_t* winners) {
+using DD = hn::ScalableTag<double>;            // edge functions, exact
+using DR = hn::Rebind<Real, DD>;                // barycentrics, depth, colour: as the scalar path rounds them
+using DU = hn::Rebind<std::uint32_t, DD>;
+using VR = hn::VFromD<DR>;
+using MR = decltype(hn::FirstN(DR(), 0));
+
+// The depth pass over the triangle's pixels in `tile`; for each span of lanes that has fragments
+// passing GL_LESS, write(x, pass, l0, l1, l2) stores what the draw keeps (tile-local x).
+template <class Write>
+HWY_INLINE std::size_t DepthPass(const TriangleSetup& t, const PixelRect& tile, Real* depth, const Write& write) {
   const int minX = std::max(t.minX, tile.minX), maxX = std::min(t.maxX, tile.maxX);
   const int minY = std::max(t.minY, tile.minY), maxY = std::min(t.maxY, tile.maxY);
   if (minX > maxX || minY > maxY) return 0;
-  const hn::ScalableTag<double> dd;   // edge functions, exact
-  const hn::Rebind<Real, decltype(dd)> dr;  // barycentrics and depth, as the scalar path rounds them
-  const hn::Rebind<std::uint32_t, decltype(dd)> du;
+  const DD dd;
+  const DR dr;
   const int lanes = int(hn::Lanes(dd));
   // Rows start on a multiple of the lane count inside the tile: a vector never leaves the tile.
   const int startX = tile.minX + (minX - tile.minX) / lanes * lanes;
@@ -30,14 +37,14 @@ std::size_t RasterizeDepth(const TriangleSetup& t, const PixelRect& tile, Real* 
   const auto lo = hn::Set(dr, Real(minX - tile.minX)), hi = hn::Set(dr, Real(maxX - tile.minX));
   const auto invArea = hn::Set(dr, Real(1) / Real(t.area2));
   const auto z0 = hn::Set(dr, t.z[0]), z1 = hn::Set(dr, t.z[1]), z2 = hn::Set(dr, t.z[2]);
-  const auto slots = hn::Set(du, slot);
   std::int64_t step[3];
-  hn::VFromD<decltype(dd)> laneStep[3];
+  hn::VFromD<DD> laneStep[3], bias[3];
   for (int i = 0; i < 3; ++i) {
     step[i] = t.edge[i].a * kSubpixelOne;
     laneStep[i] = iota * hn::Set(dd, double(step[i]));
+    bias[i] = hn::Set(dd, double(t.edge[i].bias));
   }
-  const auto toReal = [&](hn::VFromD<decltype(dd)> v) {
+  const auto toReal = [&](hn::VFromD<DD> v) {
     if constexpr (sizeof(Real) == 4) return hn::DemoteTo(dr, v);  // rounds as int64 → float does
     else return v;
   };
@@ -47,8 +54,7 @@ std::size_t RasterizeDepth(const TriangleSetup& t, const PixelRect& tile, Real* 
     const std::int64_t fy = std::int64_t(y) * kSubpixelOne + half;
     const std::int64_t fx = std::int64_t(startX) * kSubpixelOne + half;
     std::int64_t e[3] = {t.edge[0].at(fx, fy), t.edge[1].at(fx, fy), t.edge[2].at(fx, fy)};
-    Real* depthRow = depth + (y - tile.minY) * kTileSize - tile.minX;
-    std::uint32_t* winnerRow = winners + (y - tile.minY) * kTileSize - tile.minX;
+    const int row = (y - tile.minY) * kTileSize - tile.minX;  // tile-local index of (0, y)
     auto xs = xIota;
     for (int x = startX; x <= maxX; x += lanes, xs = xs + hn::Set(dr, Real(lanes))) {
       const auto E0 = hn::Set(dd, double(e[0])) + laneStep[0];
@@ -58,22 +64,80 @@ std::size_t RasterizeDepth(const TriangleSetup& t, const PixelRect& tile, Real* 
       // Inside ⇔ E + bias ≥ 0 (the top-left rule folded into the bias); converting to Real keeps
       // the sign and zero, so the test can run in the narrower lanes.
       const auto zero = hn::Zero(dr);
-      const auto inside = hn::And(
-          hn::And(hn::And(toReal(E0 + hn::Set(dd, double(t.edge[0].bias))) >= zero,
-                          toReal(E1 + hn::Set(dd, double(t.edge[1].bias))) >= zero),
-                  toReal(E2 + hn::Set(dd, double(t.edge[2].bias))) >= zero),
-          hn::And(xs >= lo, xs <= hi));
+      const auto inside = hn::And(hn::And(hn::And(toReal(E0 + bias[0]) >= zero, toReal(E1 + bias[1]) >= zero),
+                                          toReal(E2 + bias[2]) >= zero),
+                                  hn::And(xs >= lo, xs <= hi));
       if (hn::AllFalse(dr, inside)) continue;
       const auto l0 = toReal(E0) * invArea, l1 = toReal(E1) * invArea, l2 = toReal(E2) * invArea;
       const auto z = l0 * z0 + l1 * z1 + l2 * z2;
-      const auto stored = hn::LoadU(dr, depthRow + x);
+      const auto stored = hn::LoadU(dr, depth + row + x);
       const auto pass = hn::And(inside, z < stored);
-      hn::BlendedStore(z, pass, dr, depthRow + x);
-      hn::BlendedStore(slots, hn::RebindMask(du, pass), du, winnerRow + x);
+      if (hn::AllFalse(dr, pass)) continue;
+      hn::BlendedStore(z, pass, dr, depth + row + x);
+      write(row + x, pass, l0, l1, l2);
       passed += hn::CountTrue(dr, pass);
     }
   }
   return passed;
+}
+
+std::size_t RasterizeDepth(const TriangleSetup& t, const PixelRect& tile, Real* depth, std::uint32_t slot,
+                           std::uint32_t* winners) {
+  const DU du;
+  const auto slots = hn::Set(du, slot);
+  return DepthPass(t, tile, depth, [&](int at, MR pass, VR, VR, VR) {
+    hn::BlendedStore(slots, hn::RebindMask(du, pass), du, winners + at);
+  });
+}
+
+// round(clamp(c)·255) of four channels into RGBA8 pixels, as toUnorm8 (framebuffer.h) does it:
+// the product and the half are exact in double, and truncation then rounds halves up.
+HWY_INLINE hn::VFromD<DU> PackUnorm8(VR r, VR g, VR b, VR a) {
+  const DR dr;
+  const DD dd;
+  const DU du;
+  const hn::Rebind<std::int32_t, DD> di;
+  const auto channel = [&](VR c) {
+    c = hn::Min(hn::Max(c, hn::Zero(dr)), hn::Set(dr, Real(1)));
+    const auto x = hn::PromoteTo(dd, c) * hn::Set(dd, 255.0) + hn::Set(dd, 0.5);
+    return hn::BitCast(du, hn::DemoteTo(di, x));  // truncates toward zero
+  };
+  return hn::Or(hn::Or(channel(r), hn::ShiftLeft<8>(channel(g))),
+                hn::Or(hn::ShiftLeft<16>(channel(b)), hn::ShiftLeft<24>(channel(a))));
+}
+
+// A pixel coloured here shows no record of the winners' pass any more.
+HWY_INLINE void ClearWinners(std::uint32_t* winners, int at, MR pass) {
+  const DU du;
+  if (winners) hn::BlendedStore(hn::Set(du, kNoWinner), hn::RebindMask(du, pass), du, winners + at);
+}
+
+std::size_t RasterizeFlat(const TriangleSetup& t, const PixelRect& tile, Real* depth, std::uint32_t* color,
+                          std::uint32_t* winners, std::uint32_t packed) {
+  const DU du;
+  const auto pixel = hn::Set(du, packed);
+  return DepthPass(t, tile, depth, [&](int at, MR pass, VR, VR, VR) {
+    hn::BlendedStore(pixel, hn::RebindMask(du, pass), du, color + at);
+    ClearWinners(winners, at, pass);
+  });
+}
+
+std::size_t RasterizeGouraud(const TriangleSetup& t, const PixelRect& tile, Real* depth, std::uint32_t* color,
+                             std::uint32_t* winners, const Color4* lit) {
+  const DR dr;
+  const DU du;
+  const VR w0 = hn::Set(dr, t.invW[0]), w1 = hn::Set(dr, t.invW[1]), w2 = hn::Set(dr, t.invW[2]);
+  return DepthPass(t, tile, depth, [&](int at, MR pass, VR l0, VR l1, VR l2) {
+    // perspectiveWeights (fragment.h) and gouraudColor, lane by lane.
+    const VR q0 = l0 * w0, q1 = l1 * w1, q2 = l2 * w2;
+    const VR inv = hn::Set(dr, Real(1)) / (q0 + q1 + q2);
+    const VR p0 = q0 * inv, p1 = q1 * inv, p2 = q2 * inv;
+    VR c[4];
+    for (int k = 0; k < 4; ++k)
+      c[k] = p0 * hn::Set(dr, lit[0][k]) + p1 * hn::Set(dr, lit[1][k]) + p2 * hn::Set(dr, lit[2][k]);
+    hn::BlendedStore(PackUnorm8(c[0], c[1], c[2], c[3]), hn::RebindMask(du, pass), du, color + at);
+    ClearWinners(winners, at, pass);
+  });
 }
 
 }  // namespace illum::HWY_NAMESPACE
@@ -83,10 +147,22 @@ HWY_AFTER_NAMESPACE();
 namespace illum {
 
 HWY_EXPORT(RasterizeDepth);
+HWY_EXPORT(RasterizeFlat);
+HWY_EXPORT(RasterizeGouraud);
 
 std::size_t rasterizeDepth(const TriangleSetup& t, const PixelRect& tile, Real* depth, std::uint32_t slot,
                            std::uint32_t* winners) {
   return HWY_DYNAMIC_DISPATCH(RasterizeDepth)(t, tile, depth, slot, winners);
+}
+
+std::size_t rasterizeFlat(const TriangleSetup& t, const PixelRect& tile, Real* depth, std::uint32_t* color,
+                          std::uint32_t* winners, std::uint32_t packed) {
+  return HWY_DYNAMIC_DISPATCH(RasterizeFlat)(t, tile, depth, color, winners, packed);
+}
+
+std::size_t rasterizeGouraud(const TriangleSetup& t, const PixelRect& tile, Real* depth, std::uint32_t* color,
+                             std::uint32_t* winners, const Color4* lit) {
+  return HWY_DYNAMIC_DISPATCH(RasterizeGouraud)(t, tile, depth, color, winners, lit);
 }
 
 }  // namespace illum

@@ -6,6 +6,8 @@
 
 #include "raster/rasterize.h"
 
+#include <illum/lighting.h>
+
 #include <cstddef>
 #include <cstdint>
 
@@ -19,5 +21,15 @@ constexpr std::uint32_t kNoWinner = 0xFFFFFFFF;
 // viewport. Returns the number of fragments that passed.
 std::size_t rasterizeDepth(const TriangleSetup& t, const PixelRect& tile, Real* depth, std::uint32_t slot,
                            std::uint32_t* winners);
+
+// Flat and Gouraud drawing in the same pass, for float colour channels (ILLUM_DOUBLE=OFF): where
+// the depth test passes, the pixel of `color` (the tile's RGBA8 pixels as 32-bit words, same
+// layout) gets the flat colour `packed`, or the three vertex colours `lit` (counter-clockwise
+// order) blended perspective-correctly, converted as Framebuffer::writeColor converts; and unless
+// `winners` is null, the pixel's winner is cleared (kNoWinner).
+std::size_t rasterizeFlat(const TriangleSetup& t, const PixelRect& tile, Real* depth, std::uint32_t* color,
+                          std::uint32_t* winners, std::uint32_t packed);
+std::size_t rasterizeGouraud(const TriangleSetup& t, const PixelRect& tile, Real* depth, std::uint32_t* color,
+                             std::uint32_t* winners, const Color4* lit);
 
 }  // namespace illum
