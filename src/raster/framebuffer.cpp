@@ -7,7 +7,7 @@ namespace illum {
 
 Framebuffer::Framebuffer(int width, int height, const Color4& clearColor)
     : width_(width), height_(height), tilesX_((width + kTileSize - 1) / kTileSize),
-      color_(std::size_t(tilesX_) * std::size_t((height + kTileSize - 1) / kTileSize) * kTileSize * kTileSize * 4),
+      color_(std::size_t(tilesX_) * std::size_t((height + kTileSize - 1) / kTileSize) * kTileBlock * 4),
       depth_(color_.size() / 4, Real(1)) {
   // glClearColor + glClearDepth(1) + glClear.
   const std::uint8_t clear[4] = {toUnorm8(clearColor.r), toUnorm8(clearColor.g), toUnorm8(clearColor.b),

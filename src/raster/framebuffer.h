@@ -15,6 +15,10 @@
 namespace illum {
 
 constexpr int kTileSize = 64;
+// Pixels after each tile's block that belong to no pixel: a vector that starts on the tile's last
+// row may run past it (its lanes outside the triangle masked) without touching the next tile.
+constexpr int kTilePadding = 16;
+constexpr std::size_t kTileBlock = std::size_t(kTileSize) * kTileSize + kTilePadding;
 
 // round(clamp(c)·255), halves away from zero, as std::lround would. With float channels the
 // product is exact in double (24 + 8 bits), so adding 0.5 is exact too and truncation rounds the
@@ -56,14 +60,14 @@ class Framebuffer {
   Image toImage() const;
 
   // The tile whose bottom-left pixel is (x0, y0) (multiples of kTileSize): kTileSize² depths and
-  // RGBA pixels, row by row from the bottom.
+  // RGBA pixels, row by row from the bottom, then kTilePadding spare ones.
   Real* depthTile(int x0, int y0) { return &depth_[index(x0, y0)]; }
   std::uint8_t* colorTile(int x0, int y0) { return &color_[index(x0, y0) * 4]; }
 
  private:
   std::size_t index(int x, int y) const {
     const std::size_t tile = std::size_t(y / kTileSize) * std::size_t(tilesX_) + std::size_t(x / kTileSize);
-    return tile * kTileSize * kTileSize + std::size_t(y % kTileSize) * kTileSize + std::size_t(x % kTileSize);
+    return tile * kTileBlock + std::size_t(y % kTileSize) * kTileSize + std::size_t(x % kTileSize);
   }
 
   int width_, height_, tilesX_;

@@ -17,7 +17,7 @@ namespace illum {
 // One thread's working memory for a tile, reused from tile to tile.
 struct TileScratch {
   static constexpr std::size_t kBatch = 256;  // Phong pixels lit together
-  std::array<std::uint32_t, kTileSize * kTileSize> winners;
+  std::array<std::uint32_t, kTileBlock> winners;  // the tile's layout, padding included
   // Phong batch, structure of arrays: eye position, normal, vertex colour, texel, lit colour.
   Real soa[18][kBatch];
   std::uint16_t pixel[kBatch];  // index inside the tile

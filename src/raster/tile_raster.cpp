@@ -30,8 +30,9 @@ HWY_INLINE std::size_t DepthPass(const TriangleSetup& t, const PixelRect& tile, 
   const DD dd;
   const DR dr;
   const int lanes = int(hn::Lanes(dd));
-  // Rows start on a multiple of the lane count inside the tile: a vector never leaves the tile.
-  const int startX = tile.minX + (minX - tile.minX) / lanes * lanes;
+  // Rows start at the triangle's first column: a vector may run past the tile's row into the next
+  // row or the tile's padding (framebuffer.h), never into another tile; those lanes are masked.
+  const int startX = minX;
   const auto iota = hn::Iota(dd, 0.0);
   const auto xIota = hn::Iota(dr, Real(startX - tile.minX));
   const auto lo = hn::Set(dr, Real(minX - tile.minX)), hi = hn::Set(dr, Real(maxX - tile.minX));
