@@ -41,11 +41,13 @@ int runBench(const BenchOptions& o) {
   const Scene scene = prepareScene(o.scene, &loadMs);
 
   RenderStats stats;
-  Image image = renderScene(scene, &stats);  // warm-up: caches, page faults, allocator
+  Renderer renderer;  // one renderer for every frame, as a batch or a turntable uses it
+  Image image;
+  renderer.render(scene, image, &stats);  // warm-up: caches, page faults, the renderer's memory
   std::vector<double> frameMs, encodeMs;
   for (int i = 0; i < o.frames; ++i) {
     const auto start = Clock::now();
-    image = renderScene(scene, &stats);
+    renderer.render(scene, image, &stats);
     frameMs.push_back(msSince(start));
   }
   std::size_t pngBytes = 0;

@@ -5,6 +5,7 @@
 #include <illum/scene.h>
 
 #include <array>
+#include <memory>
 
 namespace illum {
 
@@ -43,6 +44,25 @@ struct PixelProbe {
   Vec4 texel{1};             // GL_MODULATE's factor, when textured
   Color4 written{0};         // the fragment's colour: lit × texel, before 8-bit conversion and blending
   bool blended = false;      // source-over blending mixed it with what was there
+};
+
+// Renders frame after frame, keeping its working memory (framebuffer, tile bins, triangle
+// records, per-thread scratch) from one frame to the next: once warm, a frame of the same size
+// allocates nothing but what the scene's meshes need.
+class Renderer {
+ public:
+  Renderer();
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  // As renderScene, into `image` (its memory reused).
+  void render(const Scene& scene, Image& image, RenderStats* stats = nullptr, PixelProbe* probe = nullptr);
+
+  struct State;  // defined by the pipeline
+
+ private:
+  std::unique_ptr<State> state_;
 };
 
 // Renders like OpenGL 2.1 fixed-function (or its per-pixel equivalent) into an RGBA8 image,

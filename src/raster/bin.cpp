@@ -4,9 +4,14 @@
 
 namespace illum {
 
-TileBins::TileBins(int width, int height)
-    : width_(width), height_(height), tilesX_((width + kTileSize - 1) / kTileSize),
-      tilesY_((height + kTileSize - 1) / kTileSize), bins_(std::size_t(tilesX_) * std::size_t(tilesY_)) {}
+void TileBins::reset(int width, int height) {
+  width_ = width;
+  height_ = height;
+  tilesX_ = (width + kTileSize - 1) / kTileSize;
+  tilesY_ = (height + kTileSize - 1) / kTileSize;
+  bins_.resize(std::size_t(tilesX_) * std::size_t(tilesY_));
+  clear();
+}
 
 PixelRect TileBins::tileRect(int tile) const {
   const int tx = tile % tilesX_, ty = tile / tilesX_;

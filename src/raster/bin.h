@@ -12,7 +12,9 @@ namespace illum {
 
 class TileBins {
  public:
-  TileBins(int width, int height);
+  TileBins() = default;
+  // Tiles for a width × height viewport, all empty (their memory kept).
+  void reset(int width, int height);
 
   int tileCount() const { return tilesX_ * tilesY_; }
   PixelRect tileRect(int tile) const;
@@ -23,7 +25,7 @@ class TileBins {
   void clear();
 
  private:
-  int width_, height_, tilesX_, tilesY_;
+  int width_ = 0, height_ = 0, tilesX_ = 0, tilesY_ = 0;
   std::vector<std::vector<const DrawRecord*>> bins_;
 };
 

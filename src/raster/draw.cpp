@@ -116,24 +116,9 @@ void drawRecord(const DrawTarget& target, const DrawRecord& record, const PixelR
   }
 }
 
-namespace {
-
-// Pixels whose bytes differ from the cleared background's.
-std::size_t countPixelsUnlike(const Image& image, const Color4& background) {
-  const std::uint8_t clear[4] = {toUnorm8(background.r), toUnorm8(background.g), toUnorm8(background.b),
-                                 toUnorm8(background.a)};
-  std::size_t n = 0;
-  for (std::size_t i = 0; i < image.rgba.size(); i += 4) n += std::memcmp(&image.rgba[i], clear, 4) != 0;
-  return n;
-}
-
-}  // namespace
-
-Image finishFrame(const Framebuffer& fb, const Scene& scene, RenderStats& stats) {
-  Image image = fb.toImage();
-  stats.pixelsDrawn = countPixelsUnlike(image, scene.background);
+void finishFrame(const Framebuffer& fb, const Scene& scene, RenderStats& stats, Image& image) {
+  stats.pixelsDrawn = fb.toImage(image, scene.background);
   stats.labelsSkipped = !drawLabels(image, scene);
-  return image;
 }
 
 namespace {

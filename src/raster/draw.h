@@ -43,6 +43,6 @@ std::vector<const Object*> drawingOrder(const Scene& scene, const FrameContext& 
 
 // The finished picture: the framebuffer as an image, the pixels drawn counted (labels aside),
 // then the scene's labels drawn over it.
-Image finishFrame(const Framebuffer& fb, const Scene& scene, RenderStats& stats);
+void finishFrame(const Framebuffer& fb, const Scene& scene, RenderStats& stats, Image& image);
 
 }  // namespace illum

@@ -1,26 +1,70 @@
 #include "raster/framebuffer.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
+#include <atomic>
 #include <cstring>
 
 namespace illum {
+namespace {
 
-Framebuffer::Framebuffer(int width, int height, const Color4& clearColor)
-    : width_(width), height_(height), tilesX_((width + kTileSize - 1) / kTileSize),
-      color_(std::size_t(tilesX_) * std::size_t((height + kTileSize - 1) / kTileSize) * kTileBlock * 4),
-      depth_(color_.size() / 4, Real(1)) {
-  // glClearColor + glClearDepth(1) + glClear.
-  const std::uint8_t clear[4] = {toUnorm8(clearColor.r), toUnorm8(clearColor.g), toUnorm8(clearColor.b),
-                                 toUnorm8(clearColor.a)};
-  for (std::size_t i = 0; i < color_.size(); i += 4) std::memcpy(&color_[i], clear, 4);
+std::uint32_t packed(const Color4& c) {
+  const std::uint8_t bytes[4] = {toUnorm8(c.r), toUnorm8(c.g), toUnorm8(c.b), toUnorm8(c.a)};
+  std::uint32_t p;
+  std::memcpy(&p, bytes, 4);
+  return p;
+}
+
+}  // namespace
+
+void Framebuffer::reset(int width, int height, const Color4& clearColor) {
+  width_ = width;
+  height_ = height;
+  tilesX_ = (width + kTileSize - 1) / kTileSize;
+  const std::size_t tiles = std::size_t(tilesX_) * std::size_t((height + kTileSize - 1) / kTileSize);
+  // Sized without zero-filling twice: every tile is written below, each by the thread that will
+  // usually draw it.
+  if (depth_.size() != tiles * kTileBlock) {
+    depth_.resize(tiles * kTileBlock);
+    color_.resize(tiles * kTileBlock * 4);
+  }
+  const std::uint32_t clear = packed(clearColor);
+  tbb::parallel_for(std::size_t(0), tiles, [&](std::size_t t) {
+    std::fill_n(&depth_[t * kTileBlock], kTileBlock, Real(1));
+    std::uint8_t* c = &color_[t * kTileBlock * 4];
+    for (std::size_t i = 0; i < kTileBlock; ++i) std::memcpy(c + 4 * i, &clear, 4);
+  });
 }
 
 Image Framebuffer::toImage() const {
-  Image img(width_, height_);
-  for (int y = 0; y < height_; ++y)
-    for (int x = 0; x < width_; x += kTileSize)
-      std::memcpy(img.pixel(x, height_ - 1 - y), &color_[index(x, y) * 4], std::size_t(std::min(kTileSize, width_ - x)) * 4);
+  Image img;
+  toImage(img, Color4(0));
   return img;
+}
+
+std::size_t Framebuffer::toImage(Image& image, const Color4& background) const {
+  image.width = width_;
+  image.height = height_;
+  image.rgba.resize(std::size_t(width_) * std::size_t(height_) * 4);
+  const std::uint32_t clear = packed(background);
+  std::atomic<std::size_t> unlike{0};
+  tbb::parallel_for(0, (height_ + kTileSize - 1) / kTileSize, [&](int band) {
+    std::size_t n = 0;
+    for (int y = band * kTileSize; y < std::min(height_, (band + 1) * kTileSize); ++y)
+      for (int x = 0; x < width_; x += kTileSize) {
+        const std::uint8_t* src = &color_[index(x, y) * 4];
+        const int count = std::min(kTileSize, width_ - x);
+        std::memcpy(image.pixel(x, height_ - 1 - y), src, std::size_t(count) * 4);
+        for (int i = 0; i < count; ++i) {
+          std::uint32_t p;
+          std::memcpy(&p, src + 4 * i, 4);
+          n += p != clear;
+        }
+      }
+    unlike += n;
+  });
+  return unlike;
 }
 
 }  // namespace illum

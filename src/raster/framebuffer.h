@@ -31,7 +31,12 @@ inline std::uint8_t toUnorm8(Real c) {
 
 class Framebuffer {
  public:
-  Framebuffer(int width, int height, const Color4& clearColor);
+  Framebuffer() = default;
+  Framebuffer(int width, int height, const Color4& clearColor) { reset(width, height, clearColor); }
+
+  // glClearColor + glClearDepth(1) + glClear at a new size, keeping the memory when it is big
+  // enough (a renderer reuses one framebuffer from frame to frame); tiles cleared in parallel.
+  void reset(int width, int height, const Color4& clearColor);
 
   int width() const { return width_; }
   int height() const { return height_; }
@@ -58,6 +63,9 @@ class Framebuffer {
 
   // The picture as an image file stores it: row 0 at the top.
   Image toImage() const;
+  // The same into `image` (its memory reused), rows in parallel; returns how many pixels differ
+  // from `background` as toUnorm8 converts it.
+  std::size_t toImage(Image& image, const Color4& background) const;
 
   // The tile whose bottom-left pixel is (x0, y0) (multiples of kTileSize): kTileSize² depths and
   // RGBA pixels, row by row from the bottom, then kTilePadding spare ones.
@@ -70,7 +78,7 @@ class Framebuffer {
     return tile * kTileBlock + std::size_t(y % kTileSize) * kTileSize + std::size_t(x % kTileSize);
   }
 
-  int width_, height_, tilesX_;
+  int width_ = 0, height_ = 0, tilesX_ = 0;
   std::vector<std::uint8_t> color_;
   std::vector<Real> depth_;
 };

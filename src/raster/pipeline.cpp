@@ -23,36 +23,55 @@ constexpr std::size_t kVertexGrain = 4096;       // vertices per parallel task
 constexpr std::size_t kTriangleChunk = 1024;     // triangles set up per parallel task
 constexpr std::size_t kBatchRecords = 1 << 13;   // records gathered before they are binned and drawn
 
-class BinnedRenderer {
+}  // namespace
+
+// What a Renderer keeps from frame to frame.
+struct Renderer::State {
+  Framebuffer fb;
+  TileBins bins;
+  std::vector<std::size_t> tileFragments;
+  std::vector<ShadedVertex> vertices;
+  tbb::enumerable_thread_specific<TileScratch> scratch;
+  std::vector<RecordArena> pool;  // per chunk; moving the outer vector keeps the records in place
+};
+
+namespace {
+
+// One frame through the pipeline, in the renderer's working memory.
+class BinnedFrame {
  public:
-  BinnedRenderer(const Scene& scene, const FrameContext& frame, Framebuffer& fb, PixelProbe* probe)
-      : frame_(frame), target_(frame, scene, fb, probe), bins_(frame.width, frame.height),
-        tileFragments_(std::size_t(bins_.tileCount()), 0) {}
+  BinnedFrame(Renderer::State& state, const Scene& scene, const FrameContext& frame, PixelProbe* probe)
+      : s_(state), frame_(frame), target_(frame, scene, state.fb, probe) {
+    s_.fb.reset(scene.width, scene.height, scene.background);
+    s_.bins.reset(frame.width, frame.height);
+    s_.tileFragments.assign(std::size_t(s_.bins.tileCount()), 0);
+  }
 
   void drawObject(const Object& object, std::uint32_t index) {
-    vertices_.resize(object.mesh->positions.size());
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vertices_.size(), kVertexGrain),
+    auto& vertices = s_.vertices;
+    vertices.resize(object.mesh->positions.size());
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vertices.size(), kVertexGrain),
                       [&](const tbb::blocked_range<std::size_t>& r) {
-                        runVertexStage(frame_, object, vertices_, r.begin(), r.end());
+                        runVertexStage(frame_, object, vertices, r.begin(), r.end());
                       });
     const std::size_t triangles = object.mesh->triangleCount();
     stats_.trianglesIn += triangles;
     const std::size_t chunks = (triangles + kTriangleChunk - 1) / kTriangleChunk;
-    // A slice of chunks is set up in parallel, each into a vector of its own, then binned in
-    // chunk order; the records stay in their vectors until the batch is drawn.
+    // A slice of chunks is set up in parallel, each into an arena of its own, then binned in
+    // chunk order; the records stay in their arenas until the batch is drawn.
     const std::size_t slice = std::max<std::size_t>(1, kBatchRecords / kTriangleChunk);
     for (std::size_t c0 = 0; c0 < chunks; c0 += slice) {
       const std::size_t c1 = std::min(chunks, c0 + slice);
-      if (pool_.size() < used_ + (c1 - c0)) pool_.resize(used_ + (c1 - c0));
+      if (s_.pool.size() < used_ + (c1 - c0)) s_.pool.resize(used_ + (c1 - c0));
       tbb::parallel_for(c0, c1, [&](std::size_t c) {
-        RecordArena& out = pool_[used_ + (c - c0)];
+        RecordArena& out = s_.pool[used_ + (c - c0)];
         out.reset(target_.layouts[index]);
-        setupTriangles(frame_, object, index, vertices_, c * kTriangleChunk, std::min(triangles, (c + 1) * kTriangleChunk),
+        setupTriangles(frame_, object, index, vertices, c * kTriangleChunk, std::min(triangles, (c + 1) * kTriangleChunk),
                        out);
       });
       for (std::size_t c = c0; c < c1; ++c) {
-        const RecordArena& part = pool_[used_++];
-        bins_.bin(part);
+        const RecordArena& part = s_.pool[used_++];
+        s_.bins.bin(part);
         batched_ += part.size();
         stats_.trianglesDrawn += part.size();
       }
@@ -64,53 +83,57 @@ class BinnedRenderer {
   // opaque drawing shades each visible pixel once (shade_tile.h), blending fragment by fragment.
   void flush() {
     if (batched_ == 0) return;
-    tbb::parallel_for(0, bins_.tileCount(), [&](int tile) {
-      const PixelRect rect = bins_.tileRect(tile);
-      const auto& records = bins_.records(tile);
+    tbb::parallel_for(0, s_.bins.tileCount(), [&](int tile) {
+      const PixelRect rect = s_.bins.tileRect(tile);
+      const auto& records = s_.bins.records(tile);
       if (records.empty()) return;
-      std::size_t& fragments = tileFragments_[std::size_t(tile)];
+      std::size_t& fragments = s_.tileFragments[std::size_t(tile)];
       if (frame_.blend) {
         for (const DrawRecord* r : records) drawRecord(target_, *r, rect, fragments);
       } else {
-        fragments += drawOpaqueTile(target_, records, rect, scratch_.local());
+        fragments += drawOpaqueTile(target_, records, rect, s_.scratch.local());
       }
     });
-    bins_.clear();
+    s_.bins.clear();
     used_ = 0;
     batched_ = 0;
   }
 
   RenderStats stats() const {
     RenderStats s = stats_;
-    for (std::size_t f : tileFragments_) s.fragmentsShaded += f;
+    for (std::size_t f : s_.tileFragments) s.fragmentsShaded += f;
     return s;
   }
 
  private:
+  Renderer::State& s_;
   const FrameContext& frame_;
   DrawTarget target_;
-  TileBins bins_;
-  std::vector<std::size_t> tileFragments_;
-  std::vector<ShadedVertex> vertices_;
-  tbb::enumerable_thread_specific<TileScratch> scratch_;
-  std::vector<RecordArena> pool_;  // per chunk; moving the outer vector keeps the records in place
   std::size_t used_ = 0, batched_ = 0;
   RenderStats stats_;
 };
 
 }  // namespace
 
-Image renderScene(const Scene& scene, RenderStats* statsOut, PixelProbe* probe) {
+Renderer::Renderer() : state_(std::make_unique<State>()) {}
+Renderer::~Renderer() = default;
+
+void Renderer::render(const Scene& scene, Image& image, RenderStats* statsOut, PixelProbe* probe) {
   const FrameContext frame = FrameContext::fromScene(scene);
-  Framebuffer fb(scene.width, scene.height, scene.background);
   if (probe) probe->hit = false;
-  BinnedRenderer renderer(scene, frame, fb, probe);
+  BinnedFrame pass(*state_, scene, frame, probe);
   for (const Object* object : drawingOrder(scene, frame))
-    renderer.drawObject(*object, std::uint32_t(object - scene.objects.data()));
-  renderer.flush();
-  RenderStats stats = renderer.stats();
-  Image image = finishFrame(fb, scene, stats);
+    pass.drawObject(*object, std::uint32_t(object - scene.objects.data()));
+  pass.flush();
+  RenderStats stats = pass.stats();
+  finishFrame(state_->fb, scene, stats, image);
   if (statsOut) *statsOut = stats;
+}
+
+Image renderScene(const Scene& scene, RenderStats* stats, PixelProbe* probe) {
+  Renderer renderer;
+  Image image;
+  renderer.render(scene, image, stats, probe);
   return image;
 }
 

@@ -21,7 +21,8 @@ Image renderSceneReference(const Scene& scene, RenderStats* statsOut) {
     stats.trianglesDrawn += setupTriangles(frame, *object, index, vertices, 0, object->mesh->triangleCount(), records);
     for (std::size_t i = 0; i < records.size(); ++i) drawRecord(target, records[i], viewport, stats.fragmentsShaded);
   }
-  Image image = finishFrame(fb, scene, stats);
+  Image image;
+  finishFrame(fb, scene, stats, image);
   if (statsOut) *statsOut = stats;
   return image;
 }
