@@ -11,7 +11,13 @@ namespace illum {
 
 DrawTarget::DrawTarget(const FrameContext& frame, const Scene& scene, Framebuffer& fb, PixelProbe* probe)
     : frame(frame), scene(scene), fb(fb), probe(probe) {
-  for (const Object& o : scene.objects) layouts.push_back(AttributeLayout::forObject(frame, o, probe != nullptr));
+  litFromSurface = sizeof(Real) == 4 && !probe && frame.shading == Shading::Phong;
+  for (const Object& o : scene.objects) {
+    layouts.push_back(AttributeLayout::forObject(frame, o, probe != nullptr));
+    setups.push_back({frame.lights, frame.lightModel, frame.model, o.material});
+    colored.push_back(!o.mesh->colors.empty());
+    if (o.diffuseTexture && !o.mesh->uvs.empty()) litFromSurface = false;
+  }
 }
 
 void recordProbe(const DrawTarget& target, const DrawRecord& record, const std::array<Real, 3>& w, const Color4& lit,

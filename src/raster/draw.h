@@ -11,6 +11,7 @@
 #include "raster/rasterize.h"
 #include "raster/setup.h"
 #include "raster/vertex.h"
+#include "shading/shade_points.h"
 
 #include <cstdint>
 #include <vector>
@@ -24,6 +25,11 @@ struct DrawTarget {
   Framebuffer& fb;
   PixelProbe* probe;  // null unless a pixel is watched
   std::vector<AttributeLayout> layouts;  // per object: what its records carry
+  // Phong shading lit from the tile's visible surface in SIMD (shade_tile.h): float channels, no
+  // texture in the scene and no watched pixel. Then, per object, its lighting and vertex colours.
+  bool litFromSurface = false;
+  std::vector<ShadeSetup> setups;
+  std::vector<std::uint8_t> colored;
 
   DrawTarget(const FrameContext& frame, const Scene& scene, Framebuffer& fb, PixelProbe* probe);
   const AttributeLayout& layout(const DrawRecord& r) const { return layouts[r.object]; }

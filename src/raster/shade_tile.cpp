@@ -112,12 +112,47 @@ class PhongBatch {
   std::uint32_t object_ = 0;
 };
 
+// Phong from the tile's visible surface: interpolated in the depth pass, lit once per pixel.
+std::size_t drawLitSurface(const DrawTarget& target, std::span<const DrawRecord* const> records, const PixelRect& rect,
+                           Real* depth, std::uint32_t* color, TileScratch& scratch) {
+  Real (&plane)[10][kTileBlock] = scratch.surface;
+  const SurfaceTile out{{plane[0], plane[1], plane[2]},
+                        {plane[3], plane[4], plane[5]},
+                        {plane[6], plane[7], plane[8], plane[9]},
+                        scratch.owner.data()};
+  const bool twoSided = target.frame.lightModel.twoSided;
+  std::size_t fragments = 0;
+  for (const DrawRecord* r : records) {
+    const AttributeLayout& l = target.layout(*r);
+    SurfaceVertices v;
+    for (int k = 0; k < 3; ++k) {
+      const VertexValues values{r->vertex(k, l), l};
+      v.position[std::size_t(k)] = values.position();
+      v.normal[std::size_t(k)] = values.normal();
+      v.color[std::size_t(k)] = values.color();
+    }
+    v.colors = target.colored[r->object];
+    v.negate = twoSided && !r->setup.frontFacing;
+    v.owner = r->object;
+    fragments += rasterizeSurface(r->setup, rect, depth, v, out);
+  }
+  if (fragments == 0) return 0;
+  SurfacePoints points;
+  points.count = std::size_t(kTileSize) * kTileSize;
+  for (int c = 0; c < 3; ++c) points.position[c] = plane[c], points.normal[c] = plane[3 + c];
+  for (int c = 0; c < 4; ++c) points.color[c] = plane[6 + c];
+  shadeOwnedPoints(target.setups, target.colored, points, scratch.owner.data(), color);
+  std::fill_n(scratch.owner.begin(), points.count, kNoWinner);
+  return fragments;
+}
+
 }  // namespace
 
 std::size_t drawOpaqueTile(const DrawTarget& target, std::span<const DrawRecord* const> records, const PixelRect& rect,
                            TileScratch& scratch) {
   Real* depth = target.fb.depthTile(rect.minX, rect.minY);
   auto* color = reinterpret_cast<std::uint32_t*>(target.fb.colorTile(rect.minX, rect.minY));
+  if (target.litFromSurface) return drawLitSurface(target, records, rect, depth, color, scratch);
   const Shading shading = target.frame.shading;
   // Flat and Gouraud colour their pixels in the depth pass itself, unless a texel or the probe
   // needs the second pass (or the channels are double, which the SIMD conversion does not take).

@@ -1,8 +1,10 @@
-// Fragment stage of the binned pipeline, for opaque drawing: a tile's records go through the
-// depth pass first (tile_raster.h), which leaves in every pixel the one record it shows; then each
-// visible pixel is coloured once: flat and Gouraud from the record's colours, Phong lit in
-// batches of pixels by the SIMD equation (shade_points.h). The colours are those the one-pixel
-// path (draw.h) computes, fragment by fragment, with the same formulas.
+// Fragment stage of the binned pipeline, for opaque drawing. Flat and Gouraud colour their pixels
+// in the SIMD depth pass (tile_raster.h). Phong keeps the tile's visible surface (position,
+// normal, colour per pixel) from its depth pass and lights each visible pixel once, 16 at a time
+// (shade_points.h). With a texture or a watched pixel, the depth pass leaves in each pixel the
+// record it shows, and the visible pixels are coloured afterwards one by one (Phong lit in
+// batches). The colours are those the one-pixel path (draw.h) computes, fragment by fragment,
+// with the same formulas.
 #pragma once
 
 #include "raster/draw.h"
@@ -22,7 +24,13 @@ struct TileScratch {
   Real soa[18][kBatch];
   std::uint16_t pixel[kBatch];  // index inside the tile
   std::uint32_t slot[kBatch];   // which record
-  TileScratch() { winners.fill(kNoWinner); }
+  // Phong's visible surface (tile_raster.h): position, normal, colour planes and owners.
+  Real surface[10][kTileBlock];
+  std::array<std::uint32_t, kTileBlock> owner;
+  TileScratch() {
+    winners.fill(kNoWinner);
+    owner.fill(kNoWinner);
+  }
 };
 
 // Draws `records` (the tile's, in submission order) into the tile `rect` without blending.

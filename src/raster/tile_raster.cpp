@@ -5,6 +5,8 @@
 
 #include <hwy/highway.h>
 
+#include "math/unorm8-inl.h"
+
 #include "raster/framebuffer.h"
 #include "raster/tile_raster.h"
 
@@ -91,22 +93,6 @@ std::size_t RasterizeDepth(const TriangleSetup& t, const PixelRect& tile, Real* 
   });
 }
 
-// round(clamp(c)·255) of four channels into RGBA8 pixels, as toUnorm8 (framebuffer.h) does it:
-// the product and the half are exact in double, and truncation then rounds halves up.
-HWY_INLINE hn::VFromD<DU> PackUnorm8(VR r, VR g, VR b, VR a) {
-  const DR dr;
-  const DD dd;
-  const DU du;
-  const hn::Rebind<std::int32_t, DD> di;
-  const auto channel = [&](VR c) {
-    c = hn::Min(hn::Max(c, hn::Zero(dr)), hn::Set(dr, Real(1)));
-    const auto x = hn::PromoteTo(dd, c) * hn::Set(dd, 255.0) + hn::Set(dd, 0.5);
-    return hn::BitCast(du, hn::DemoteTo(di, x));  // truncates toward zero
-  };
-  return hn::Or(hn::Or(channel(r), hn::ShiftLeft<8>(channel(g))),
-                hn::Or(hn::ShiftLeft<16>(channel(b)), hn::ShiftLeft<24>(channel(a))));
-}
-
 // A pixel coloured here shows no record of the winners' pass any more.
 HWY_INLINE void ClearWinners(std::uint32_t* winners, int at, MR pass) {
   const DU du;
@@ -136,8 +122,42 @@ std::size_t RasterizeGouraud(const TriangleSetup& t, const PixelRect& tile, Real
     VR c[4];
     for (int k = 0; k < 4; ++k)
       c[k] = p0 * hn::Set(dr, lit[0][k]) + p1 * hn::Set(dr, lit[1][k]) + p2 * hn::Set(dr, lit[2][k]);
-    hn::BlendedStore(PackUnorm8(c[0], c[1], c[2], c[3]), hn::RebindMask(du, pass), du, color + at);
+    hn::BlendedStore(PackUnorm8(dr, c[0], c[1], c[2], c[3]), hn::RebindMask(du, pass), du, color + at);
     ClearWinners(winners, at, pass);
+  });
+}
+
+std::size_t RasterizeSurface(const TriangleSetup& t, const PixelRect& tile, Real* depth, const SurfaceVertices& v,
+                             const SurfaceTile& out) {
+  const DR dr;
+  const DU du;
+  const VR w0 = hn::Set(dr, t.invW[0]), w1 = hn::Set(dr, t.invW[1]), w2 = hn::Set(dr, t.invW[2]);
+  const auto owner = hn::Set(du, v.owner);
+  // Σ p_i · a_i in phongSurface's order.
+  const auto blend = [&](VR p0, VR p1, VR p2, Real a0, Real a1, Real a2) {
+    return p0 * hn::Set(dr, a0) + p1 * hn::Set(dr, a1) + p2 * hn::Set(dr, a2);
+  };
+  return DepthPass(t, tile, depth, [&](int at, MR pass, VR l0, VR l1, VR l2) {
+    const VR q0 = l0 * w0, q1 = l1 * w1, q2 = l2 * w2;
+    const VR inv = hn::Set(dr, Real(1)) / (q0 + q1 + q2);
+    const VR p0 = q0 * inv, p1 = q1 * inv, p2 = q2 * inv;
+    VR n[3];
+    for (int c = 0; c < 3; ++c) {
+      hn::BlendedStore(blend(p0, p1, p2, v.position[0][c], v.position[1][c], v.position[2][c]), pass, dr,
+                       out.position[c] + at);
+      n[c] = blend(p0, p1, p2, v.normal[0][c], v.normal[1][c], v.normal[2][c]);
+    }
+    const VR len = hn::Sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    const auto positive = len > hn::Zero(dr);
+    for (int c = 0; c < 3; ++c) {
+      VR unit = hn::IfThenElse(positive, n[c] / len, hn::Set(dr, Real(c == 2 ? 1 : 0)));
+      if (v.negate) unit = hn::Neg(unit);
+      hn::BlendedStore(unit, pass, dr, out.normal[c] + at);
+    }
+    if (v.colors)
+      for (int c = 0; c < 4; ++c)
+        hn::BlendedStore(blend(p0, p1, p2, v.color[0][c], v.color[1][c], v.color[2][c]), pass, dr, out.color[c] + at);
+    hn::BlendedStore(owner, hn::RebindMask(du, pass), du, out.owner + at);
   });
 }
 
@@ -150,6 +170,7 @@ namespace illum {
 HWY_EXPORT(RasterizeDepth);
 HWY_EXPORT(RasterizeFlat);
 HWY_EXPORT(RasterizeGouraud);
+HWY_EXPORT(RasterizeSurface);
 
 std::size_t rasterizeDepth(const TriangleSetup& t, const PixelRect& tile, Real* depth, std::uint32_t slot,
                            std::uint32_t* winners) {
@@ -164,6 +185,11 @@ std::size_t rasterizeFlat(const TriangleSetup& t, const PixelRect& tile, Real* d
 std::size_t rasterizeGouraud(const TriangleSetup& t, const PixelRect& tile, Real* depth, std::uint32_t* color,
                              std::uint32_t* winners, const Color4* lit) {
   return HWY_DYNAMIC_DISPATCH(RasterizeGouraud)(t, tile, depth, color, winners, lit);
+}
+
+std::size_t rasterizeSurface(const TriangleSetup& t, const PixelRect& tile, Real* depth, const SurfaceVertices& v,
+                             const SurfaceTile& out) {
+  return HWY_DYNAMIC_DISPATCH(RasterizeSurface)(t, tile, depth, v, out);
 }
 
 }  // namespace illum

@@ -8,6 +8,7 @@
 
 #include <illum/lighting.h>
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 
@@ -31,5 +32,28 @@ std::size_t rasterizeFlat(const TriangleSetup& t, const PixelRect& tile, Real* d
                           std::uint32_t* winners, std::uint32_t packed);
 std::size_t rasterizeGouraud(const TriangleSetup& t, const PixelRect& tile, Real* depth, std::uint32_t* color,
                              std::uint32_t* winners, const Color4* lit);
+
+// Phong shading's first pass: the visible surface of one tile, kept as planes in the tile's
+// layout (kTileBlock values each), to be lit once per pixel afterwards (shadeSurfaces).
+struct SurfaceTile {
+  Real* position[3];
+  Real* normal[3];
+  Real* color[4];          // written only for triangles with vertex colours
+  std::uint32_t* owner;    // the object shown (kNoWinner: nothing drawn this pass)
+};
+
+// What a triangle's pixels interpolate, in its counter-clockwise order.
+struct SurfaceVertices {
+  std::array<Vec3, 3> position, normal;
+  std::array<Color4, 3> color;
+  bool colors = false;     // vertex colours (GL_COLOR_MATERIAL)
+  bool negate = false;     // two-sided lighting of a back face: light with −N
+  std::uint32_t owner = 0;
+};
+
+// Where the depth test passes: the perspective-correct position, the renormalized normal and the
+// colour (exactly as phongSurface in fragment.h computes them) and the owner.
+std::size_t rasterizeSurface(const TriangleSetup& t, const PixelRect& tile, Real* depth, const SurfaceVertices& v,
+                             const SurfaceTile& out);
 
 }  // namespace illum

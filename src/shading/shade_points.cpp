@@ -5,6 +5,7 @@
 #define HWY_TARGET_INCLUDE "shading/shade_points.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 
+#include "math/unorm8-inl.h"
 #include "shading/gl_lighting-inl.h"
 #include "shading/shade_points.h"
 
@@ -71,6 +72,55 @@ void ShadePoints(const ShadeSetup& setup, const SurfacePoints& p, Real* const ou
     for (int c = 0; c < 4; ++c) out[c][i + k] = result[c][k];
 }
 
+void ShadeOwnedPoints(std::span<const ShadeSetup> setups, std::span<const std::uint8_t> colored,
+                      const SurfacePoints& p, const std::uint32_t* owner, std::uint32_t* rgba) {
+  if constexpr (sizeof(Real) == 4) {
+    const hn::ScalableTag<float> d;
+    const hn::RebindToUnsigned<decltype(d)> du;
+    const hn::ScalableTag<double> dd;
+    const hn::Rebind<float, decltype(dd)> dh;  // as many floats as a double vector holds
+    using V = hn::VFromD<decltype(d)>;
+    const std::size_t lanes = hn::Lanes(d), half = hn::Lanes(dd);
+    const auto none = hn::Set(du, kNoOwner);
+    HWY_ALIGN float lit[4][hn::MaxLanes(d)];
+    HWY_ALIGN std::uint32_t packed[hn::MaxLanes(d)];
+    for (std::size_t i = 0; i < p.count; i += lanes) {
+      const auto owners = hn::LoadU(du, owner + i);
+      auto todo = owners != none;
+      if (hn::AllFalse(du, todo)) continue;
+      SurfaceL<V> s;
+      s.P = {hn::LoadU(d, p.position[0] + i), hn::LoadU(d, p.position[1] + i), hn::LoadU(d, p.position[2] + i)};
+      s.N = {hn::LoadU(d, p.normal[0] + i), hn::LoadU(d, p.normal[1] + i), hn::LoadU(d, p.normal[2] + i)};
+      // Lanes of one owner at a time (mostly there is one).
+      while (!hn::AllFalse(du, todo)) {
+        const std::uint32_t o = owner[i + std::size_t(hn::FindFirstTrue(du, todo))];
+        const auto mine = hn::And(todo, owners == hn::Set(du, o));
+        const ShadeSetup& setup = setups[o];
+        s.toViewer = ToViewer(d, s.P, setup.lightModel.localViewer);
+        MaterialColorsL<V> colors = UniformColors(d, setup.material);
+        if (colored[o]) {
+          const Vec3L<V> c{hn::LoadU(d, p.color[0] + i), hn::LoadU(d, p.color[1] + i), hn::LoadU(d, p.color[2] + i)};
+          colors = {c, c, hn::LoadU(d, p.color[3] + i)};
+        }
+        const TermsL<V> terms = ShadeGl(d, setup.lights, setup.lightModel, setup.material, colors, setup.model, s);
+        V r, g, b, a;
+        ClampedColor(d, terms, colors.alpha, r, g, b, a);
+        hn::Store(r, d, lit[0]);
+        hn::Store(g, d, lit[1]);
+        hn::Store(b, d, lit[2]);
+        hn::Store(a, d, lit[3]);
+        for (std::size_t k = 0; k < lanes; k += half) {
+          const auto word = PackUnorm8(dh, hn::Load(dh, lit[0] + k), hn::Load(dh, lit[1] + k), hn::Load(dh, lit[2] + k),
+                                       hn::Load(dh, lit[3] + k));
+          hn::Store(word, hn::Rebind<std::uint32_t, decltype(dh)>(), packed + k);
+        }
+        hn::BlendedStore(hn::Load(du, packed), mine, du, rgba + i);
+        todo = hn::AndNot(mine, todo);
+      }
+    }
+  }
+}
+
 const char* TargetName() { return hwy::TargetName(HWY_TARGET); }
 
 }  // namespace illum::HWY_NAMESPACE
@@ -83,6 +133,12 @@ namespace illum {
 
 HWY_EXPORT(ShadePoints);
 HWY_EXPORT(TargetName);
+HWY_EXPORT(ShadeOwnedPoints);
+
+void shadeOwnedPoints(std::span<const ShadeSetup> setups, std::span<const std::uint8_t> colored,
+                      const SurfacePoints& points, const std::uint32_t* owner, std::uint32_t* rgba) {
+  HWY_DYNAMIC_DISPATCH(ShadeOwnedPoints)(setups, colored, points, owner, rgba);
+}
 
 void shadePoints(const ShadeSetup& setup, const SurfacePoints& points, Real* const out[4]) {
   HWY_DYNAMIC_DISPATCH(ShadePoints)(setup, points, out);

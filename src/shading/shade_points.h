@@ -6,6 +6,7 @@
 #include <illum/lighting.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <span>
 
 namespace illum {
@@ -28,6 +29,14 @@ struct SurfacePoints {
 
 // out[c][i] = channel c of point i's clamped colour (what clampedColor(evaluateTerms(...)) gives).
 void shadePoints(const ShadeSetup& setup, const SurfacePoints& points, Real* const out[4]);
+
+// Lights the points that have an owner (owner[i] != kNoOwner) with that owner's setup, and with the
+// points' own colours where colored[owner]; writes each lit point's colour to rgba[i] as an RGBA8
+// word (toUnorm8 per channel, R in the lowest byte). The arrays are read in whole vectors: they
+// must hold `count` rounded up to a multiple of 16 values. Float channels only (ILLUM_DOUBLE=OFF).
+constexpr std::uint32_t kNoOwner = 0xFFFFFFFF;
+void shadeOwnedPoints(std::span<const ShadeSetup> setups, std::span<const std::uint8_t> colored,
+                      const SurfacePoints& points, const std::uint32_t* owner, std::uint32_t* rgba);
 
 // The name of the SIMD target the dispatch chose on this CPU (for `illum bench` and -v).
 const char* simdTargetName();
