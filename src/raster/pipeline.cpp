@@ -28,11 +28,16 @@ constexpr std::size_t kBatchRecords = 1 << 13;   // records gathered before they
 // What a Renderer keeps from frame to frame.
 struct Renderer::State {
   Framebuffer fb;
-  TileBins bins;
   std::vector<std::size_t> tileFragments;
   std::vector<ShadedVertex> vertices;
   tbb::enumerable_thread_specific<TileScratch> scratch;
-  std::vector<RecordArena> pool;  // per chunk; moving the outer vector keeps the records in place
+  // Per chunk of triangles: its records and which tiles each touches, filled by one task.
+  struct Chunk {
+    RecordArena records;  // moving a Chunk keeps the records in place
+    TileBins bins;
+  };
+  std::vector<Chunk> pool;
+  tbb::enumerable_thread_specific<std::vector<const DrawRecord*>> tileRecords;  // one tile's, gathered
 };
 
 namespace {
@@ -43,8 +48,8 @@ class BinnedFrame {
   BinnedFrame(Renderer::State& state, const Scene& scene, const FrameContext& frame, PixelProbe* probe)
       : s_(state), frame_(frame), target_(frame, scene, state.fb, probe) {
     s_.fb.reset(scene.width, scene.height, scene.background);
-    s_.bins.reset(frame.width, frame.height);
-    s_.tileFragments.assign(std::size_t(s_.bins.tileCount()), 0);
+    tiles_.reset(frame.width, frame.height);
+    s_.tileFragments.assign(std::size_t(tiles_.tileCount()), 0);
   }
 
   void drawObject(const Object& object, std::uint32_t index) {
@@ -57,23 +62,24 @@ class BinnedFrame {
     const std::size_t triangles = object.mesh->triangleCount();
     stats_.trianglesIn += triangles;
     const std::size_t chunks = (triangles + kTriangleChunk - 1) / kTriangleChunk;
-    // A slice of chunks is set up in parallel, each into an arena of its own, then binned in
-    // chunk order; the records stay in their arenas until the batch is drawn.
+    // A slice of chunks is set up and binned in parallel, each chunk into an arena and bins of its
+    // own; a tile then draws its records chunk by chunk, in submission order.
     const std::size_t slice = std::max<std::size_t>(1, kBatchRecords / kTriangleChunk);
     for (std::size_t c0 = 0; c0 < chunks; c0 += slice) {
       const std::size_t c1 = std::min(chunks, c0 + slice);
       if (s_.pool.size() < used_ + (c1 - c0)) s_.pool.resize(used_ + (c1 - c0));
       tbb::parallel_for(c0, c1, [&](std::size_t c) {
-        RecordArena& out = s_.pool[used_ + (c - c0)];
-        out.reset(target_.layouts[index]);
+        Renderer::State::Chunk& chunk = s_.pool[used_ + (c - c0)];
+        chunk.records.reset(target_.layouts[index]);
         setupTriangles(frame_, object, index, vertices, c * kTriangleChunk, std::min(triangles, (c + 1) * kTriangleChunk),
-                       out);
+                       chunk.records);
+        chunk.bins.reset(frame_.width, frame_.height);
+        chunk.bins.bin(chunk.records);
       });
       for (std::size_t c = c0; c < c1; ++c) {
-        const RecordArena& part = s_.pool[used_++];
-        s_.bins.bin(part);
-        batched_ += part.size();
-        stats_.trianglesDrawn += part.size();
+        const std::size_t n = s_.pool[used_++].records.size();
+        batched_ += n;
+        stats_.trianglesDrawn += n;
       }
       if (batched_ >= kBatchRecords) flush();
     }
@@ -83,9 +89,14 @@ class BinnedFrame {
   // opaque drawing shades each visible pixel once (shade_tile.h), blending fragment by fragment.
   void flush() {
     if (batched_ == 0) return;
-    tbb::parallel_for(0, s_.bins.tileCount(), [&](int tile) {
-      const PixelRect rect = s_.bins.tileRect(tile);
-      const auto& records = s_.bins.records(tile);
+    tbb::parallel_for(0, tiles_.tileCount(), [&](int tile) {
+      const PixelRect rect = tiles_.tileRect(tile);
+      auto& records = s_.tileRecords.local();
+      records.clear();
+      for (std::size_t c = 0; c < used_; ++c) {
+        const auto& part = s_.pool[c].bins.records(tile);
+        records.insert(records.end(), part.begin(), part.end());
+      }
       if (records.empty()) return;
       std::size_t& fragments = s_.tileFragments[std::size_t(tile)];
       if (frame_.blend) {
@@ -94,7 +105,6 @@ class BinnedFrame {
         fragments += drawOpaqueTile(target_, records, rect, s_.scratch.local());
       }
     });
-    s_.bins.clear();
     used_ = 0;
     batched_ = 0;
   }
@@ -109,6 +119,7 @@ class BinnedFrame {
   Renderer::State& s_;
   const FrameContext& frame_;
   DrawTarget target_;
+  TileBins tiles_;  // only its tile rectangles: the records are binned per chunk
   std::size_t used_ = 0, batched_ = 0;
   RenderStats stats_;
 };
