@@ -32,11 +32,19 @@ inline std::uint8_t toUnorm8(Real c) {
 class Framebuffer {
  public:
   Framebuffer() = default;
-  Framebuffer(int width, int height, const Color4& clearColor) { reset(width, height, clearColor); }
+  // Cleared at once, every tile.
+  Framebuffer(int width, int height, const Color4& clearColor) {
+    reset(width, height, clearColor);
+    clearAll();
+  }
 
   // glClearColor + glClearDepth(1) + glClear at a new size, keeping the memory when it is big
-  // enough (a renderer reuses one framebuffer from frame to frame); tiles cleared in parallel.
+  // enough (a renderer reuses one framebuffer from frame to frame). The clear is lazy: a tile is
+  // cleared by clearTile when it is first drawn (by the thread that draws it, while it is hot in
+  // its cache), and a tile never drawn is background in toImage without ever being touched.
   void reset(int width, int height, const Color4& clearColor);
+  void clearTile(int x0, int y0);
+  void clearAll();  // every tile, for drawing that is not tile by tile
 
   int width() const { return width_; }
   int height() const { return height_; }
@@ -74,11 +82,14 @@ class Framebuffer {
 
  private:
   std::size_t index(int x, int y) const {
-    const std::size_t tile = std::size_t(y / kTileSize) * std::size_t(tilesX_) + std::size_t(x / kTileSize);
-    return tile * kTileBlock + std::size_t(y % kTileSize) * kTileSize + std::size_t(x % kTileSize);
+    return tileOf(x, y) * kTileBlock + std::size_t(y % kTileSize) * kTileSize + std::size_t(x % kTileSize);
   }
 
+  std::size_t tileOf(int x, int y) const { return std::size_t(y / kTileSize) * std::size_t(tilesX_) + std::size_t(x / kTileSize); }
+
   int width_ = 0, height_ = 0, tilesX_ = 0;
+  std::uint32_t clear_ = 0;            // the clear colour as an RGBA8 word
+  std::vector<std::uint8_t> cleared_;  // per tile: cleared since reset
   std::vector<std::uint8_t> color_;
   std::vector<Real> depth_;
 };

@@ -98,6 +98,7 @@ class BinnedFrame {
         records.insert(records.end(), part.begin(), part.end());
       }
       if (records.empty()) return;
+      s_.fb.clearTile(rect.minX, rect.minY);
       std::size_t& fragments = s_.tileFragments[std::size_t(tile)];
       if (frame_.blend) {
         for (const DrawRecord* r : records) drawRecord(target_, *r, rect, fragments);
