@@ -48,7 +48,8 @@ HWY_INLINE LightSample<V> SampleLight(D d, const EyeLight& light, const Vec3L<V>
     s.distance = Length(toLight);
     // A light exactly at the point shines along the normal.
     const auto away = s.distance > hn::Zero(d);
-    s.L = Select(away, toLight / hn::IfThenElse(away, s.distance, hn::Set(d, Real(1))), N);
+    const V inverse = hn::Set(d, Real(1)) / hn::IfThenElse(away, s.distance, hn::Set(d, Real(1)));
+    s.L = Select(away, inverse * toLight, N);
     s.attenuation = DistanceAttenuation(d, light.attenuation, s.distance);
   } else {
     const Vec3 towards(light.position);
