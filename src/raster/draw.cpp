@@ -52,12 +52,13 @@ void recordProbe(const DrawTarget& target, const DrawRecord& record, const std::
     const Real* provoking = record.provoking(l);
     p.eyePosition = Vec3(provoking[0], provoking[1], provoking[2]);
     p.eyeNormal = Vec3(provoking[3], provoking[4], provoking[5]);
+    if (back) p.eyeNormal = -p.eyeNormal;
   } else {
-    p.eyePosition = w[0] * v[0].position() + w[1] * v[1].position() + w[2] * v[2].position();
-    const Vec3 n = w[0] * v[0].normal() + w[1] * v[1].normal() + w[2] * v[2].normal();
-    p.eyeNormal = glm::length(n) > 0 ? glm::normalize(n) : Vec3(0, 0, 1);
+    // Where Phong shading lit this pixel (for Gouraud, the point between the vertices).
+    const PhongSurface surface = phongSurface(target.frame, false, record, l, w);
+    p.eyePosition = surface.position;
+    p.eyeNormal = surface.normal;
   }
-  if (back) p.eyeNormal = -p.eyeNormal;
 }
 
 namespace {

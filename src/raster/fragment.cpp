@@ -10,7 +10,7 @@ PhongSurface phongSurface(const FrameContext& frame, bool vertexColors, const Dr
   s.position = w[0] * v[0].position() + w[1] * v[1].position() + w[2] * v[2].position();
   const Vec3 normal = w[0] * v[0].normal() + w[1] * v[1].normal() + w[2] * v[2].normal();
   const Real len = glm::length(normal);
-  s.normal = len > 0 ? normal / len : Vec3(0, 0, 1);
+  s.normal = len > 0 ? (Real(1) / len) * normal : Vec3(0, 0, 1);  // as the SIMD rasterizer does
   // Two-sided lighting lights back faces with −N, as GL does per vertex.
   if (frame.lightModel.twoSided && !r.setup.frontFacing) s.normal = -s.normal;
   return s;

@@ -149,8 +149,9 @@ std::size_t RasterizeSurface(const TriangleSetup& t, const PixelRect& tile, Real
     }
     const VR len = hn::Sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
     const auto positive = len > hn::Zero(dr);
+    const VR inverse = hn::Set(dr, Real(1)) / len;
     for (int c = 0; c < 3; ++c) {
-      VR unit = hn::IfThenElse(positive, n[c] / len, hn::Set(dr, Real(c == 2 ? 1 : 0)));
+      VR unit = hn::IfThenElse(positive, n[c] * inverse, hn::Set(dr, Real(c == 2 ? 1 : 0)));
       if (v.negate) unit = hn::Neg(unit);
       hn::BlendedStore(unit, pass, dr, out.normal[c] + at);
     }
