@@ -13,6 +13,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
+#include <tbb/partitioner.h>
 
 #include <algorithm>
 
@@ -38,6 +39,7 @@ struct Renderer::State {
   };
   std::vector<Chunk> pool;
   tbb::enumerable_thread_specific<std::vector<const DrawRecord*>> tileRecords;  // one tile's, gathered
+  tbb::affinity_partitioner tileAffinity;
 };
 
 namespace {
@@ -68,14 +70,17 @@ class BinnedFrame {
     for (std::size_t c0 = 0; c0 < chunks; c0 += slice) {
       const std::size_t c1 = std::min(chunks, c0 + slice);
       if (s_.pool.size() < used_ + (c1 - c0)) s_.pool.resize(used_ + (c1 - c0));
-      tbb::parallel_for(c0, c1, [&](std::size_t c) {
+      // Statically partitioned: a chunk's arena is set up, and later reused, by the same thread.
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(c0, c1, 1), [&](const tbb::blocked_range<std::size_t>& range) {
+       for (std::size_t c = range.begin(); c < range.end(); ++c) {
         Renderer::State::Chunk& chunk = s_.pool[used_ + (c - c0)];
         chunk.records.reset(target_.layouts[index]);
         setupTriangles(frame_, object, index, vertices, c * kTriangleChunk, std::min(triangles, (c + 1) * kTriangleChunk),
                        chunk.records);
         chunk.bins.reset(frame_.width, frame_.height);
         chunk.bins.bin(chunk.records);
-      });
+       }
+      }, tbb::static_partitioner());
       for (std::size_t c = c0; c < c1; ++c) {
         const std::size_t n = s_.pool[used_++].records.size();
         batched_ += n;
@@ -87,27 +92,36 @@ class BinnedFrame {
 
   // Draws every tile of what has been binned, each tile on one thread, its records in order:
   // opaque drawing shades each visible pixel once (shade_tile.h), blending fragment by fragment.
+  // The affinity partitioner gives a tile to the thread that drew it in the previous flush, while
+  // its pixels are still in that core's cache.
   void flush() {
     if (batched_ == 0) return;
-    tbb::parallel_for(0, tiles_.tileCount(), [&](int tile) {
-      const PixelRect rect = tiles_.tileRect(tile);
-      auto& records = s_.tileRecords.local();
-      records.clear();
-      for (std::size_t c = 0; c < used_; ++c) {
-        const auto& part = s_.pool[c].bins.records(tile);
-        records.insert(records.end(), part.begin(), part.end());
-      }
-      if (records.empty()) return;
-      s_.fb.clearTile(rect.minX, rect.minY);
-      std::size_t& fragments = s_.tileFragments[std::size_t(tile)];
-      if (frame_.blend) {
-        for (const DrawRecord* r : records) drawRecord(target_, *r, rect, fragments);
-      } else {
-        fragments += drawOpaqueTile(target_, records, rect, s_.scratch.local());
-      }
-    });
+    tbb::parallel_for(
+        tbb::blocked_range<int>(0, tiles_.tileCount()),
+        [&](const tbb::blocked_range<int>& range) {
+          for (int tile = range.begin(); tile < range.end(); ++tile) drawTile(tile);
+        },
+        s_.tileAffinity);
     used_ = 0;
     batched_ = 0;
+  }
+
+  void drawTile(int tile) {
+    auto& records = s_.tileRecords.local();
+    records.clear();
+    for (std::size_t c = 0; c < used_; ++c) {
+      const auto& part = s_.pool[c].bins.records(tile);
+      records.insert(records.end(), part.begin(), part.end());
+    }
+    if (records.empty()) return;
+    const PixelRect rect = tiles_.tileRect(tile);
+    s_.fb.clearTile(rect.minX, rect.minY);
+    std::size_t& fragments = s_.tileFragments[std::size_t(tile)];
+    if (frame_.blend) {
+      for (const DrawRecord* r : records) drawRecord(target_, *r, rect, fragments);
+    } else {
+      fragments += drawOpaqueTile(target_, records, rect, s_.scratch.local());
+    }
   }
 
   RenderStats stats() const {
