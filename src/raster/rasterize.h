@@ -20,7 +20,7 @@ void rasterizeTriangle(const TriangleSetup& t, const PixelRect& rect, FragmentFn
   const int minY = std::max(t.minY, rect.minY), maxY = std::min(t.maxY, rect.maxY);
   if (minX > maxX || minY > maxY) return;
   const std::int64_t half = kSubpixelOne / 2;
-  const Real invArea = Real(1) / Real(t.area2);
+  const Real invArea = t.invArea;
   for (int y = minY; y <= maxY; ++y) {
     const std::int64_t fy = std::int64_t(y) * kSubpixelOne + half;
     const std::int64_t fx0 = std::int64_t(minX) * kSubpixelOne + half;

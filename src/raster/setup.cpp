@@ -66,6 +66,7 @@ bool setupTriangle(const ShadedVertex& v0, const ShadedVertex& v1, const ShadedV
     area2 = -area2;
   }
   out.area2 = area2;
+  out.invArea = Real(1) / Real(area2);
   for (int i = 0; i < 3; ++i) {
     out.z[std::size_t(i)] = w[std::size_t(i)].z;
     out.invW[std::size_t(i)] = w[std::size_t(i)].invW;

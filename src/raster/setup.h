@@ -26,6 +26,7 @@ struct TriangleSetup {
   std::array<Real, 3> invW;                     // 1/w_clip, for perspective-correct attributes
   std::array<EdgeFunction, 3> edge;             // edge[i] is opposite vertex i
   std::int64_t area2 = 0;                       // twice the area, fixed-point², > 0
+  Real invArea = 0;                             // Real(1) / Real(area2): λi = E_i · invArea
   bool frontFacing = true;                      // counter-clockwise as submitted (GL_CCW front)
   bool swapped = false;                         // vertices 1 and 2 swapped to make it counter-clockwise
   int minX = 0, maxX = -1, minY = 0, maxY = -1; // pixels to visit, inside the viewport

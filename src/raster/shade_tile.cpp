@@ -15,7 +15,7 @@ VisiblePixel visiblePixel(const TriangleSetup& t, const PixelRect& rect, int ind
   const int x = rect.minX + index % kTileSize, y = rect.minY + index / kTileSize;
   const std::int64_t fx = std::int64_t(x) * kSubpixelOne + kSubpixelOne / 2;
   const std::int64_t fy = std::int64_t(y) * kSubpixelOne + kSubpixelOne / 2;
-  const Real invArea = Real(1) / Real(t.area2);
+  const Real invArea = t.invArea;
   return {x, y, Real(t.edge[0].at(fx, fy)) * invArea, Real(t.edge[1].at(fx, fy)) * invArea,
           Real(t.edge[2].at(fx, fy)) * invArea};
 }
