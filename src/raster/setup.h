@@ -14,22 +14,26 @@ constexpr std::int64_t kSubpixelOne = 1 << kSubpixelBits;
 
 // E(x, y) = a·x + b·y + c over fixed-point window coordinates; the inside is E > 0, or E = 0 on a
 // top or left edge (the bias folds that rule in: inside ⇔ E + bias ≥ 0).
+// a and b are coordinate differences, within ±2^24 inside the guard band (clip.h).
 struct EdgeFunction {
-  std::int64_t a = 0, b = 0, c = 0, bias = 0;
+  std::int32_t a, b;
+  std::int64_t c;
+  std::int32_t bias;
   std::int64_t at(std::int64_t x, std::int64_t y) const { return a * x + b * y + c; }
 };
 
 // A triangle's geometry on screen, counter-clockwise (setup swaps the last two vertices of a
-// clockwise one and says so). Its attributes travel beside it (draw_record.h).
+// clockwise one and says so). Its attributes travel beside it (draw_record.h). Left uninitialized
+// until setupTriangle fills it: records are written once, straight into their arena.
 struct TriangleSetup {
   std::array<Real, 3> z;                        // window depth in [0,1]
   std::array<Real, 3> invW;                     // 1/w_clip, for perspective-correct attributes
   std::array<EdgeFunction, 3> edge;             // edge[i] is opposite vertex i
-  std::int64_t area2 = 0;                       // twice the area, fixed-point², > 0
-  Real invArea = 0;                             // Real(1) / Real(area2): λi = E_i · invArea
-  bool frontFacing = true;                      // counter-clockwise as submitted (GL_CCW front)
-  bool swapped = false;                         // vertices 1 and 2 swapped to make it counter-clockwise
-  int minX = 0, maxX = -1, minY = 0, maxY = -1; // pixels to visit, inside the viewport
+  std::int64_t area2;                           // twice the area, fixed-point², > 0
+  Real invArea;                                 // Real(1) / Real(area2): λi = E_i · invArea
+  bool frontFacing;                             // counter-clockwise as submitted (GL_CCW front)
+  bool swapped;                                 // vertices 1 and 2 swapped to make it counter-clockwise
+  int minX, maxX, minY, maxY;                   // pixels to visit, inside the viewport
 };
 
 // Perspective division and the viewport transform of one clip-space position (glViewport(0,0,w,h),

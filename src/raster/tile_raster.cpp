@@ -133,23 +133,19 @@ std::size_t RasterizeSurface(const TriangleSetup& t, const PixelRect& tile, Real
   const DU du;
   const VR w0 = hn::Set(dr, t.invW[0]), w1 = hn::Set(dr, t.invW[1]), w2 = hn::Set(dr, t.invW[2]);
   const auto owner = hn::Set(du, v.owner);
-  // The vertices' values broadcast once: position, normal, colour of vertex k at [k][0..9].
-  VR a[3][10];
-  for (std::size_t k = 0; k < 3; ++k)
-    for (int c = 0; c < 4; ++c) {
-      if (c < 3) a[k][c] = hn::Set(dr, v.position[k][c]), a[k][3 + c] = hn::Set(dr, v.normal[k][c]);
-      a[k][6 + c] = hn::Set(dr, v.color[k][c]);
-    }
-  // Σ p_i · a_i in phongSurface's order.
-  const auto blend = [&](VR p0, VR p1, VR p2, int c) { return p0 * a[0][c] + p1 * a[1][c] + p2 * a[2][c]; };
+  // Σ p_i · a_i in phongSurface's order (broadcasts from memory, folded into the multiplies).
+  const auto blend = [&](VR p0, VR p1, VR p2, Real a0, Real a1, Real a2) {
+    return p0 * hn::Set(dr, a0) + p1 * hn::Set(dr, a1) + p2 * hn::Set(dr, a2);
+  };
   return DepthPass(t, tile, depth, [&](int at, MR pass, VR l0, VR l1, VR l2) {
     const VR q0 = l0 * w0, q1 = l1 * w1, q2 = l2 * w2;
     const VR inv = hn::Set(dr, Real(1)) / (q0 + q1 + q2);
     const VR p0 = q0 * inv, p1 = q1 * inv, p2 = q2 * inv;
     VR n[3];
     for (int c = 0; c < 3; ++c) {
-      hn::BlendedStore(blend(p0, p1, p2, c), pass, dr, out.position[c] + at);
-      n[c] = blend(p0, p1, p2, 3 + c);
+      hn::BlendedStore(blend(p0, p1, p2, v.position[0][c], v.position[1][c], v.position[2][c]), pass, dr,
+                       out.position[c] + at);
+      n[c] = blend(p0, p1, p2, v.normal[0][c], v.normal[1][c], v.normal[2][c]);
     }
     const VR len = hn::Sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
     const auto positive = len > hn::Zero(dr);
@@ -161,7 +157,7 @@ std::size_t RasterizeSurface(const TriangleSetup& t, const PixelRect& tile, Real
     }
     if (v.colors)
       for (int c = 0; c < 4; ++c)
-        hn::BlendedStore(blend(p0, p1, p2, 6 + c), pass, dr, out.color[c] + at);
+        hn::BlendedStore(blend(p0, p1, p2, v.color[0][c], v.color[1][c], v.color[2][c]), pass, dr, out.color[c] + at);
     hn::BlendedStore(owner, hn::RebindMask(du, pass), du, out.owner + at);
   });
 }
