@@ -112,6 +112,21 @@ class PhongBatch {
   std::uint32_t object_ = 0;
 };
 
+#if !ILLUM_USE_DOUBLE
+// Flat and Gouraud coloured in the depth pass itself; `winners` (or null) cleared where drawn.
+std::size_t drawColored(const DrawTarget& target, const DrawRecord& r, const PixelRect& rect, Real* depth,
+                        std::uint32_t* color, std::uint32_t* winners) {
+  if (target.frame.shading == Shading::Flat) {
+    const std::uint32_t packed = std::uint32_t(toUnorm8(r.flat.r)) | std::uint32_t(toUnorm8(r.flat.g)) << 8 |
+                                 std::uint32_t(toUnorm8(r.flat.b)) << 16 | std::uint32_t(toUnorm8(r.flat.a)) << 24;
+    return rasterizeFlat(r.setup, rect, depth, color, winners, packed);
+  }
+  const AttributeLayout& l = target.layout(r);
+  const Color4 lit[3] = {VertexValues{r.vertex(0, l), l}.lit(), VertexValues{r.vertex(1, l), l}.lit(),
+                         VertexValues{r.vertex(2, l), l}.lit()};
+  return rasterizeGouraud(r.setup, rect, depth, color, winners, lit);
+}
+
 // Phong from the tile's visible surface: interpolated in the depth pass, lit once per pixel.
 std::size_t drawLitSurface(const DrawTarget& target, std::span<const DrawRecord* const> records, const PixelRect& rect,
                            Real* depth, std::uint32_t* color, TileScratch& scratch) {
@@ -145,6 +160,7 @@ std::size_t drawLitSurface(const DrawTarget& target, std::span<const DrawRecord*
   std::fill_n(scratch.owner.begin(), points.count, kNoWinner);
   return fragments;
 }
+#endif  // !ILLUM_USE_DOUBLE
 
 }  // namespace
 
@@ -152,7 +168,9 @@ std::size_t drawOpaqueTile(const DrawTarget& target, std::span<const DrawRecord*
                            TileScratch& scratch) {
   Real* depth = target.fb.depthTile(rect.minX, rect.minY);
   auto* color = reinterpret_cast<std::uint32_t*>(target.fb.colorTile(rect.minX, rect.minY));
+#if !ILLUM_USE_DOUBLE
   if (target.litFromSurface) return drawLitSurface(target, records, rect, depth, color, scratch);
+#endif
   const Shading shading = target.frame.shading;
   // Flat and Gouraud colour their pixels in the depth pass itself, unless a texel or the probe
   // needs the second pass (or the channels are double, which the SIMD conversion does not take).
@@ -162,19 +180,14 @@ std::size_t drawOpaqueTile(const DrawTarget& target, std::span<const DrawRecord*
   std::size_t fragments = 0;
   for (std::size_t i = 0; i < records.size(); ++i) {
     const DrawRecord& r = *records[i];
-    if (!direct || textureOf(target.scene.objects[r.object])) {
-      fragments += rasterizeDepth(r.setup, rect, depth, std::uint32_t(i), winners);
-      anyWinner = true;
-    } else if (shading == Shading::Flat) {
-      const std::uint32_t packed = std::uint32_t(toUnorm8(r.flat.r)) | std::uint32_t(toUnorm8(r.flat.g)) << 8 |
-                                   std::uint32_t(toUnorm8(r.flat.b)) << 16 | std::uint32_t(toUnorm8(r.flat.a)) << 24;
-      fragments += rasterizeFlat(r.setup, rect, depth, color, anyWinner ? winners : nullptr, packed);
-    } else {
-      const AttributeLayout& l = target.layout(r);
-      const Color4 lit[3] = {VertexValues{r.vertex(0, l), l}.lit(), VertexValues{r.vertex(1, l), l}.lit(),
-                             VertexValues{r.vertex(2, l), l}.lit()};
-      fragments += rasterizeGouraud(r.setup, rect, depth, color, anyWinner ? winners : nullptr, lit);
+#if !ILLUM_USE_DOUBLE
+    if (direct && !textureOf(target.scene.objects[r.object])) {
+      fragments += drawColored(target, r, rect, depth, color, anyWinner ? winners : nullptr);
+      continue;
     }
+#endif
+    fragments += rasterizeDepth(r.setup, rect, depth, std::uint32_t(i), winners);
+    anyWinner = true;
   }
   if (!anyWinner) return fragments;
   if (shading == Shading::Phong) {

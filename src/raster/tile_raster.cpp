@@ -1,4 +1,30 @@
 // rasterizeDepth, compiled once per SIMD target (Highway's foreach_target), dispatched at run time.
+#include <illum/real.h>
+
+#if ILLUM_USE_DOUBLE
+// Double channels (-DILLUM_DOUBLE=ON): the depth pass by the scalar rasterizer (rasterize.h), with
+// the same formulas; the colouring passes are float-only and not used.
+#include "raster/framebuffer.h"
+#include "raster/tile_raster.h"
+
+namespace illum {
+
+std::size_t rasterizeDepth(const TriangleSetup& t, const PixelRect& tile, Real* depth, std::uint32_t slot,
+                           std::uint32_t* winners) {
+  std::size_t passed = 0;
+  rasterizeTriangle(t, tile, [&](int x, int y, Real l0, Real l1, Real l2) {
+    const Real z = l0 * t.z[0] + l1 * t.z[1] + l2 * t.z[2];
+    const int at = (y - tile.minY) * kTileSize + (x - tile.minX);
+    if (!(z < depth[at])) return;
+    depth[at] = z;
+    winners[at] = slot;
+    ++passed;
+  });
+  return passed;
+}
+
+}  // namespace illum
+#else
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "raster/tile_raster.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
@@ -195,3 +221,4 @@ std::size_t rasterizeSurface(const TriangleSetup& t, const PixelRect& tile, Real
 
 }  // namespace illum
 #endif  // HWY_ONCE
+#endif  // ILLUM_USE_DOUBLE

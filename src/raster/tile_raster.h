@@ -23,6 +23,7 @@ constexpr std::uint32_t kNoWinner = 0xFFFFFFFF;
 std::size_t rasterizeDepth(const TriangleSetup& t, const PixelRect& tile, Real* depth, std::uint32_t slot,
                            std::uint32_t* winners);
 
+#if !ILLUM_USE_DOUBLE
 // Flat and Gouraud drawing in the same pass, for float colour channels (ILLUM_DOUBLE=OFF): where
 // the depth test passes, the pixel of `color` (the tile's RGBA8 pixels as 32-bit words, same
 // layout) gets the flat colour `packed`, or the three vertex colours `lit` (counter-clockwise
@@ -55,5 +56,6 @@ struct SurfaceVertices {
 // colour (exactly as phongSurface in fragment.h computes them) and the owner.
 std::size_t rasterizeSurface(const TriangleSetup& t, const PixelRect& tile, Real* depth, const SurfaceVertices& v,
                              const SurfaceTile& out);
+#endif  // !ILLUM_USE_DOUBLE
 
 }  // namespace illum

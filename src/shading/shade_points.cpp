@@ -74,7 +74,8 @@ void ShadePoints(const ShadeSetup& setup, const SurfacePoints& p, Real* const ou
 
 void ShadeOwnedPoints(std::span<const ShadeSetup> setups, std::span<const std::uint8_t> colored,
                       const SurfacePoints& p, const std::uint32_t* owner, std::uint32_t* rgba) {
-  if constexpr (sizeof(Real) == 4) {
+#if !ILLUM_USE_DOUBLE  // float channels only
+  {
     const hn::ScalableTag<float> d;
     const hn::RebindToUnsigned<decltype(d)> du;
     const hn::ScalableTag<double> dd;
@@ -119,6 +120,9 @@ void ShadeOwnedPoints(std::span<const ShadeSetup> setups, std::span<const std::u
       }
     }
   }
+#else
+  (void)setups, (void)colored, (void)p, (void)owner, (void)rgba;
+#endif
 }
 
 const char* TargetName() { return hwy::TargetName(HWY_TARGET); }

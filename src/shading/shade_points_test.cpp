@@ -150,7 +150,7 @@ TEST(PowLobe, FollowsStdPowClosely) {
   EXPECT_EQ(Fs_Phong(Real(0.5), 1), Real(0.5));
   EXPECT_EQ(Fs_Phong(Real(0.25), Real(0.5)), Real(0.5));
   EXPECT_GT(Fs_Phong(Real(1e-39), Real(0.5)), Real(3e-20));  // a denormal base
-  EXPECT_EQ(Fs_Phong(Real(1e-3), 40), 0);                    // below the smallest float
+  if constexpr (sizeof(Real) == 4) EXPECT_EQ(Fs_Phong(Real(1e-3), 40), 0);  // below the smallest float
 }
 
 }  // namespace
