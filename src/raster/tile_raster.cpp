@@ -140,15 +140,18 @@ std::size_t RasterizeGouraud(const TriangleSetup& t, const PixelRect& tile, Real
   const DR dr;
   const DU du;
   const VR w0 = hn::Set(dr, t.invW[0]), w1 = hn::Set(dr, t.invW[1]), w2 = hn::Set(dr, t.invW[2]);
+  // Three alphas of exactly 1 blend to within a few ulps of 1, which converts to 255 every time.
+  const bool opaque = lit[0].a == 1 && lit[1].a == 1 && lit[2].a == 1;
   return DepthPass(t, tile, depth, [&](int at, MR pass, VR l0, VR l1, VR l2) {
     // perspectiveWeights (fragment.h) and gouraudColor, lane by lane.
     const VR q0 = l0 * w0, q1 = l1 * w1, q2 = l2 * w2;
     const VR inv = hn::Set(dr, Real(1)) / (q0 + q1 + q2);
     const VR p0 = q0 * inv, p1 = q1 * inv, p2 = q2 * inv;
     VR c[4];
-    for (int k = 0; k < 4; ++k)
+    for (int k = 0; k < (opaque ? 3 : 4); ++k)
       c[k] = p0 * hn::Set(dr, lit[0][k]) + p1 * hn::Set(dr, lit[1][k]) + p2 * hn::Set(dr, lit[2][k]);
-    hn::BlendedStore(PackUnorm8(dr, c[0], c[1], c[2], c[3]), hn::RebindMask(du, pass), du, color + at);
+    const auto pixels = opaque ? PackUnorm8(dr, c[0], c[1], c[2], 255u) : PackUnorm8(dr, c[0], c[1], c[2], c[3]);
+    hn::BlendedStore(pixels, hn::RebindMask(du, pass), du, color + at);
     ClearWinners(winners, at, pass);
   });
 }
