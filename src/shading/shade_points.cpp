@@ -12,24 +12,31 @@
 HWY_BEFORE_NAMESPACE();
 namespace illum::HWY_NAMESPACE {
 
-// Points [first, first + lanes) of `p`, read from and written to arrays offset by `first`.
-template <class D>
-HWY_INLINE void ShadeLanes(D d, const ShadeSetup& setup, const MaterialColorsL<hn::VFromD<D>>& uniform,
-                           const Real* const position[3], const Real* const normal[3], const Real* const color[4],
-                           Real* const out[4]) {
-  using V = hn::VFromD<D>;
-  SurfaceL<V> s;
-  s.P = {hn::LoadU(d, position[0]), hn::LoadU(d, position[1]), hn::LoadU(d, position[2])};
-  s.N = {hn::LoadU(d, normal[0]), hn::LoadU(d, normal[1]), hn::LoadU(d, normal[2])};
+// The clamped colour at each lane of `s` (its toViewer filled in here), with each lane's own
+// colour for GL_COLOR_MATERIAL when `color` is given (four arrays read at the lanes).
+template <class D, class V = hn::VFromD<D>>
+HWY_INLINE void LitColor(D d, const ShadeSetup& setup, SurfaceL<V>& s, const Real* const* color, V& r, V& g, V& b,
+                         V& a) {
   s.toViewer = ToViewer(d, s.P, setup.lightModel.localViewer);
-  MaterialColorsL<V> colors = uniform;
-  if (color[0]) {
+  MaterialColorsL<V> colors = UniformColors(d, setup.material);
+  if (color) {
     const Vec3L<V> c{hn::LoadU(d, color[0]), hn::LoadU(d, color[1]), hn::LoadU(d, color[2])};
     colors = {c, c, hn::LoadU(d, color[3])};
   }
   const TermsL<V> terms = ShadeGl(d, setup.lights, setup.lightModel, setup.material, colors, setup.model, s);
-  V r, g, b, a;
   ClampedColor(d, terms, colors.alpha, r, g, b, a);
+}
+
+// Points [first, first + lanes) of `p`, read from and written to arrays offset by `first`.
+template <class D>
+HWY_INLINE void ShadeLanes(D d, const ShadeSetup& setup, const Real* const position[3], const Real* const normal[3],
+                           const Real* const color[4], Real* const out[4]) {
+  using V = hn::VFromD<D>;
+  SurfaceL<V> s;
+  s.P = {hn::LoadU(d, position[0]), hn::LoadU(d, position[1]), hn::LoadU(d, position[2])};
+  s.N = {hn::LoadU(d, normal[0]), hn::LoadU(d, normal[1]), hn::LoadU(d, normal[2])};
+  V r, g, b, a;
+  LitColor(d, setup, s, color[0] ? color : nullptr, r, g, b, a);
   hn::StoreU(r, d, out[0]);
   hn::StoreU(g, d, out[1]);
   hn::StoreU(b, d, out[2]);
@@ -39,7 +46,6 @@ HWY_INLINE void ShadeLanes(D d, const ShadeSetup& setup, const MaterialColorsL<h
 void ShadePoints(const ShadeSetup& setup, const SurfacePoints& p, Real* const out[4]) {
   const hn::ScalableTag<Real> d;
   const std::size_t lanes = hn::Lanes(d);
-  const auto uniform = UniformColors(d, setup.material);
   const bool colored = p.color[0] != nullptr;
   std::size_t i = 0;
   for (; i + lanes <= p.count; i += lanes) {
@@ -48,7 +54,7 @@ void ShadePoints(const ShadeSetup& setup, const SurfacePoints& p, Real* const ou
     const Real* color[4] = {};
     if (colored) color[0] = p.color[0] + i, color[1] = p.color[1] + i, color[2] = p.color[2] + i, color[3] = p.color[3] + i;
     Real* const dst[4] = {out[0] + i, out[1] + i, out[2] + i, out[3] + i};
-    ShadeLanes(d, setup, uniform, position, normal, color, dst);
+    ShadeLanes(d, setup, position, normal, color, dst);
   }
   if (i == p.count) return;
   // The last few points: copied into full vectors, the spare lanes repeating the last point.
@@ -67,7 +73,7 @@ void ShadePoints(const ShadeSetup& setup, const SurfacePoints& p, Real* const ou
   const Real* color[4] = {};
   if (colored) color[0] = in[6], color[1] = in[7], color[2] = in[8], color[3] = in[9];
   Real* const dst[4] = {result[0], result[1], result[2], result[3]};
-  ShadeLanes(d, setup, uniform, position, normal, color, dst);
+  ShadeLanes(d, setup, position, normal, color, dst);
   for (std::size_t k = 0; i + k < p.count; ++k)
     for (int c = 0; c < 4; ++c) out[c][i + k] = result[c][k];
 }
@@ -96,16 +102,9 @@ void ShadeOwnedPoints(std::span<const ShadeSetup> setups, std::span<const std::u
       while (!hn::AllFalse(du, todo)) {
         const std::uint32_t o = owner[i + std::size_t(hn::FindFirstTrue(du, todo))];
         const auto mine = hn::And(todo, owners == hn::Set(du, o));
-        const ShadeSetup& setup = setups[o];
-        s.toViewer = ToViewer(d, s.P, setup.lightModel.localViewer);
-        MaterialColorsL<V> colors = UniformColors(d, setup.material);
-        if (colored[o]) {
-          const Vec3L<V> c{hn::LoadU(d, p.color[0] + i), hn::LoadU(d, p.color[1] + i), hn::LoadU(d, p.color[2] + i)};
-          colors = {c, c, hn::LoadU(d, p.color[3] + i)};
-        }
-        const TermsL<V> terms = ShadeGl(d, setup.lights, setup.lightModel, setup.material, colors, setup.model, s);
+        const Real* color[4] = {p.color[0] + i, p.color[1] + i, p.color[2] + i, p.color[3] + i};
         V r, g, b, a;
-        ClampedColor(d, terms, colors.alpha, r, g, b, a);
+        LitColor(d, setups[o], s, colored[o] ? color : nullptr, r, g, b, a);
         hn::Store(r, d, lit[0]);
         hn::Store(g, d, lit[1]);
         hn::Store(b, d, lit[2]);
