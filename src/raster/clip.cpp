@@ -1,5 +1,6 @@
 #include "raster/clip.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace illum {
@@ -49,34 +50,40 @@ ClipResult classifyTriangle(const ShadedVertex& a, const ShadedVertex& b, const 
   return orCodes == 0 ? ClipResult::Inside : ClipResult::Clipped;
 }
 
-ClipResult clipTriangle(const std::array<ShadedVertex, 3>& tri, int width, int height,
-                        std::vector<ShadedVertex>& polygon) {
+ClipResult clipTriangle(const std::array<ShadedVertex, 3>& tri, int width, int height, ClippedPolygon& polygon) {
   const auto planes = clipPlanes(width, height);
   unsigned orCodes = 0;
+  polygon.size = 0;
   const ClipResult kind = classifyTriangle(tri[0], tri[1], tri[2], width, height, &orCodes);
   if (kind == ClipResult::Outside) return kind;
-  if (kind == ClipResult::Inside) {
-    polygon.insert(polygon.end(), tri.begin(), tri.end());
-    return ClipResult::Inside;
-  }
+  std::copy(tri.begin(), tri.end(), polygon.vertex.begin());
+  polygon.size = 3;
+  if (kind == ClipResult::Inside) return ClipResult::Inside;
 
-  std::vector<ShadedVertex> in(tri.begin(), tri.end()), out;
+  // Each plane cuts `in` into `out`; the two swap roles, so nothing is allocated.
+  ClippedPolygon other;
+  ClippedPolygon* in = &polygon;
+  ClippedPolygon* out = &other;
   for (std::size_t p = 0; p < planes.size(); ++p) {
     if (!(orCodes & (1u << p))) continue;
-    out.clear();
-    for (std::size_t i = 0; i < in.size(); ++i) {
-      const ShadedVertex& a = in[i];
-      const ShadedVertex& b = in[(i + 1) % in.size()];
+    out->size = 0;
+    for (std::size_t i = 0; i < in->size; ++i) {
+      const ShadedVertex& a = in->vertex[i];
+      const ShadedVertex& b = in->vertex[(i + 1) % in->size];
       const Real da = glm::dot(planes[p], a.clip), db = glm::dot(planes[p], b.clip);
-      if (da >= 0) out.push_back(a);
+      if (da >= 0) out->vertex[out->size++] = a;
       // Interpolate from the inside vertex so that a shared edge is cut at the same point
       // whichever triangle it belongs to.
-      if ((da >= 0) != (db >= 0)) out.push_back(da >= 0 ? lerp(a, b, da / (da - db)) : lerp(b, a, db / (db - da)));
+      if ((da >= 0) != (db >= 0))
+        out->vertex[out->size++] = da >= 0 ? lerp(a, b, da / (da - db)) : lerp(b, a, db / (db - da));
     }
-    in.swap(out);
-    if (in.size() < 3) return ClipResult::Outside;
+    std::swap(in, out);
+    if (in->size < 3) {
+      polygon.size = 0;
+      return ClipResult::Outside;
+    }
   }
-  polygon.insert(polygon.end(), in.begin(), in.end());
+  if (in != &polygon) polygon = *in;
   return ClipResult::Clipped;
 }
 

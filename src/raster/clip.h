@@ -7,7 +7,6 @@
 #include "raster/vertex.h"
 
 #include <array>
-#include <vector>
 
 namespace illum {
 
@@ -26,8 +25,13 @@ unsigned clipOutcode(const Vec4& clip, int width, int height);
 ClipResult classifyTriangle(const ShadedVertex& a, const ShadedVertex& b, const ShadedVertex& c, int width, int height,
                             unsigned* outsidePlanes = nullptr);
 
-// Clips `tri` and appends the resulting convex polygon (0 or 3..9 vertices) to `polygon`.
-ClipResult clipTriangle(const std::array<ShadedVertex, 3>& tri, int width, int height,
-                        std::vector<ShadedVertex>& polygon);
+// A convex polygon of at most 9 vertices (a triangle cut by 6 planes), held without the heap.
+struct ClippedPolygon {
+  std::array<ShadedVertex, 9> vertex;
+  std::size_t size = 0;
+};
+
+// Clips `tri` into `polygon` (0 or 3..9 vertices).
+ClipResult clipTriangle(const std::array<ShadedVertex, 3>& tri, int width, int height, ClippedPolygon& polygon);
 
 }  // namespace illum

@@ -66,7 +66,7 @@ std::size_t setupTriangles(const FrameContext& frame, const Object& object, std:
   const std::size_t before = out.size();
   const AttributeLayout& layout = out.layout();
   const auto& indices = object.mesh->indices;
-  std::vector<ShadedVertex> polygon;
+  ClippedPolygon polygon;
   for (std::size_t t = first; t < last; ++t) {
     const std::size_t i = 3 * t;
     const ShadedVertex &a = vertices[indices[i]], &b = vertices[indices[i + 1]], &c = vertices[indices[i + 2]];
@@ -95,10 +95,10 @@ std::size_t setupTriangles(const FrameContext& frame, const Object& object, std:
       emit(a, b, c);
       continue;
     }
-    polygon.clear();
     if (clipTriangle({a, b, c}, frame.width, frame.height, polygon) == ClipResult::Outside) continue;
     // The clipped polygon is convex: draw it as a fan.
-    for (std::size_t k = 1; k + 1 < polygon.size(); ++k) emit(polygon[0], polygon[k], polygon[k + 1]);
+    const auto& v = polygon.vertex;
+    for (std::size_t k = 1; k + 1 < polygon.size; ++k) emit(v[0], v[k], v[k + 1]);
   }
   return out.size() - before;
 }
