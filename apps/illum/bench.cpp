@@ -59,10 +59,10 @@ int runBench(const BenchOptions& o) {
   std::printf(
       "{\"ms_per_frame\": %.3f, \"ms_min\": %.3f, \"encode_ms\": %.3f, \"png_bytes\": %zu, \"load_ms\": %.1f, "
       "\"triangles\": %zu, \"triangles_drawn\": %zu, \"fragments\": %zu, \"pixels\": %zu, \"width\": %d, "
-      "\"height\": %d, \"frames\": %d, \"threads\": %d, \"peak_mib\": %.1f}\n",
+      "\"height\": %d, \"frames\": %d, \"threads\": %d, \"simd\": \"%s\", \"peak_mib\": %.1f}\n",
       median(frameMs), *std::min_element(frameMs.begin(), frameMs.end()), median(encodeMs), pngBytes, loadMs,
       stats.trianglesIn, stats.trianglesDrawn, stats.fragmentsShaded, std::size_t(scene.width) * std::size_t(scene.height),
-      scene.width, scene.height, o.frames, threads, peakMemoryMiB());
+      scene.width, scene.height, o.frames, threads, simdTarget(), peakMemoryMiB());
   return 0;
 }
 

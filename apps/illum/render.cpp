@@ -58,6 +58,7 @@ int runRender(const RenderOptions& o) {
   }
   const Image image = renderScene(scene, &stats, probe ? &*probe : nullptr);
   const auto rendered = Clock::now();
+  auto encoded = rendered;
   if (stats.pixelsDrawn == 0 && !scene.objects.empty())
     std::fprintf(stderr, "illum: warning: the picture shows only the background: nothing drawn is visible (are the "
                          "objects outside the view, behind the camera, transparent or of the background's colour?)\n");
@@ -68,19 +69,23 @@ int runRender(const RenderOptions& o) {
   if (toStdout) {
     // `-o -` streams the PNG, for pipelines that make thumbnails.
     const std::vector<std::uint8_t> png = encodePng(image);
+    encoded = Clock::now();
     if (std::fwrite(png.data(), 1, png.size(), stdout) != png.size() || std::fflush(stdout) != 0)
       throw Error("cannot write the PNG to standard output");
   } else {
-    writeOutputFile(o.output, encodePng(image), OutputOptions{o.force});
+    const std::vector<std::uint8_t> png = encodePng(image);
+    encoded = Clock::now();
+    writeOutputFile(o.output, png, OutputOptions{o.force});
   }
   if (o.scene.verbose) {
     const auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
     std::fprintf(stderr,
-                 "illum: loaded in %.1f ms; rendered %dx%d in %.1f ms (%s triangles in, %s drawn, %s fragments shaded); "
-                 "peak memory %.0f MiB\n",
+                 "illum: loaded in %.1f ms; rendered %dx%d in %.1f ms (%s triangles in, %s drawn, %s fragments shaded; "
+                 "%d threads, %s); PNG encoded in %.1f ms; peak memory %.0f MiB\n",
                  loadMs, scene.width, scene.height, ms(loaded, rendered),
                  withThousands(stats.trianglesIn).c_str(), withThousands(stats.trianglesDrawn).c_str(),
-                 withThousands(stats.fragmentsShaded).c_str(), peakMemoryMiB());
+                 withThousands(stats.fragmentsShaded).c_str(), limit.threads(), simdTarget(), ms(rendered, encoded),
+                 peakMemoryMiB());
   }
   if (toStdout) return 0;
   if (!o.quiet && !isStandardOutput(o.output)) std::printf("%s\n", o.output.c_str());

@@ -65,6 +65,10 @@ class Renderer {
   std::unique_ptr<State> state_;
 };
 
+// The SIMD instruction set the renderer's kernels run with on this CPU, chosen at run time
+// ("AVX3" is AVX-512, then "AVX2", "SSE4", ...).
+const char* simdTarget();
+
 // Renders like OpenGL 2.1 fixed-function (or its per-pixel equivalent) into an RGBA8 image,
 // row 0 at the top. The same scene gives the same bytes on every run.
 Image renderScene(const Scene& scene, RenderStats* stats = nullptr, PixelProbe* probe = nullptr);

@@ -9,6 +9,7 @@
 #include "raster/bin.h"
 #include "raster/draw.h"
 #include "raster/shade_tile.h"
+#include "shading/shade_points.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
@@ -155,6 +156,8 @@ void Renderer::render(const Scene& scene, Image& image, RenderStats* statsOut, P
   finishFrame(state_->fb, scene, stats, image);
   if (statsOut) *statsOut = stats;
 }
+
+const char* simdTarget() { return simdTargetName(); }
 
 Image renderScene(const Scene& scene, RenderStats* stats, PixelProbe* probe) {
   Renderer renderer;
