@@ -74,6 +74,12 @@ bool setupTriangle(const ShadedVertex& v0, const ShadedVertex& v1, const ShadedV
   out.edge[0] = makeEdge(w[1], w[2]);
   out.edge[1] = makeEdge(w[2], w[0]);
   out.edge[2] = makeEdge(w[0], w[1]);
+  // An edge's function vanishes on its own segment, which lies in the bounds, so anywhere in them
+  // |E| ≤ |a|·width + |b|·height (sub-pixel units): small triangles can be rasterized in float.
+  const std::int64_t spanX = maxFx - minFx, spanY = maxFy - minFy;
+  out.floatExact = true;
+  for (const EdgeFunction& e : out.edge)
+    out.floatExact = out.floatExact && std::abs(std::int64_t(e.a)) * spanX + std::abs(std::int64_t(e.b)) * spanY <= (1 << 24);
   return true;
 }
 

@@ -49,8 +49,11 @@ using VR = hn::VFromD<DR>;
 using MR = decltype(hn::FirstN(DR(), 0));
 
 // The depth pass over the triangle's pixels in `tile`; for each span of lanes that has fragments
-// passing GL_LESS, write(x, pass, l0, l1, l2) stores what the draw keeps (tile-local x).
-template <class Write>
+// passing GL_LESS, write(x, pass, l0, l1, l2) stores what the draw keeps (tile-local x). The edge
+// functions are evaluated exactly: in double lanes, or with kFloatEdges (a small triangle, whose
+// every edge value inside its bounds is an integer of at most 2^24: TriangleSetup::floatExact) in
+// the narrow lanes themselves; lanes beyond the bounds may round there, and are masked.
+template <bool kFloatEdges, class Write>
 HWY_INLINE std::size_t DepthPass(const TriangleSetup& t, const PixelRect& tile, Real* depth, const Write& write) {
   const int minX = std::max(t.minX, tile.minX), maxX = std::min(t.maxX, tile.maxX);
   const int minY = std::max(t.minY, tile.minY), maxY = std::min(t.maxY, tile.maxY);
@@ -61,17 +64,23 @@ HWY_INLINE std::size_t DepthPass(const TriangleSetup& t, const PixelRect& tile, 
   // Rows start at the triangle's first column: a vector may run past the tile's row into the next
   // row or the tile's padding (framebuffer.h), never into another tile; those lanes are masked.
   const int startX = minX;
-  const auto iota = hn::Iota(dd, 0.0);
   const auto xIota = hn::Iota(dr, Real(startX - tile.minX));
-  const auto lo = hn::Set(dr, Real(minX - tile.minX)), hi = hn::Set(dr, Real(maxX - tile.minX));
+  const auto hi = hn::Set(dr, Real(maxX - tile.minX));
   const auto invArea = hn::Set(dr, t.invArea);
   const auto z0 = hn::Set(dr, t.z[0]), z1 = hn::Set(dr, t.z[1]), z2 = hn::Set(dr, t.z[2]);
+  const auto zero = hn::Zero(dr);
   std::int64_t step[3];
   hn::VFromD<DD> laneStep[3], bias[3];
+  VR laneStepR[3], biasR[3];
   for (int i = 0; i < 3; ++i) {
     step[i] = t.edge[i].a * kSubpixelOne;
-    laneStep[i] = iota * hn::Set(dd, double(step[i]));
-    bias[i] = hn::Set(dd, double(t.edge[i].bias));
+    if constexpr (kFloatEdges) {
+      laneStepR[i] = hn::Iota(dr, Real(0)) * hn::Set(dr, Real(step[i]));
+      biasR[i] = hn::Set(dr, Real(t.edge[i].bias));
+    } else {
+      laneStep[i] = hn::Iota(dd, 0.0) * hn::Set(dd, double(step[i]));
+      bias[i] = hn::Set(dd, double(t.edge[i].bias));
+    }
   }
   const auto toReal = [&](hn::VFromD<DD> v) {
     if constexpr (sizeof(Real) == 4) return hn::DemoteTo(dr, v);  // rounds as int64 → float does
@@ -86,18 +95,27 @@ HWY_INLINE std::size_t DepthPass(const TriangleSetup& t, const PixelRect& tile, 
     const int row = (y - tile.minY) * kTileSize - tile.minX;  // tile-local index of (0, y)
     auto xs = xIota;
     for (int x = startX; x <= maxX; x += lanes, xs = xs + hn::Set(dr, Real(lanes))) {
-      const auto E0 = hn::Set(dd, double(e[0])) + laneStep[0];
-      const auto E1 = hn::Set(dd, double(e[1])) + laneStep[1];
-      const auto E2 = hn::Set(dd, double(e[2])) + laneStep[2];
+      // Inside ⇔ E + bias ≥ 0 (the top-left rule folded into the bias).
+      VR E0, E1, E2;
+      MR inside;
+      if constexpr (kFloatEdges) {
+        E0 = hn::Set(dr, Real(e[0])) + laneStepR[0];
+        E1 = hn::Set(dr, Real(e[1])) + laneStepR[1];
+        E2 = hn::Set(dr, Real(e[2])) + laneStepR[2];
+        inside = hn::And(hn::And(E0 + biasR[0] >= zero, E1 + biasR[1] >= zero), E2 + biasR[2] >= zero);
+      } else {
+        const auto D0 = hn::Set(dd, double(e[0])) + laneStep[0];
+        const auto D1 = hn::Set(dd, double(e[1])) + laneStep[1];
+        const auto D2 = hn::Set(dd, double(e[2])) + laneStep[2];
+        E0 = toReal(D0), E1 = toReal(D1), E2 = toReal(D2);
+        // Converting to Real keeps the sign and zero, so the test can run in the narrow lanes.
+        inside = hn::And(hn::And(toReal(D0 + bias[0]) >= zero, toReal(D1 + bias[1]) >= zero),
+                         toReal(D2 + bias[2]) >= zero);
+      }
       for (int i = 0; i < 3; ++i) e[i] += lanes * step[i];
-      // Inside ⇔ E + bias ≥ 0 (the top-left rule folded into the bias); converting to Real keeps
-      // the sign and zero, so the test can run in the narrower lanes.
-      const auto zero = hn::Zero(dr);
-      const auto inside = hn::And(hn::And(hn::And(toReal(E0 + bias[0]) >= zero, toReal(E1 + bias[1]) >= zero),
-                                          toReal(E2 + bias[2]) >= zero),
-                                  hn::And(xs >= lo, xs <= hi));
+      inside = hn::And(inside, xs <= hi);
       if (hn::AllFalse(dr, inside)) continue;
-      const auto l0 = toReal(E0) * invArea, l1 = toReal(E1) * invArea, l2 = toReal(E2) * invArea;
+      const auto l0 = E0 * invArea, l1 = E1 * invArea, l2 = E2 * invArea;
       const auto z = l0 * z0 + l1 * z1 + l2 * z2;
       const auto stored = hn::LoadU(dr, depth + row + x);
       const auto pass = hn::And(inside, z < stored);
@@ -108,6 +126,12 @@ HWY_INLINE std::size_t DepthPass(const TriangleSetup& t, const PixelRect& tile, 
     }
   }
   return passed;
+}
+
+template <class Write>
+HWY_INLINE std::size_t DepthPass(const TriangleSetup& t, const PixelRect& tile, Real* depth, const Write& write) {
+  if (sizeof(Real) == 4 && t.floatExact) return DepthPass<true>(t, tile, depth, write);
+  return DepthPass<false>(t, tile, depth, write);
 }
 
 std::size_t RasterizeDepth(const TriangleSetup& t, const PixelRect& tile, Real* depth, std::uint32_t slot,
