@@ -128,8 +128,91 @@ HWY_INLINE std::size_t DepthPass(const TriangleSetup& t, const PixelRect& tile, 
   return passed;
 }
 
+#if HWY_TARGET != HWY_SCALAR
+// A small triangle's depth pass two rows at a time: a float vector holds twice as many lanes as a
+// double one, so each vector is a block of two rows of Lanes(DR) pixels, tested and depth-compared
+// whole, then handed to `write` one row at a time. Same values as DepthPass<true>.
+template <class Write>
+HWY_INLINE std::size_t DepthPassTwoRows(const TriangleSetup& t, const PixelRect& tile, Real* depth,
+                                        const Write& write) {
+  const int minX = std::max(t.minX, tile.minX), maxX = std::min(t.maxX, tile.maxX);
+  const int minY = std::max(t.minY, tile.minY), maxY = std::min(t.maxY, tile.maxY);
+  if (minX > maxX || minY > maxY) return 0;
+  const hn::ScalableTag<float> df;
+  const DR dh;  // one row: half of df
+  using VF = hn::VFromD<decltype(df)>;
+  const int columns = int(hn::Lanes(dh));
+  // Lane k is the pixel (k mod columns, k / columns) of the block; its edge values differ from
+  // the block's first pixel by whole multiples of 256, exact in float inside the bounds.
+  HWY_ALIGN float offset[3][hn::MaxLanes(df)], column[hn::MaxLanes(df)], upper[hn::MaxLanes(df)];
+  for (std::size_t k = 0; k < hn::Lanes(df); ++k) {
+    const int c = int(k) % columns, r = int(k) / columns;
+    for (int i = 0; i < 3; ++i)
+      offset[i][k] = float(double(c) * double(t.edge[i].a * kSubpixelOne) + double(r) * double(t.edge[i].b * kSubpixelOne));
+    column[k] = float(c);
+    upper[k] = float(r);
+  }
+  VF off[3], bias[3];
+  for (int i = 0; i < 3; ++i) off[i] = hn::Load(df, offset[i]), bias[i] = hn::Set(df, float(t.edge[i].bias));
+  const VF columnOf = hn::Load(df, column), rowOf = hn::Load(df, upper);
+  const VF hi = hn::Set(df, float(maxX - tile.minX));
+  const VF invArea = hn::Set(df, t.invArea);
+  const VF z0 = hn::Set(df, t.z[0]), z1 = hn::Set(df, t.z[1]), z2 = hn::Set(df, t.z[2]);
+  const VF zero = hn::Zero(df);
+  const std::int64_t stepX = std::int64_t(columns) * t.edge[0].a * kSubpixelOne;
+  const std::int64_t step[3] = {stepX, std::int64_t(columns) * t.edge[1].a * kSubpixelOne,
+                                std::int64_t(columns) * t.edge[2].a * kSubpixelOne};
+  const std::int64_t half = kSubpixelOne / 2;
+  const auto halves = [&](auto mask, auto& lower, auto& higher) {
+    const VF v = hn::VecFromMask(df, mask);
+    lower = hn::MaskFromVec(hn::LowerHalf(dh, v));
+    higher = hn::MaskFromVec(hn::UpperHalf(dh, v));
+  };
+  std::size_t passed = 0;
+  for (int y = minY; y <= maxY; y += 2) {
+    const std::int64_t fy = std::int64_t(y) * kSubpixelOne + half;
+    const std::int64_t fx = std::int64_t(minX) * kSubpixelOne + half;
+    std::int64_t e[3] = {t.edge[0].at(fx, fy), t.edge[1].at(fx, fy), t.edge[2].at(fx, fy)};
+    const int row0 = (y - tile.minY) * kTileSize - tile.minX;
+    const bool two = y + 1 <= maxY;
+    const int row1 = two ? row0 + kTileSize : row0;  // never past the tile: the lanes are masked
+    const auto rows = rowOf < hn::Set(df, two ? 2.0f : 1.0f);
+    for (int x = minX; x <= maxX; x += columns) {
+      const VF E0 = hn::Set(df, float(e[0])) + off[0];
+      const VF E1 = hn::Set(df, float(e[1])) + off[1];
+      const VF E2 = hn::Set(df, float(e[2])) + off[2];
+      for (int i = 0; i < 3; ++i) e[i] += step[i];
+      const VF xs = hn::Set(df, float(x - tile.minX)) + columnOf;
+      const auto inside = hn::And(hn::And(hn::And(E0 + bias[0] >= zero, E1 + bias[1] >= zero), E2 + bias[2] >= zero),
+                                  hn::And(xs <= hi, rows));
+      if (hn::AllFalse(df, inside)) continue;
+      const VF l0 = E0 * invArea, l1 = E1 * invArea, l2 = E2 * invArea;
+      const VF z = l0 * z0 + l1 * z1 + l2 * z2;
+      const VF stored = hn::Combine(df, hn::LoadU(dh, depth + row1 + x), hn::LoadU(dh, depth + row0 + x));
+      const auto pass = hn::And(inside, z < stored);
+      if (hn::AllFalse(df, pass)) continue;
+      MR pass0, pass1;
+      halves(pass, pass0, pass1);
+      const int rowOfHalf[2] = {row0, row1};
+      const MR passOfHalf[2] = {pass0, pass1};
+      for (int h = 0; h < 2; ++h) {
+        if (hn::AllFalse(dh, passOfHalf[h])) continue;
+        const auto pick = [&](VF v) { return h == 0 ? hn::LowerHalf(dh, v) : hn::UpperHalf(dh, v); };
+        hn::BlendedStore(pick(z), passOfHalf[h], dh, depth + rowOfHalf[h] + x);
+        write(rowOfHalf[h] + x, passOfHalf[h], pick(l0), pick(l1), pick(l2));
+        passed += hn::CountTrue(dh, passOfHalf[h]);
+      }
+    }
+  }
+  return passed;
+}
+#endif
+
 template <class Write>
 HWY_INLINE std::size_t DepthPass(const TriangleSetup& t, const PixelRect& tile, Real* depth, const Write& write) {
+#if HWY_TARGET != HWY_SCALAR
+  if (sizeof(Real) == 4 && t.floatExact) return DepthPassTwoRows(t, tile, depth, write);
+#endif
   if (sizeof(Real) == 4 && t.floatExact) return DepthPass<true>(t, tile, depth, write);
   return DepthPass<false>(t, tile, depth, write);
 }

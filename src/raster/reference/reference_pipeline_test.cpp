@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
+#include <hwy/targets.h>
 
 #include <filesystem>
 
@@ -51,6 +52,27 @@ TEST(BinnedPipeline, EqualsTheReferenceAndEveryThreadCount) {
       EXPECT_EQ(withThreads(1, scene).rgba, parallel.rgba) << name << " on one thread";
       EXPECT_EQ(withThreads(3, scene).rgba, parallel.rgba) << name << " on three threads";
     }
+}
+
+// The SIMD kernels are compiled for every target this CPU has (SSE4, AVX2, AVX-512, and the
+// portable one): each draws the reference's bytes, so every machine gets the same picture.
+TEST(BinnedPipeline, EverySimdTargetDrawsTheSameBytes) {
+  std::vector<std::pair<std::string, Scene>> scenes = {{"built-in", defaultScene()}};
+  for (const char* file : {"examples/first_light.json", "tests/scenes/parity/near_clip_two_sided.json", "tests/scenes/parity/coloured_lights.json"})
+    scenes.push_back({file, loadSceneFile(fs::path(ILLUM_REPO_DIR) / file)});
+  int targets = 0;
+  for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+    hwy::SetSupportedTargetsForTest(target);
+    ++targets;
+    for (auto& [name, scene] : scenes)
+      for (Shading shading : {Shading::Flat, Shading::Gouraud, Shading::Phong}) {
+        scene.shading = shading;
+        EXPECT_EQ(renderScene(scene).rgba, renderSceneReference(scene).rgba)
+            << name << " " << toString(shading) << " with " << hwy::TargetName(target);
+      }
+  }
+  hwy::SetSupportedTargetsForTest(0);
+  EXPECT_GE(targets, 2);
 }
 
 }  // namespace
