@@ -16,7 +16,7 @@ DrawTarget::DrawTarget(const FrameContext& frame, const Scene& scene, Framebuffe
     layouts.push_back(AttributeLayout::forObject(frame, o, probe != nullptr));
     setups.push_back({frame.lights, frame.lightModel, frame.model, o.material});
     colored.push_back(!o.mesh->colors.empty());
-    if (o.diffuseTexture && !o.mesh->uvs.empty()) litFromSurface = false;
+    if (drawnTexture(o)) litFromSurface = false;
   }
 }
 
@@ -109,7 +109,7 @@ void drawPixels(const DrawTarget& target, const DrawRecord& record, const PixelR
 template <Shading kShading>
 void drawPixels(const DrawTarget& target, const DrawRecord& record, const PixelRect& rect, std::size_t& fragments) {
   const Object& object = target.scene.objects[record.object];
-  if (object.diffuseTexture && !object.mesh->uvs.empty()) drawPixels<kShading, true>(target, record, rect, fragments);
+  if (drawnTexture(object)) drawPixels<kShading, true>(target, record, rect, fragments);
   else drawPixels<kShading, false>(target, record, rect, fragments);
 }
 

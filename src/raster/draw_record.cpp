@@ -7,7 +7,7 @@
 namespace illum {
 
 AttributeLayout AttributeLayout::forObject(const FrameContext& frame, const Object& object, bool probe) {
-  const bool textured = object.diffuseTexture && !object.mesh->uvs.empty();
+  const bool textured = drawnTexture(object) != nullptr;
   const bool colors = !object.mesh->colors.empty();
   AttributeLayout l;
   l.probe = probe;

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <illum/render.h>
+#include <illum/texture.h>
 
 #include "raster/frame_context.h"
 #include "raster/setup.h"
@@ -17,6 +18,12 @@
 #include <vector>
 
 namespace illum {
+
+// The texture that modulates an object's fragments: its diffuse texture, when its mesh has the
+// coordinates to look it up; otherwise null.
+inline const Texture* drawnTexture(const Object& object) {
+  return object.diffuseTexture && !object.mesh->uvs.empty() ? object.diffuseTexture.get() : nullptr;
+}
 
 // Where each per-vertex value sits among a vertex's `stride` Reals; −1: not carried.
 struct AttributeLayout {

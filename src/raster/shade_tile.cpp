@@ -20,10 +20,6 @@ VisiblePixel visiblePixel(const TriangleSetup& t, const PixelRect& rect, int ind
           Real(t.edge[2].at(fx, fy)) * invArea};
 }
 
-const Texture* textureOf(const Object& object) {
-  return object.diffuseTexture && !object.mesh->uvs.empty() ? object.diffuseTexture.get() : nullptr;
-}
-
 // Writes a coloured pixel: GL_MODULATE by the texel, then the framebuffer, then the probe.
 void writePixel(const DrawTarget& target, const DrawRecord& r, const VisiblePixel& p, const Color4& lit,
                 const Vec4* texel) {
@@ -44,7 +40,7 @@ void colorVertexLit(const DrawTarget& target, std::span<const DrawRecord* const>
     const Color4 lit = target.frame.shading == Shading::Flat
                            ? r.flat
                            : gouraudColor(r, target.layout(r), perspectiveWeights(r.setup, p.l0, p.l1, p.l2));
-    const Texture* texture = textureOf(target.scene.objects[r.object]);
+    const Texture* texture = drawnTexture(target.scene.objects[r.object]);
     if (!texture) {
       writePixel(target, r, p, lit, nullptr);
       continue;
@@ -72,7 +68,7 @@ class PhongBatch {
                      perspectiveWeights(r.setup, p.l0, p.l1, p.l2));
     for (int c = 0; c < 3; ++c) s_.soa[c][n_] = surface.position[c], s_.soa[3 + c][n_] = surface.normal[c];
     for (int c = 0; c < 4; ++c) s_.soa[6 + c][n_] = surface.color[c];
-    if (const Texture* texture = textureOf(object)) {
+    if (const Texture* texture = drawnTexture(object)) {
       const Vec4 texel = sampleDiffuseTexture(*texture, r, target_.layout(r), p.l0, p.l1, p.l2);
       for (int c = 0; c < 4; ++c) s_.soa[10 + c][n_] = texel[c];
     }
@@ -92,7 +88,7 @@ class PhongBatch {
       for (int c = 0; c < 4; ++c) points.color[c] = s_.soa[6 + c];
     Real* const lit[4] = {s_.soa[14], s_.soa[15], s_.soa[16], s_.soa[17]};
     shadePoints(setup, points, lit);
-    const bool textured = textureOf(object) != nullptr;
+    const bool textured = drawnTexture(object) != nullptr;
     for (std::size_t k = 0; k < n_; ++k) {
       const DrawRecord& r = *records_[s_.slot[k]];
       const VisiblePixel p = visiblePixel(r.setup, rect_, s_.pixel[k]);
@@ -181,7 +177,7 @@ std::size_t drawOpaqueTile(const DrawTarget& target, std::span<const DrawRecord*
   for (std::size_t i = 0; i < records.size(); ++i) {
     const DrawRecord& r = *records[i];
 #if !ILLUM_USE_DOUBLE
-    if (direct && !textureOf(target.scene.objects[r.object])) {
+    if (direct && !drawnTexture(target.scene.objects[r.object])) {
       fragments += drawColored(target, r, rect, depth, color, anyWinner ? winners : nullptr);
       continue;
     }
