@@ -210,6 +210,12 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o) {
   cmd.add_option("--resolution", o.resolution, "Image size W,H (models: 1000,600)");
   cmd.add_option("--model", o.model, "Lighting model: blinn-phong, phong or lambert");
   cmd.add_option("--shading", o.shading, "Shading frequency: flat, gouraud or phong");
+  cmd.add_option("--renderer", o.renderer, "raster (default), whitted (ray tracing, 1980) or hall (1983)");
+  cmd.add_flag("--no-shadows", o.noShadows, "Ray tracers: no shadow rays");
+  cmd.add_option("--samples", o.samples, "Ray tracers: rays per pixel (1: through the centre) [1]")
+      ->check(CLI::Range(1, kMaxSamples));
+  cmd.add_option("--max-depth", o.maxDepth, "Ray tracers: reflected and refracted bounces followed [5]")
+      ->check(CLI::Range(0, kMaxRayDepth));
   cmd.add_option("--background-color,--background", o.background, "Background colour R,G,B or #rrggbb");
   cmd.add_flag("--no-background", o.noBackground, "Transparent background (alpha 0)");
   cmd.add_option("--up", o.up, "Model files: the up axis, +Y (default), -Y, +Z, -Z, +X or -X");
@@ -247,6 +253,11 @@ Scene prepareScene(SceneOptions o, double* loadMs) {
     lightingModel = parseLightingModel(o.model);
     if (!lightingModel) throw InputError("--model: expected blinn-phong, phong or lambert, got \"" + o.model + "\"");
   }
+  std::optional<RendererKind> renderer;
+  if (!o.renderer.empty()) {
+    renderer = parseRendererKind(o.renderer);
+    if (!renderer) throw InputError("--renderer: expected raster, whitted or hall, got \"" + o.renderer + "\"");
+  }
   if (!o.shading.empty()) {
     shading = parseShading(o.shading);
     if (!shading) throw InputError("--shading: expected flat, gouraud or phong, got \"" + o.shading + "\"");
@@ -282,6 +293,10 @@ Scene prepareScene(SceneOptions o, double* loadMs) {
                      " pixels, more than the limit of " + withThousands(o.limits.maxPixels) + " (raise it with --max-pixels)");
   if (lightingModel) scene.model = *lightingModel;
   if (shading) scene.shading = *shading;
+  if (renderer) scene.renderer = *renderer;
+  if (o.noShadows) scene.rayTracing.shadows = false;
+  if (o.samples) scene.rayTracing.samples = *o.samples;
+  if (o.maxDepth) scene.rayTracing.maxDepth = *o.maxDepth;
   if (!o.background.empty()) scene.background = Color4(parseColor("--background-color", o.background, true), 1);
   if (o.noBackground) scene.background.a = 0;
 

@@ -20,6 +20,9 @@ struct SceneOptions {
   std::optional<int> width, height;
   std::string resolution;
   std::string model, shading, background;
+  std::string renderer;  // raster, whitted or hall
+  bool noShadows = false;
+  std::optional<int> samples, maxDepth;
   bool noBackground = false;
   // Model files (f3d's names).
   std::string up, cameraPosition, cameraFocalPoint, cameraViewUp;

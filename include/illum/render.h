@@ -1,11 +1,14 @@
-// Rendering a scene to an image with the rasterizer (flat, Gouraud or Phong shading).
+// Rendering a scene to an image: with the rasterizer (flat, Gouraud or Phong shading) or, as the
+// scene's "renderer" says, with Whitted's or Hall's ray tracer.
 #pragma once
 
 #include <illum/image.h>
 #include <illum/scene.h>
 
 #include <array>
+#include <cstdint>
 #include <memory>
+#include <vector>
 
 namespace illum {
 
@@ -15,6 +18,12 @@ struct RenderStats {
   std::size_t fragmentsShaded = 0;   // fragments that passed the depth test
   std::size_t pixelsDrawn = 0;       // pixels whose colour differs from the background (labels aside)
   bool labelsSkipped = false;        // the scene has labels but the label font is not installed
+  // The ray tracers ("renderer": "whitted" or "hall"):
+  std::uint64_t primaryRays = 0;     // camera rays, one per pixel and sample
+  std::uint64_t secondaryRays = 0;   // reflected, refracted and see-through rays
+  std::uint64_t shadowRays = 0;
+  double primaryRaySeconds = 0;      // CPU time in the primary rays' BVH queries, summed over threads
+  double bvhMs = 0;                  // building the BVH, part of the frame
 };
 
 // What happened at one pixel: the last fragment that passed the depth test there (--debug-pixel).
@@ -44,6 +53,9 @@ struct PixelProbe {
   Vec4 texel{1};             // GL_MODULATE's factor, when textured
   Color4 written{0};         // the fragment's colour: lit × texel, before 8-bit conversion and blending
   bool blended = false;      // source-over blending mixed it with what was there
+  // Ray tracers: `lit` is the local equation with shadows (× texel), `written` what the ray brought
+  // back (with mirror, glass and see-through rays, unclamped), and each light's visibility from here.
+  std::vector<Color3> lightVisibility;
 };
 
 // Renders frame after frame, keeping its working memory (framebuffer, tile bins, triangle

@@ -11,6 +11,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace illum {
@@ -40,6 +41,19 @@ CameraFault cameraFault(const Camera& camera, Real aspect);
 // The fault in words ("expected ..."), to follow the name of whatever set the camera.
 std::string describe(CameraFault fault);
 
+// What a surface does with rays beyond the local equation: the ray tracers' material keys
+// (docs/scene-format.md). The rasterizer ignores them.
+struct SurfaceOptics {
+  Color3 reflective{0};    // k_r: the mirror-reflected ray's weight (Hall: times F_r)
+  Color3 transmissive{0};  // k_t: the refracted ray's weight (Hall: times F_t = 1 − F_r)
+  Real ior = Real(1.5);    // index of refraction of the inside of a closed mesh (outside: 1)
+  std::optional<Real> transmissionShininess;  // Hall's n' of transmitted highlights; unset: shininess
+  Color3 filter{1};        // Hall: fraction of light kept per unit distance travelled inside
+
+  bool reflects() const { return reflective != Color3(0); }
+  bool transmits() const { return transmissive != Color3(0); }
+};
+
 struct Object {
   std::shared_ptr<const Mesh> mesh;
   Mat4 worldFromObject{1};
@@ -48,6 +62,7 @@ struct Object {
   std::shared_ptr<const Texture> diffuseTexture;
   // Where the mesh has vertex colours they replace the material's ambient and diffuse colours
   // (GL_COLOR_MATERIAL with GL_AMBIENT_AND_DIFFUSE).
+  SurfaceOptics optics;  // mirror and glass, for the ray tracers
 };
 
 // Text drawn over the finished picture, centred on a point of the world or of the image, so that a
@@ -60,7 +75,25 @@ struct Label {
   Real size = 16;  // pixel height
 };
 
+// Which renderer draws the scene: the rasterizer (OpenGL's pipeline) or a ray tracer, Whitted's
+// (1980) or Hall and Greenberg's (1983), on the same scene, lights and local equation.
+enum class RendererKind { Raster, Whitted, Hall };
+std::string_view toString(RendererKind renderer);
+std::optional<RendererKind> parseRendererKind(std::string_view name);
+
+// The ray tracers' settings (the rasterizer ignores them). Depth and samples are bounded so that
+// no scene can ask for unbounded work.
+constexpr int kMaxRayDepth = 16;
+constexpr int kMaxSamples = 1024;
+struct RayTracing {
+  int maxDepth = 5;      // reflected and refracted rays followed this many bounces deep
+  bool shadows = true;   // shadow rays towards every light
+  int samples = 1;       // rays per pixel: 1 through the centre, more jittered (fixed seeds)
+};
+
 struct Scene {
+  RendererKind renderer = RendererKind::Raster;
+  RayTracing rayTracing;
   int width = 640;
   int height = 480;
   Color4 background{0, 0, 0, 1};

@@ -10,6 +10,7 @@
 #include "raster/draw.h"
 #include "raster/shade_tile.h"
 #include "shading/shade_points.h"
+#include "trace/ray_tracer.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
@@ -146,6 +147,12 @@ Renderer::Renderer() : state_(std::make_unique<State>()) {}
 Renderer::~Renderer() = default;
 
 void Renderer::render(const Scene& scene, Image& image, RenderStats* statsOut, PixelProbe* probe) {
+  if (scene.renderer != RendererKind::Raster) {
+    RenderStats stats;
+    traceScene(scene, image, stats, probe);
+    if (statsOut) *statsOut = stats;
+    return;
+  }
   const FrameContext frame = FrameContext::fromScene(scene);
   if (probe) probe->hit = false;
   BinnedFrame pass(*state_, scene, frame, probe);

@@ -84,7 +84,8 @@ Light readLight(const JsonReader& j) {
 }
 
 Material readMaterial(const JsonReader& j) {
-  j.expectObject({"ambient", "diffuse", "specular", "emission", "shininess"});
+  j.expectObject({"ambient", "diffuse", "specular", "emission", "shininess", "reflective", "transmissive", "ior",
+                  "transmission_shininess", "filter"});
   Material m;
   if (j.has("ambient")) m.ambient = j.at("ambient").color34();
   if (j.has("diffuse")) m.diffuse = j.at("diffuse").color34();
@@ -92,6 +93,17 @@ Material readMaterial(const JsonReader& j) {
   if (j.has("emission")) m.emission = j.at("emission").color34();
   if (j.has("shininess")) m.shininess = j.at("shininess").nonNegative();
   return m;
+}
+
+// The ray tracers' keys of a material (its GL keys are readMaterial's).
+SurfaceOptics readOptics(const JsonReader& j) {
+  SurfaceOptics o;
+  if (j.has("reflective")) o.reflective = j.at("reflective").color3();
+  if (j.has("transmissive")) o.transmissive = j.at("transmissive").color3();
+  if (j.has("ior")) o.ior = j.at("ior").number(Real(1), Real(10));
+  if (j.has("transmission_shininess")) o.transmissionShininess = j.at("transmission_shininess").nonNegative();
+  if (j.has("filter")) o.filter = j.at("filter").color3();
+  return o;
 }
 
 Mat4 readTransform(const JsonReader& j) {
@@ -238,10 +250,12 @@ void readObject(const JsonReader& j, ReadContext& context, std::vector<Object>& 
   j.expectObject({"mesh", "transform", "material"});
   const Mat4 worldFromObject = j.has("transform") ? readTransform(j.at("transform")) : Mat4(1);
   std::optional<Material> material;
-  if (j.has("material")) material = readMaterial(j.at("material"));
+  SurfaceOptics optics;
+  if (j.has("material")) material = readMaterial(j.at("material")), optics = readOptics(j.at("material"));
   if (j.has("mesh") && isModelFile(j.at("mesh"))) {
     for (Object& o : readModelFile(j.at("mesh"), context).objects) {
       o.worldFromObject = worldFromObject * o.worldFromObject;
+      o.optics = optics;
       if (material) o.material = *material;
       out.push_back(std::move(o));
     }
@@ -250,6 +264,7 @@ void readObject(const JsonReader& j, ReadContext& context, std::vector<Object>& 
   Object o;
   o.mesh = std::make_shared<Mesh>(j.has("mesh") ? readMesh(j.at("mesh"), context) : makeSphere(1, 20, 16));
   o.worldFromObject = worldFromObject;
+  o.optics = optics;
   if (material) o.material = *material;
   out.push_back(std::move(o));
 }
@@ -299,7 +314,8 @@ Scene parseScene(const std::string& text, const std::string& name, const std::fi
   }
   const JsonReader j(root, name);
   j.expectObject({"version", "width", "height", "background", "model", "shading", "camera",
-                  "light_model", "lights", "objects", "labels", "blend"});
+                  "light_model", "lights", "objects", "labels", "blend", "renderer", "max_depth", "shadows",
+                  "samples"});
   Scene s;
   if (j.has("version") && j.at("version").integer(0, std::numeric_limits<int>::max()) != 1)
     j.at("version").fail("expected version 1");
@@ -322,6 +338,15 @@ Scene parseScene(const std::string& text, const std::string& name, const std::fi
     if (!shading) j.at("shading").fail("expected \"flat\", \"gouraud\" or \"phong\", got \"" + m + "\"");
     s.shading = *shading;
   }
+  if (j.has("renderer")) {
+    const std::string r = j.at("renderer").string();
+    const auto renderer = parseRendererKind(r);
+    if (!renderer) j.at("renderer").fail("expected \"raster\", \"whitted\" or \"hall\", got \"" + r + "\"");
+    s.renderer = *renderer;
+  }
+  if (j.has("max_depth")) s.rayTracing.maxDepth = j.at("max_depth").integer(0, kMaxRayDepth);
+  if (j.has("shadows")) s.rayTracing.shadows = j.at("shadows").boolean();
+  if (j.has("samples")) s.rayTracing.samples = j.at("samples").integer(1, kMaxSamples);
   if (j.has("camera")) {
     readCamera(j.at("camera"), s.camera);
     checkCamera(j, s.camera, Real(s.width) / Real(s.height));

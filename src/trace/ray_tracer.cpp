@@ -1,0 +1,139 @@
+#include "trace/ray_tracer.h"
+
+#include "raster/framebuffer.h"
+#include "raster/labels.h"
+#include "trace/camera_rays.h"
+#include "trace/ray_scene.h"
+#include "trace/whitted.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/combinable.h>
+#include <tbb/parallel_for.h>
+
+#include <array>
+#include <chrono>
+#include <cstring>
+
+namespace illum {
+namespace {
+
+constexpr int kTile = 16;   // pixels on a side of a parallel task
+constexpr int kBlock = 4;   // pixels on a side of a primary ray packet
+
+using Clock = std::chrono::steady_clock;
+
+// A sample position's offset in its pixel, from a hash of (x, y, sample) alone (SplitMix64), so
+// that jitter is the same on every run and thread count.
+Vec2 jitter(int x, int y, int sample) {
+  std::uint64_t z = (std::uint64_t(std::uint32_t(x)) << 40) ^ (std::uint64_t(std::uint32_t(y)) << 20) ^
+                    std::uint64_t(std::uint32_t(sample)) ^ 0x9E3779B97F4A7C15ull;
+  const auto next = [&] {
+    z += 0x9E3779B97F4A7C15ull;
+    std::uint64_t r = z;
+    r = (r ^ (r >> 30)) * 0xBF58476D1CE4E5B9ull;
+    r = (r ^ (r >> 27)) * 0x94D049BB133111EBull;
+    return r ^ (r >> 31);
+  };
+  const Real u = Real(next() >> 40) / Real(1 << 24), v = Real(next() >> 40) / Real(1 << 24);
+  return {u, v};
+}
+
+struct TileCounts {
+  RayCounts rays;
+  double primarySeconds = 0;
+};
+
+class TracedFrame {
+ public:
+  TracedFrame(const Scene& scene, const RayScene& rays, Image& image, PixelProbe* probe)
+      : scene_(scene), rays_(rays), image_(image), probe_(probe), camera_(scene.camera, scene.width, scene.height),
+        tracer_(scene, rays) {}
+
+  void tile(int x0, int y0, TileCounts& counts) const {
+    const int x1 = std::min(x0 + kTile, scene_.width), y1 = std::min(y0 + kTile, scene_.height);
+    const int samples = scene_.rayTracing.samples;
+    std::array<Color4, kTile * kTile> sum;
+    sum.fill(Color4(0));
+    for (int s = 0; s < samples; ++s)
+      for (int by = y0; by < y1; by += kBlock)
+        for (int bx = x0; bx < x1; bx += kBlock) block(bx, by, x1, y1, s, x0, y0, sum, counts);
+    for (int y = y0; y < y1; ++y)
+      for (int x = x0; x < x1; ++x) {
+        const Color4 c = sum[std::size_t((y - y0) * kTile + (x - x0))] / Real(samples);
+        std::uint8_t* p = image_.pixel(x, y);
+        for (int k = 0; k < 4; ++k) p[k] = toUnorm8(c[k]);
+      }
+  }
+
+ private:
+  // One 4×4 packet of primary rays (sample `s` of each pixel), then each hit shaded on its own.
+  void block(int bx, int by, int x1, int y1, int s, int x0, int y0, std::array<Color4, kTile * kTile>& sum,
+             TileCounts& counts) const {
+    std::array<Ray, 16> rays;
+    std::array<bool, 16> active;
+    std::array<RayHit, 16> hits;
+    for (int k = 0; k < 16; ++k) {
+      const int x = bx + k % kBlock, y = by + k / kBlock;
+      active[std::size_t(k)] = x < x1 && y < y1;
+      const Vec2 offset = scene_.rayTracing.samples == 1 ? Vec2(Real(0.5)) : jitter(x, y, s);
+      rays[std::size_t(k)] = camera_.through(Real(x) + offset.x, Real(y) + offset.y);
+    }
+    const auto start = Clock::now();
+    rays_.intersect16(rays.data(), active.data(), hits.data());
+    counts.primarySeconds += std::chrono::duration<double>(Clock::now() - start).count();
+    for (int k = 0; k < 16; ++k) {
+      if (!active[std::size_t(k)]) continue;
+      const int x = bx + k % kBlock, y = by + k / kBlock;
+      const RayHit& hit = hits[std::size_t(k)];
+      const Ray& ray = rays[std::size_t(k)];
+      RayCone cone;
+      cone.spread = camera_.pixelWidthAt(1) - camera_.pixelWidthAt(0);
+      cone.width = camera_.pixelWidthAt(0);
+      PixelProbe* probe = probe_ && s == 0 && x == probe_->x && y == probe_->y ? probe_ : nullptr;
+      const Color4 c = tracer_.primary(ray, hit.t >= 0 ? &hit : nullptr, cone, counts.rays, probe);
+      // Each sample as the display shows it: clamped, then averaged.
+      sum[std::size_t((y - y0) * kTile + (x - x0))] += glm::clamp(c, Color4(0), Color4(1));
+    }
+  }
+
+  const Scene& scene_;
+  const RayScene& rays_;
+  Image& image_;
+  PixelProbe* probe_;
+  CameraRays camera_;
+  WhittedTracer tracer_;
+};
+
+}  // namespace
+
+void traceScene(const Scene& scene, Image& image, RenderStats& stats, PixelProbe* probe) {
+  stats = RenderStats{};
+  const auto start = Clock::now();
+  const RayScene rays(scene);
+  stats.bvhMs = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+  stats.trianglesIn = rays.triangleCount();
+  if (image.width != scene.width || image.height != scene.height) image = Image(scene.width, scene.height);
+  if (probe) probe->hit = false;
+  const TracedFrame frame(scene, rays, image, probe);
+  const int tilesX = (scene.width + kTile - 1) / kTile, tilesY = (scene.height + kTile - 1) / kTile;
+  tbb::combinable<TileCounts> counts;
+  tbb::parallel_for(tbb::blocked_range<int>(0, tilesX * tilesY), [&](const tbb::blocked_range<int>& r) {
+    TileCounts& local = counts.local();
+    for (int t = r.begin(); t < r.end(); ++t) frame.tile(t % tilesX * kTile, t / tilesX * kTile, local);
+  });
+  counts.combine_each([&](const TileCounts& c) {
+    stats.primaryRays += c.rays.primary;
+    stats.secondaryRays += c.rays.secondary;
+    stats.shadowRays += c.rays.shadow;
+    stats.primaryRaySeconds += c.primarySeconds;
+  });
+  // Pixels unlike the background, as the rasterizer counts them.
+  Color4 background = glm::clamp(scene.background, Color4(0), Color4(1));
+  std::uint8_t bg[4];
+  for (int k = 0; k < 4; ++k) bg[k] = toUnorm8(background[k]);
+  for (std::size_t i = 0; i < image.rgba.size(); i += 4)
+    if (std::memcmp(&image.rgba[i], bg, 4) != 0) ++stats.pixelsDrawn;
+  stats.labelsSkipped = !drawLabels(image, scene);
+}
+
+}  // namespace illum

@@ -1,0 +1,15 @@
+// The ray tracers' frame: the scene's BVH, primary rays in 4×4 packets over 16×16-pixel tiles in
+// parallel (oneTBB), each pixel's samples averaged. Deterministic: a pixel's rays and their order
+// depend on the pixel alone, so every thread count gives the same bytes.
+#pragma once
+
+#include <illum/image.h>
+#include <illum/render.h>
+#include <illum/scene.h>
+
+namespace illum {
+
+// `probe`, if given, is filled from the centre ray of its pixel (the first sample).
+void traceScene(const Scene& scene, Image& image, RenderStats& stats, PixelProbe* probe = nullptr);
+
+}  // namespace illum

@@ -1,0 +1,276 @@
+#include "trace/whitted.h"
+
+#include "raster/draw_record.h"
+#include "raster/vertex.h"
+#include "trace/local_light.h"
+#include "trace/optics.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace illum {
+namespace {
+
+// Rays whose weight in the pixel falls below this are not traced: they could not change a byte
+// (Hall and Greenberg's adaptive depth control).
+constexpr Real kMinWeight = Real(1) / 512;
+// At most this many reflected, refracted and see-through rays per primary ray: with k_r = k_t = 1
+// Whitted's tree doubles at every level, and no scene may ask for unbounded work.
+constexpr int kMaxSecondaryRays = 512;
+// Shadow rays pass through at most this many transmissive surfaces (Hall).
+constexpr int kMaxShadowCrossings = 16;
+
+Real maxComponent(const Color3& c) { return std::max({c.r, c.g, c.b}); }
+
+// A new ray from P leaves the surface on the side `direction` points to: its origin is pushed off
+// the surface along the geometric normal by a distance relative to P's magnitude, so that it does
+// not hit the triangle it starts on again.
+Vec3 offsetOrigin(const Vec3& P, const Vec3& geometricNormal, const Vec3& direction) {
+  const Real eps = Real(2e-4) * std::max({Real(1e-3), std::abs(P.x), std::abs(P.y), std::abs(P.z)});
+  return P + (glm::dot(direction, geometricNormal) > 0 ? eps : -eps) * geometricNormal;
+}
+
+Color3 powColor(const Color3& base, Real exponent) {
+  return {std::pow(base.r, exponent), std::pow(base.g, exponent), std::pow(base.b, exponent)};
+}
+
+// What a hit needs for shading, interpolated with the hit's barycentrics as Phong shading does.
+struct HitPoint {
+  const Object* object;
+  Vec3 position;            // eye space
+  Vec3 normal;              // interpolated, unit (as the rasterizer renormalizes it)
+  Vec3 geometricNormal;     // unit, counter-clockwise front
+  bool front;               // the ray meets the front (counter-clockwise) side
+  std::array<Real, 3> w;    // barycentric weights of the three vertices
+  std::array<std::uint32_t, 3> index;
+};
+
+HitPoint hitPoint(const RayScene& rays, const Ray& ray, const RayHit& hit) {
+  const EyeMesh& mesh = rays.mesh(hit.object);
+  HitPoint h;
+  h.object = mesh.object;
+  const auto& indices = mesh.object->mesh->indices;
+  for (int k = 0; k < 3; ++k) h.index[std::size_t(k)] = indices[3 * std::size_t(hit.triangle) + std::size_t(k)];
+  h.w = {1 - hit.u - hit.v, hit.u, hit.v};
+  const Vec3 &p0 = mesh.positions[h.index[0]], &p1 = mesh.positions[h.index[1]], &p2 = mesh.positions[h.index[2]];
+  h.position = h.w[0] * p0 + h.w[1] * p1 + h.w[2] * p2;
+  const Vec3 n = h.w[0] * mesh.normals[h.index[0]] + h.w[1] * mesh.normals[h.index[1]] + h.w[2] * mesh.normals[h.index[2]];
+  const Real len = glm::length(n);
+  h.normal = len > 0 ? (Real(1) / len) * n : Vec3(0, 0, 1);
+  const Vec3 ng = glm::cross(p1 - p0, p2 - p0);
+  const Real ngLen = glm::length(ng);
+  h.geometricNormal = ngLen > 0 ? ng / ngLen : h.normal;
+  h.front = glm::dot(ng, ray.direction) < 0;
+  return h;
+}
+
+// Shadow rays from one point: whether each light is seen. Whitted: any surface in between casts
+// a shadow. Hall: transmissive surfaces let k_t of the light through, filtered inside.
+class ShadowRays final : public LightVisibility {
+ public:
+  ShadowRays(const RayScene& rays, const HitPoint& at, bool hall, RayCounts& counts)
+      : rays_(rays), at_(at), hall_(hall), counts_(counts) {}
+
+  Color3 towards(const EyeLight&, const Vec3& L, Real distance) const override {
+    Ray ray;
+    ray.origin = offsetOrigin(at_.position, at_.geometricNormal, L);
+    ray.direction = L;
+    const Real end = distance > 0 ? distance : std::numeric_limits<Real>::infinity();
+    ray.tFar = end;
+    ++counts_.shadow;
+    if (!hall_) return rays_.occluded(ray) ? Color3(0) : Color3(1);
+    Color3 through(1);
+    for (int crossing = 0; crossing < kMaxShadowCrossings; ++crossing) {
+      RayHit hit;
+      if (!rays_.intersect(ray, hit)) return through;
+      const HitPoint h = hitPoint(rays_, ray, hit);
+      const SurfaceOptics& optics = h.object->optics;
+      if (!optics.transmits()) return Color3(0);
+      through *= optics.transmissive;
+      // Leaving a medium through its back face: the light crossed it for the distance since entry.
+      if (!h.front) through *= powColor(optics.filter, hit.t);
+      if (maxComponent(through) < kMinWeight) return Color3(0);
+      ray.origin = offsetOrigin(h.position, h.geometricNormal, L);
+      if (distance > 0) {
+        ray.tFar = end - glm::length(h.position - at_.position);
+        if (!(ray.tFar > 0)) return through;
+      }
+      ++counts_.shadow;
+    }
+    return Color3(0);
+  }
+
+ private:
+  const RayScene& rays_;
+  const HitPoint& at_;
+  bool hall_;
+  RayCounts& counts_;
+};
+
+// The texel GL_MODULATE multiplies by, filtered for the ray cone's footprint on the triangle.
+Vec4 texelAt(const Texture& texture, const EyeMesh& mesh, const HitPoint& h, const Vec3& direction, Real coneWidth) {
+  const auto& uvs = mesh.object->mesh->uvs;
+  const Vec2 &t0 = uvs[h.index[0]], &t1 = uvs[h.index[1]], &t2 = uvs[h.index[2]];
+  const Vec2 uv = h.w[0] * t0 + h.w[1] * t1 + h.w[2] * t2;
+  const Vec3 &p0 = mesh.positions[h.index[0]], &p1 = mesh.positions[h.index[1]], &p2 = mesh.positions[h.index[2]];
+  const Real worldArea = glm::length(glm::cross(p1 - p0, p2 - p0));
+  const Vec2 e1 = t1 - t0, e2 = t2 - t0;
+  const Real texelArea = std::abs(e1.x * e2.y - e1.y * e2.x) * Real(texture.width()) * Real(texture.height());
+  if (!(worldArea > 0)) return texture.sample(uv, 1);
+  // Texels per unit length on the triangle, stretched along the view where it is seen edge-on.
+  const Real cosine = std::max(Real(0.05), std::abs(glm::dot(glm::normalize(direction), h.geometricNormal)));
+  return texture.sample(uv, coneWidth * std::sqrt(texelArea / worldArea) / cosine);
+}
+
+}  // namespace
+
+struct WhittedTracer::Path {
+  int depth = 0;
+  Color3 weight{1};     // of this ray in the pixel
+  RayCone cone;
+  bool primary = false;
+  int* budget = nullptr;  // secondary rays left for this primary ray
+};
+
+WhittedTracer::WhittedTracer(const Scene& scene, const RayScene& rays)
+    : scene_(scene), rays_(rays), hall_(scene.renderer == RendererKind::Hall) {
+  const Mat4 viewFromWorld = scene.camera.viewFromWorld();
+  for (const Light& l : scene.lights) lights_.push_back(toEyeSpace(l, viewFromWorld));
+}
+
+Color4 WhittedTracer::primary(const Ray& ray, const RayHit* hit, const RayCone& cone, RayCounts& counts,
+                              PixelProbe* probe) const {
+  ++counts.primary;
+  int budget = kMaxSecondaryRays;
+  Path path;
+  path.primary = true;
+  path.cone = cone;
+  path.budget = &budget;
+  if (!hit) return scene_.background;
+  return shade(ray, *hit, path, counts, probe);
+}
+
+Color4 WhittedTracer::trace(const Ray& ray, const Path& path, RayCounts& counts) const {
+  ++counts.secondary;
+  --*path.budget;
+  RayHit hit;
+  if (!rays_.intersect(ray, hit)) return scene_.background;
+  return shade(ray, hit, path, counts);
+}
+
+Color4 WhittedTracer::shade(const Ray& ray, const RayHit& rayHit, const Path& path, RayCounts& counts,
+                            PixelProbe* probe) const {
+  const HitPoint h = hitPoint(rays_, ray, rayHit);
+  const EyeMesh& mesh = rays_.mesh(rayHit.object);
+  const Object& object = *h.object;
+  const SurfaceOptics& optics = object.optics;
+  const Real length = rayHit.t * glm::length(ray.direction);
+  const Vec3 D = glm::normalize(ray.direction);
+
+  // The local equation, as the rasterizer's Phong shading evaluates it at a pixel: the normal of
+  // the side shown under two-sided lighting, vertex colours as the material's ambient and diffuse.
+  Material material = object.material;
+  if (!object.mesh->colors.empty()) {
+    const auto& c = object.mesh->colors;
+    material = withVertexColor(material, h.w[0] * c[h.index[0]] + h.w[1] * c[h.index[1]] + h.w[2] * c[h.index[2]]);
+  }
+  LocalSurface local;
+  local.material = material;
+  local.geometry.position = h.position;
+  local.geometry.normal = scene_.lightModel.twoSided && !h.front ? -h.normal : h.normal;
+  // GL's viewer for primary rays (infinite unless local_viewer); the ray's origin for the others.
+  local.geometry.toViewer = path.primary ? viewerDirection(h.position, scene_.lightModel.localViewer) : -D;
+  const Real etaOutside = 1, etaInside = optics.ior;
+  HallSurface hall;
+  hall.etaViewer = h.front ? etaOutside : etaInside;
+  hall.etaBeyond = h.front ? etaInside : etaOutside;
+  hall.transmissionShininess = optics.transmissionShininess.value_or(material.shininess);
+  hall.transmits = optics.transmits();
+  const bool hallSurface = hall_ && (optics.reflects() || optics.transmits());
+  const ShadowRays shadows(rays_, h, hall_, counts);
+  const LightingTerms terms = localTerms(lights_, scene_.lightModel, scene_.model, local,
+                                         scene_.rayTracing.shadows ? &shadows : nullptr, hallSurface ? &hall : nullptr);
+  Color4 color = clampedColor(terms, material);
+  Vec4 texel(1);
+  if (const Texture* texture = drawnTexture(object))
+    color *= texel = texelAt(*texture, mesh, h, ray.direction, path.cone.width + path.cone.spread * length);
+  if (probe) {
+    probe->hit = true;
+    probe->object = rayHit.object;
+    probe->triangle = rayHit.triangle;
+    probe->frontFacing = h.front;
+    probe->eyePosition = h.position;
+    probe->eyeNormal = local.geometry.normal;
+    probe->material = material;
+    probe->weights = h.w;
+    probe->textured = drawnTexture(object) != nullptr;
+    probe->texel = texel;
+    probe->lit = color;
+    probe->lightVisibility.clear();
+    for (const EyeLight& light : lights_) {
+      LightingTerms unused;
+      LightDetail d;
+      accumulateLight(unused, light, material, scene_.model, local.geometry, &d);
+      probe->lightVisibility.push_back(scene_.rayTracing.shadows ? shadows.towards(light, d.L, d.distance) : Color3(1));
+    }
+  }
+
+  // Mirror and glass: the rays the surface sends on, each weighted by what it carries to the pixel.
+  Color3 rgb(color);
+  const auto follow = [&](const Vec3& direction, const Color3& k) -> Color4 {
+    const Color3 weight = path.weight * k;
+    if (maxComponent(weight) < kMinWeight || *path.budget <= 0) return Color4(0);
+    Ray next;
+    next.origin = offsetOrigin(h.position, h.geometricNormal, direction);
+    next.direction = direction;
+    Path nextPath = path;
+    nextPath.depth = path.depth + 1;
+    nextPath.weight = weight;
+    nextPath.primary = false;
+    nextPath.cone.width = path.cone.width + path.cone.spread * length;
+    return trace(next, nextPath, counts);
+  };
+  if (path.depth < scene_.rayTracing.maxDepth && (optics.reflects() || optics.transmits())) {
+    // The interpolated normal, turned to face the incoming ray.
+    const Vec3 N = glm::dot(h.normal, D) > 0 ? -h.normal : h.normal;
+    const std::optional<Vec3> refracted = refractDirection(D, N, hall.etaViewer, hall.etaBeyond);
+    Color3 kr = optics.reflective, kt = optics.transmissive;
+    if (hall_) {
+      const Real Fr = fresnelDielectric(-glm::dot(N, D), hall.etaViewer, hall.etaBeyond);  // 1 under TIR
+      kr *= Fr;
+      kt *= 1 - Fr;
+    } else if (!refracted) {
+      kr += kt;  // total internal reflection: the transmitted share goes to the mirror ray
+    }
+    if (!refracted) kt = Color3(0);
+    if (kr != Color3(0)) rgb += kr * Color3(follow(reflectDirection(D, N), kr));
+    if (kt != Color3(0)) rgb += kt * Color3(follow(*refracted, kt));
+  }
+  Real alpha = color.a;
+  // GL blending's counterpart: a translucent surface lets (1 − α) of what lies behind through.
+  if (scene_.blend && color.a < 1 && path.depth < kMaxRayDepth) {
+    const Color3 weight = path.weight * (1 - color.a);
+    Color4 behind = Color4(0);
+    if (maxComponent(weight) >= kMinWeight && *path.budget > 0) {
+      Ray next;
+      next.origin = offsetOrigin(h.position, h.geometricNormal, D);
+      next.direction = D;
+      Path nextPath = path;
+      nextPath.depth = path.depth + 1;
+      nextPath.weight = weight;
+      nextPath.cone.width = path.cone.width + path.cone.spread * length;
+      // A primary ray seen through a translucent surface keeps GL's viewer.
+      behind = trace(next, nextPath, counts);
+    } else {
+      behind = scene_.background;
+    }
+    rgb = color.a * rgb + (1 - color.a) * Color3(behind);
+    alpha = color.a + behind.a * (1 - color.a);
+  }
+  // Hall: light coming back out of a medium was filtered over the distance it travelled inside.
+  if (hall_ && !h.front && optics.transmits()) rgb *= powColor(optics.filter, length);
+  if (probe) probe->written = {rgb, alpha};
+  return {rgb, alpha};
+}
+
+}  // namespace illum
