@@ -243,8 +243,16 @@ Color4 WhittedTracer::shade(const Ray& ray, const RayHit& rayHit, const Path& pa
       kr += kt;  // total internal reflection: the transmitted share goes to the mirror ray
     }
     if (!refracted) kt = Color3(0);
-    if (kr != Color3(0)) rgb += kr * Color3(follow(reflectDirection(D, N), kr));
-    if (kt != Color3(0)) rgb += kt * Color3(follow(*refracted, kt));
+    // Interpolated normals tilt away from the true surface near silhouettes, where a mirror ray
+    // could point into the surface it leaves (or a refracted one out of it): such a ray is turned
+    // back across the triangle's plane instead of hitting its own surface.
+    const Vec3 Ng = glm::dot(h.geometricNormal, D) > 0 ? -h.geometricNormal : h.geometricNormal;
+    const auto keepSide = [&](Vec3 direction, bool above) {
+      const Real side = glm::dot(direction, Ng);
+      return (side > 0) == above ? direction : glm::normalize(direction - 2 * side * Ng);
+    };
+    if (kr != Color3(0)) rgb += kr * Color3(follow(keepSide(reflectDirection(D, N), true), kr));
+    if (kt != Color3(0)) rgb += kt * Color3(follow(keepSide(*refracted, false), kt));
   }
   Real alpha = color.a;
   // GL blending's counterpart: a translucent surface lets (1 − α) of what lies behind through.
