@@ -4,6 +4,7 @@
 #include <illum/render.h>
 #include <illum/scene.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -15,11 +16,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   limits.maxMemoryMiB = 256;
   limits.maxSeconds = 2;
   try {
-    const illum::Scene scene =
+    illum::Scene scene =
         illum::parseScene(std::string(reinterpret_cast<const char*>(data), size), "fuzz.json", "/nonexistent", limits);
     if (illum::cameraFault(scene.camera, illum::Real(scene.width) / illum::Real(scene.height)) ==
-        illum::CameraFault::None)
+        illum::CameraFault::None) {
+      // The ray tracers' work grows with samples and depth: a few of each keep every run short.
+      scene.rayTracing.samples = std::min(scene.rayTracing.samples, 2);
+      scene.rayTracing.maxDepth = std::min(scene.rayTracing.maxDepth, 4);
       (void)illum::renderScene(scene);
+    }
   } catch (const illum::InputError&) {
   }
   return 0;

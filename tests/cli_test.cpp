@@ -329,6 +329,55 @@ TEST(CliBench, PrintsOneJsonObjectWithTheFigures) {
   EXPECT_EQ(run("bench --frames 0").exitCode, 2);
 }
 
+TEST(CliRayTracing, RendererOptionsApplyAndBadValuesAreRefused) {
+  TempDir dir;
+  const std::string out = (dir / "out.png").string();
+  // The built-in scene ray traced: its caption says so, and shadows fall where the rasterizer has
+  // none (under the red sphere, on the floor).
+  const RunResult traced = run("render --renderer whitted --width 480 --height 270 -o " + out);
+  ASSERT_EQ(traced.exitCode, 0) << traced.err;
+  const illum::Image whitted = illum::readPng(out);
+  ASSERT_EQ(run("render --renderer whitted --no-shadows --width 480 --height 270 -o " + out).exitCode, 0);
+  const illum::Image unshadowed = illum::readPng(out);
+  EXPECT_NE(whitted.rgba, unshadowed.rgba);
+  ASSERT_EQ(run("render --renderer hall --samples 4 --max-depth 2 --width 96 --height 54 -o " + out).exitCode, 0);
+  EXPECT_EQ(illum::readPng(out).width, 96);
+  const RunResult bad = run("render --renderer pathtracer -o " + out);
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_NE(bad.err.find("--renderer: expected raster, whitted or hall"), std::string::npos) << bad.err;
+  EXPECT_EQ(run("render --renderer whitted --samples 0 -o " + out).exitCode, 2);
+  EXPECT_EQ(run("render --renderer whitted --max-depth 17 -o " + out).exitCode, 2);
+}
+
+TEST(CliRayTracing, DebugPixelReportsShadowsAndTheTracedColour) {
+  TempDir dir;
+  const RunResult r = run("render " + std::string(ILLUM_EXAMPLES_DIR) + "/whitted.json --debug-pixel 200,330 -o " +
+                          (dir / "out.png").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("ray traced (whitted)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("light 0: in shadow"), std::string::npos) << r.out;  // the glass sphere's shadow
+  int b[4] = {0, 0, 0, 0};
+  const auto bytes = r.out.find("= bytes ");
+  ASSERT_NE(bytes, std::string::npos);
+  ASSERT_EQ(std::sscanf(r.out.c_str() + bytes, "= bytes %d %d %d %d", &b[0], &b[1], &b[2], &b[3]), 4);
+  const illum::Image img = illum::readPng(dir / "out.png");
+  for (int c = 0; c < 4; ++c) EXPECT_EQ(img.pixel(200, 330)[c], b[c]);
+}
+
+TEST(CliRayTracing, BenchCountsRays) {
+  TempDir dir;
+  std::ofstream(dir / "one.json") << R"({"width": 64, "height": 48, "renderer": "whitted",
+    "objects": [{"mesh": {"type": "sphere", "slices": 10, "stacks": 5}, "material": {"reflective": [0.5, 0.5, 0.5]}}]})";
+  const RunResult r = run("bench " + (dir / "one.json").string() + " --frames 2 --threads 1");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["renderer"], "whitted");
+  EXPECT_EQ(j["primary_rays"].get<int>(), 64 * 48);
+  EXPECT_GT(j["shadow_rays"].get<int>(), 0);
+  EXPECT_GT(j["secondary_rays"].get<int>(), 0);
+  EXPECT_GT(j["primary_rays_per_core_second"].get<double>(), 0);
+}
+
 TEST(CliOutput, PngEncodingIsDeterministicAndDecodes) {
   TempDir dir;
   ASSERT_EQ(run("render --width 200 --height 100 -o " + (dir / "a.png").string()).exitCode, 0);

@@ -48,5 +48,40 @@ TEST(Examples, FirstLightMatchesTheHandWorkedEquation) {
   EXPECT_EQ(p[3], 255);
 }
 
+// examples/whitted.json after Whitted's 1980 figure: the rasterizer draws a dark mirror sphere, a
+// black glass sphere and no shadows; Whitted's ray tracer shows the checkerboard in the mirror,
+// the scene through the glass and the glass sphere's shadow; Hall's lets light through the glass,
+// so the shadow is lighter.
+TEST(Examples, WhittedShowsShadowsMirrorsAndGlass) {
+  TempDir dir;
+  const fs::path scene = fs::path(ILLUM_EXAMPLES_DIR) / "whitted.json";
+  const auto render = [&](const std::string& renderer) {
+    const fs::path out = dir / (renderer + ".png");
+    const auto r = runIllum("render " + scene.string() + " --renderer " + renderer + " -o " + out.string());
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    return readPng(out);
+  };
+  const Image raster = render("raster"), whitted = render("whitted"), hall = render("hall");
+  for (const Image* image : {&raster, &whitted, &hall}) {
+    const std::uint8_t* sky = image->pixel(320, 20);
+    EXPECT_EQ(sky[0], 82);  // the background: 0.32, 0.55, 0.88
+    EXPECT_EQ(sky[1], 140);
+    EXPECT_EQ(sky[2], 224);
+  }
+  // The mirror sphere's lower half reflects a red square of the floor.
+  EXPECT_LT(raster.pixel(390, 250)[0], 30);
+  EXPECT_GT(whitted.pixel(390, 250)[0], 150);
+  EXPECT_LT(whitted.pixel(390, 250)[1], 80);
+  // Through the glass sphere: the rasterizer's black glass, the ray tracer's refracted sky.
+  EXPECT_EQ(raster.pixel(260, 290)[2], 0);
+  EXPECT_GT(whitted.pixel(260, 290)[2], 150);
+  // The glass sphere's shadow on a yellow square: full in Whitted's model, lighter in Hall's.
+  const int lit = raster.pixel(220, 320)[0], full = whitted.pixel(220, 320)[0], filtered = hall.pixel(220, 320)[0];
+  EXPECT_GT(lit, 180);
+  EXPECT_LT(full, lit * 2 / 5);
+  EXPECT_GT(filtered, full + 40);
+  EXPECT_LT(filtered, lit);
+}
+
 }  // namespace
 }  // namespace illum

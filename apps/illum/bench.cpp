@@ -12,6 +12,7 @@
 #include <chrono>
 #include <cstdio>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace illum::cli {
@@ -56,11 +57,24 @@ int runBench(const BenchOptions& o) {
     pngBytes = encodePng(image).size();
     encodeMs.push_back(msSince(start));
   }
+  // The ray tracers' figures: rays of each kind and the primary rays' BVH throughput per core.
+  std::string rays;
+  if (scene.renderer != RendererKind::Raster) {
+    char buf[400];
+    std::snprintf(buf, sizeof buf,
+                  "\"renderer\": \"%s\", \"primary_rays\": %llu, \"secondary_rays\": %llu, \"shadow_rays\": %llu, "
+                  "\"bvh_ms\": %.1f, \"rays_per_second\": %.0f, \"primary_rays_per_core_second\": %.0f, ",
+                  std::string(toString(scene.renderer)).c_str(), (unsigned long long)stats.primaryRays,
+                  (unsigned long long)stats.secondaryRays, (unsigned long long)stats.shadowRays, stats.bvhMs,
+                  double(stats.primaryRays + stats.secondaryRays + stats.shadowRays) / (median(frameMs) / 1000),
+                  stats.primaryRaySeconds > 0 ? double(stats.primaryRays) / stats.primaryRaySeconds : 0.0);
+    rays = buf;
+  }
   std::printf(
-      "{\"ms_per_frame\": %.3f, \"ms_min\": %.3f, \"encode_ms\": %.3f, \"png_bytes\": %zu, \"load_ms\": %.1f, "
+      "{%s\"ms_per_frame\": %.3f, \"ms_min\": %.3f, \"encode_ms\": %.3f, \"png_bytes\": %zu, \"load_ms\": %.1f, "
       "\"triangles\": %zu, \"triangles_drawn\": %zu, \"fragments\": %zu, \"pixels\": %zu, \"width\": %d, "
       "\"height\": %d, \"frames\": %d, \"threads\": %d, \"simd\": \"%s\", \"peak_mib\": %.1f}\n",
-      median(frameMs), *std::min_element(frameMs.begin(), frameMs.end()), median(encodeMs), pngBytes, loadMs,
+      rays.c_str(), median(frameMs), *std::min_element(frameMs.begin(), frameMs.end()), median(encodeMs), pngBytes, loadMs,
       stats.trianglesIn, stats.trianglesDrawn, stats.fragmentsShaded, std::size_t(scene.width) * std::size_t(scene.height),
       scene.width, scene.height, o.frames, threads, simdTarget(), peakMemoryMiB());
   return 0;

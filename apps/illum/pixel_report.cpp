@@ -63,6 +63,32 @@ Color4 printEquation(const Scene& scene, const Material& material, const Vec3& P
   return lit;
 }
 
+// A ray tracer's pixel: the primary ray's hit, the equation there without shadows, what each
+// shadow ray found, and what the mirror, glass and see-through rays added.
+void printTracedReport(const Scene& scene, const PixelProbe& p, const std::uint8_t* b) {
+  std::printf("pixel (%d, %d): object %zu, triangle %zu, %s face; %s; ray traced (%s): lit where the ray through the "
+              "pixel's centre meets the surface, with the interpolated normal\n",
+              p.x, p.y, p.object, p.triangle, p.frontFacing ? "front" : "back",
+              std::string(toString(scene.model)).c_str(), std::string(toString(scene.renderer)).c_str());
+  std::printf("  barycentric weights: %.4f %.4f %.4f\n", double(p.weights[0]), double(p.weights[1]),
+              double(p.weights[2]));
+  std::printf(" the local equation, every light seen:\n");
+  printEquation(scene, p.material, p.eyePosition, p.eyeNormal);
+  for (std::size_t i = 0; i < p.lightVisibility.size(); ++i) {
+    const Color3& v = p.lightVisibility[i];
+    const char* what = v == Color3(1) ? "seen" : v == Color3(0) ? "in shadow" : "seen through glass";
+    std::printf("  light %zu: %s (%.4f %.4f %.4f)%s\n", i, what, double(v.r), double(v.g), double(v.b),
+                scene.rayTracing.shadows ? "" : ", shadows off");
+  }
+  std::printf("  local colour with shadows%s: %s\n", scene.renderer == RendererKind::Hall ? " (Hall's terms)" : "",
+              rgba(p.lit).c_str());
+  if (p.textured) std::printf("  (× texel %s, GL_MODULATE)\n", rgba(p.texel).c_str());
+  std::printf("  with the reflected, refracted and see-through rays: %s = bytes %d %d %d %d\n", rgba(p.written).c_str(),
+              byte(p.written.r), byte(p.written.g), byte(p.written.b), byte(p.written.a));
+  std::printf("  in the file: bytes %d %d %d %d%s\n", b[0], b[1], b[2], b[3],
+              scene.rayTracing.samples > 1 ? " (the mean of every sample of the pixel)" : "");
+}
+
 }  // namespace
 
 void printPixelReport(const Scene& scene, const PixelProbe& p, const Image& image) {
@@ -70,6 +96,10 @@ void printPixelReport(const Scene& scene, const PixelProbe& p, const Image& imag
   if (!p.hit) {
     std::printf("pixel (%d, %d): background, no surface drawn here\n", p.x, p.y);
     std::printf("  in the file: bytes %d %d %d %d\n", b[0], b[1], b[2], b[3]);
+    return;
+  }
+  if (scene.renderer != RendererKind::Raster) {
+    printTracedReport(scene, p, b);
     return;
   }
   const char* shading = scene.shading == Shading::Flat      ? "flat shading: lit once, at the triangle's last vertex"

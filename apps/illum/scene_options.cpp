@@ -268,7 +268,7 @@ Scene prepareScene(SceneOptions o, double* loadMs) {
     rejectModelOnlyOptions(o);
     // The built-in scene's captions name the model and shading it is drawn with.
     scene = o.input.empty() ? defaultScene(lightingModel.value_or(LightingModel::BlinnPhong),
-                                           shading.value_or(Shading::Phong))
+                                           shading.value_or(Shading::Phong), renderer.value_or(RendererKind::Raster))
                             : loadSceneFile(o.input, o.limits);
     if (o.width) scene.width = *o.width;
     if (o.height) scene.height = *o.height;

@@ -120,6 +120,8 @@ Scene parseScene(const std::string& text, const std::string& name,
 
 // The built-in scene `illum render` draws with no arguments: GLUT's solids in several materials
 // under coloured lights, the seeds' story at a glance, labelled with what each part shows.
-Scene defaultScene(LightingModel model = LightingModel::BlinnPhong, Shading shading = Shading::Phong);
+// Its second caption names the shading frequency, or the ray tracer when `renderer` is one.
+Scene defaultScene(LightingModel model = LightingModel::BlinnPhong, Shading shading = Shading::Phong,
+                   RendererKind renderer = RendererKind::Raster);
 
 }  // namespace illum

@@ -41,12 +41,23 @@ std::string describe(Shading shading) {
   return "";
 }
 
+// What the picture's second line says: the shading frequency, or the ray tracer that lit it.
+std::string describe(Shading shading, RendererKind renderer) {
+  switch (renderer) {
+    case RendererKind::Raster: return describe(shading);
+    case RendererKind::Whitted: return "Whitted ray tracing (1980): shadows, mirror and refracted rays";
+    case RendererKind::Hall: return "Hall ray tracing (1983): Fresnel-weighted mirrors and glass, filtered light";
+  }
+  return "";
+}
+
 }  // namespace
 
-Scene defaultScene(LightingModel model, Shading shading) {
+Scene defaultScene(LightingModel model, Shading shading, RendererKind renderer) {
   Scene s;
   s.model = model;
   s.shading = shading;
+  s.renderer = renderer;
   s.width = 960;
   s.height = 540;
   s.background = {0.06, 0.07, 0.1, 1};
@@ -82,6 +93,10 @@ Scene defaultScene(LightingModel model, Shading shading) {
   s.objects.push_back(object(makeTorus(0.22f, 0.62f, 32, 64),
                              glm::rotate(at(-1.6f, 0.85f, 0), glm::radians(Real(-60)), Vec3(1, 0, 0)),
                              material({0.25, 0.2, 0.07}, {0.75, 0.6, 0.23}, {0.63, 0.56, 0.37}, 51)));
+  // For the ray tracers: the metal mirrors its surroundings (a metal's high reflectance as a high
+  // index: Fresnel gives 0.67 at normal incidence for n = 10).
+  s.objects.back().optics.reflective = {0.6, 0.5, 0.3};
+  s.objects.back().optics.ior = 10;
   // Porcelain teapot in the middle.
   s.objects.push_back(object(makeTeapot(0.9f), at(0.3f, 0.7f, 0.3f),
                              material({0.1, 0.14, 0.2}, {0.45, 0.6, 0.85}, {0.8, 0.8, 0.8}, 90)));
@@ -99,6 +114,7 @@ Scene defaultScene(LightingModel model, Shading shading) {
   floor.indices = {0, 3, 2, 0, 2, 1};
   s.objects.push_back(object(std::move(floor), Mat4(1),
                              material({0.12, 0.12, 0.13}, {0.42, 0.42, 0.45}, {0.25, 0.25, 0.25}, 30)));
+  s.objects.back().optics.reflective = Color3(0.3f);  // a polished floor, for the ray tracers
 
   // Say what the picture shows.
   const auto caption = [&](Real x, const char* text) {
@@ -122,7 +138,7 @@ Scene defaultScene(LightingModel model, Shading shading) {
     s.labels.push_back(l);
   };
   title(30, describe(model), 20);
-  title(54, describe(shading), 16);
+  title(54, describe(shading, renderer), 16);
   title(Real(s.height) - 14,
         "lights: warm key, positional with 1/(a + bd + cd²) · cool fill, directional · magenta spot from behind", 14);
   return s;

@@ -225,6 +225,50 @@ TEST(SceneRejects, DuplicateKeysWithPath) {
   EXPECT_EQ(parse(R"({"lights": [{"diffuse": [1, 0, 0]}, {"diffuse": [0, 1, 0]}]})").lights.size(), 2u);
 }
 
+TEST(SceneDefaults, RayTracingKeysLeaveTheRasterizerAsItWas) {
+  const Scene s = parse(R"({"objects": [{}]})");
+  EXPECT_EQ(s.renderer, RendererKind::Raster);
+  EXPECT_EQ(s.rayTracing.maxDepth, 5);
+  EXPECT_TRUE(s.rayTracing.shadows);
+  EXPECT_EQ(s.rayTracing.samples, 1);
+  const SurfaceOptics& o = s.objects[0].optics;
+  EXPECT_EQ(o.reflective, Color3(0));
+  EXPECT_EQ(o.transmissive, Color3(0));
+  EXPECT_FLOAT_EQ(o.ior, 1.5f);
+  EXPECT_FALSE(o.transmissionShininess.has_value());
+  EXPECT_EQ(o.filter, Color3(1));
+}
+
+TEST(SceneFile, ReadsTheRayTracingKeys) {
+  const Scene s = parse(R"({"renderer": "hall", "max_depth": 7, "shadows": false, "samples": 16,
+    "objects": [{"material": {"reflective": [0.1, 0.2, 0.3], "transmissive": [0.9, 0.8, 0.7], "ior": 1.33,
+                              "transmission_shininess": 12, "filter": [0.5, 0.6, 0.7]}}]})");
+  EXPECT_EQ(s.renderer, RendererKind::Hall);
+  EXPECT_EQ(s.rayTracing.maxDepth, 7);
+  EXPECT_FALSE(s.rayTracing.shadows);
+  EXPECT_EQ(s.rayTracing.samples, 16);
+  const SurfaceOptics& o = s.objects[0].optics;
+  EXPECT_EQ(o.reflective, Color3(0.1f, 0.2f, 0.3f));
+  EXPECT_EQ(o.transmissive, Color3(0.9f, 0.8f, 0.7f));
+  EXPECT_FLOAT_EQ(o.ior, 1.33f);
+  EXPECT_EQ(o.transmissionShininess, 12);
+  EXPECT_EQ(o.filter, Color3(0.5f, 0.6f, 0.7f));
+  EXPECT_EQ(parse(R"({"renderer": "whitted"})").renderer, RendererKind::Whitted);
+}
+
+TEST(SceneRejects, BadRayTracingKeys) {
+  EXPECT_EQ(errorOf(R"({"renderer": "pathtracer"})"),
+            "scene.json: /renderer: expected \"raster\", \"whitted\" or \"hall\", got \"pathtracer\"");
+  EXPECT_NE(errorOf(R"({"max_depth": 17})").find("/max_depth"), std::string::npos);
+  EXPECT_NE(errorOf(R"({"samples": 0})").find("/samples"), std::string::npos);
+  EXPECT_NE(errorOf(R"({"shadows": 1})").find("/shadows"), std::string::npos);
+  EXPECT_NE(errorOf(R"({"objects": [{"material": {"ior": 0.5}}]})").find("/objects/0/material/ior"), std::string::npos);
+  EXPECT_NE(errorOf(R"({"objects": [{"material": {"reflective": [2, 0, 0]}}]})").find("/objects/0/material/reflective"),
+            std::string::npos);
+  EXPECT_NE(errorOf(R"({"objects": [{"material": {"filter": [0.5, 0.5]}}]})").find("expected 3 numbers"),
+            std::string::npos);
+}
+
 TEST(SceneFile, LightColoursMayCarryAlpha) {
   const Scene s = parse(R"({"lights": [{"diffuse": [0.5, 0.25, 1, 1]}], "light_model": {"ambient": [0.1, 0.1, 0.1, 1]}})");
   EXPECT_EQ(s.lights[0].diffuse, Color3(0.5, 0.25, 1));

@@ -35,7 +35,7 @@ struct LocalSurface {
 // The terms (unclamped) of:
 //   Whitted (hall == nullptr): e + a_cm·a_cs + Σ_i att·spot·[a_cm·a_cli + S_i ⊙ (diffuse_i + specular_i)]
 //   Hall:    the same with specular_i × F_r(L·H), plus for lights behind a transmissive surface
-//            att·spot·S_i ⊙ F_t · max(N·H′,0)^n′ · s_cm ⊙ s_cli (Hall & Greenberg 1983, eq. 4's
+//            att·spot·S_i ⊙ F_t · max(N·H′,0)^n′ · s_cm ⊙ s_cli (Hall & Greenberg 1983's
 //            transmitted specular term), H′ the normal of the facets that refract L into V,
 //            H′ ∝ −(η_L·L + η_V·V) (Walter et al. 2007's form of Hall's H′), F_t = 1 − F_r(V·H′).
 // S_i is `visibility` towards light i (1 everywhere when it is null).

@@ -14,9 +14,10 @@ namespace {
 // Rays whose weight in the pixel falls below this are not traced: they could not change a byte
 // (Hall and Greenberg's adaptive depth control).
 constexpr Real kMinWeight = Real(1) / 512;
-// At most this many reflected, refracted and see-through rays per primary ray: with k_r = k_t = 1
-// Whitted's tree doubles at every level, and no scene may ask for unbounded work.
-constexpr int kMaxSecondaryRays = 512;
+// At most this many reflected, refracted and see-through rays per primary ray (a full tree of
+// depth 6 has 126): with k_r = k_t = 1 Whitted's tree doubles at every level, and no scene may ask
+// for unbounded work.
+constexpr int kMaxSecondaryRays = 128;
 // Shadow rays pass through at most this many transmissive surfaces (Hall).
 constexpr int kMaxShadowCrossings = 16;
 

@@ -19,7 +19,7 @@ namespace fs = std::filesystem;
 
 std::vector<fs::path> sceneFiles() {
   std::vector<fs::path> files;
-  for (const fs::path dir : {fs::path(ILLUM_REPO_DIR) / "tests/scenes/parity", fs::path(ILLUM_REPO_DIR) / "tests/scenes",
+  for (const fs::path& dir : {fs::path(ILLUM_REPO_DIR) / "tests/scenes/parity", fs::path(ILLUM_REPO_DIR) / "tests/scenes",
                              fs::path(ILLUM_REPO_DIR) / "examples"})
     for (const auto& e : fs::directory_iterator(dir))
       if (e.path().extension() == ".json") files.push_back(e.path());
@@ -35,6 +35,7 @@ Image withThreads(int threads, const Scene& scene) {
 TEST(BinnedPipeline, EqualsTheReferenceAndEveryThreadCount) {
   std::vector<std::pair<std::string, Scene>> scenes = {{"built-in", defaultScene()}};
   for (const fs::path& f : sceneFiles()) scenes.push_back({f.filename().string(), loadSceneFile(f)});
+  for (auto& named : scenes) named.second.renderer = RendererKind::Raster;  // a ray-traced example, rasterized
   // A big picture spans many tiles; blending shows any change of drawing order.
   Scene wide = defaultScene();
   wide.width = 1000, wide.height = 700, wide.blend = true;
