@@ -270,8 +270,17 @@ Scene prepareScene(SceneOptions o, double* loadMs) {
     scene = o.input.empty() ? defaultScene(lightingModel.value_or(LightingModel::BlinnPhong),
                                            shading.value_or(Shading::Phong), renderer.value_or(RendererKind::Raster))
                             : loadSceneFile(o.input, o.limits);
+    const int designedWidth = scene.width, designedHeight = scene.height;
     if (o.width) scene.width = *o.width;
     if (o.height) scene.height = *o.height;
+    // The built-in scene's captions are made for its own size: they move and scale with the picture.
+    if (o.input.empty()) {
+      const Vec2 scale(Real(scene.width) / Real(designedWidth), Real(scene.height) / Real(designedHeight));
+      for (Label& label : scene.labels) {
+        if (label.pixel) *label.pixel *= scale;
+        label.size = std::max(Real(4), label.size * std::min(scale.x, scale.y));
+      }
+    }
     applyExplicitCamera(o, scene.camera);
     validateCamera(o, scene.camera, Real(scene.width) / Real(scene.height));
   } else {
