@@ -273,13 +273,15 @@ Scene prepareScene(SceneOptions o, double* loadMs) {
     const int designedWidth = scene.width, designedHeight = scene.height;
     if (o.width) scene.width = *o.width;
     if (o.height) scene.height = *o.height;
-    // The built-in scene's captions are made for its own size: they move and scale with the picture.
+    // The built-in scene's captions are made for its own size: they move and scale with the
+    // picture, and a picture too small to read them (a thumbnail) goes without.
     if (o.input.empty()) {
       const Vec2 scale(Real(scene.width) / Real(designedWidth), Real(scene.height) / Real(designedHeight));
       for (Label& label : scene.labels) {
         if (label.pixel) *label.pixel *= scale;
-        label.size = std::max(Real(4), label.size * std::min(scale.x, scale.y));
+        label.size *= std::min(scale.x, scale.y);
       }
+      std::erase_if(scene.labels, [](const Label& label) { return label.size < 7; });
     }
     applyExplicitCamera(o, scene.camera);
     validateCamera(o, scene.camera, Real(scene.width) / Real(scene.height));
