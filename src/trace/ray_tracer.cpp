@@ -1,5 +1,6 @@
 #include "trace/ray_tracer.h"
 
+#include "raster/draw_record.h"
 #include "raster/framebuffer.h"
 #include "raster/labels.h"
 #include "trace/camera_rays.h"
@@ -75,8 +76,8 @@ class TracedFrame {
     for (int k = 0; k < 16; ++k) {
       const int x = bx + k % kBlock, y = by + k / kBlock;
       active[std::size_t(k)] = x < x1 && y < y1;
-      const Vec2 offset = scene_.rayTracing.samples == 1 ? Vec2(Real(0.5)) : jitter(x, y, s);
-      rays[std::size_t(k)] = camera_.through(Real(x) + offset.x, Real(y) + offset.y);
+      const Vec2 at = pixelPoint(x, y, s);
+      rays[std::size_t(k)] = camera_.through(at.x, at.y);
     }
     const auto start = Clock::now();
     rays_.intersect16(rays.data(), active.data(), hits.data());
@@ -89,11 +90,24 @@ class TracedFrame {
       RayCone cone;
       cone.spread = camera_.pixelWidthAt(1) - camera_.pixelWidthAt(0);
       cone.width = camera_.pixelWidthAt(0);
+      if (hit.t >= 0 && drawnTexture(*rays_.mesh(hit.object).object)) {
+        // The rays through the next pixel right and the next one up (GL's window y is up).
+        const Vec2 at = pixelPoint(x, y, s);
+        cone.differentials = true;
+        cone.right = camera_.through(at.x + 1, at.y);
+        cone.up = camera_.through(at.x, at.y - 1);
+      }
       PixelProbe* probe = probe_ && s == 0 && x == probe_->x && y == probe_->y ? probe_ : nullptr;
       const Color4 c = tracer_.primary(ray, hit.t >= 0 ? &hit : nullptr, cone, counts.rays, probe);
       // Each sample as the display shows it: clamped, then averaged.
       sum[std::size_t((y - y0) * kTile + (x - x0))] += glm::clamp(c, Color4(0), Color4(1));
     }
+  }
+
+  // Where sample s of pixel (x, y) goes through the image: the centre, or jittered.
+  Vec2 pixelPoint(int x, int y, int s) const {
+    const Vec2 offset = scene_.rayTracing.samples == 1 ? Vec2(Real(0.5)) : jitter(x, y, s);
+    return {Real(x) + offset.x, Real(y) + offset.y};
   }
 
   const Scene& scene_;

@@ -108,18 +108,39 @@ class ShadowRays final : public LightVisibility {
   RayCounts& counts_;
 };
 
-// The texel GL_MODULATE multiplies by, filtered for the ray cone's footprint on the triangle.
-Vec4 texelAt(const Texture& texture, const EyeMesh& mesh, const HitPoint& h, const Vec3& direction, Real coneWidth) {
+// Texture coordinates where `ray` meets the plane of the hit's triangle (the barycentrics of that
+// point, which may lie outside the triangle, as the rasterizer's extrapolated ones do).
+Vec2 uvOnPlane(const EyeMesh& mesh, const HitPoint& h, const Ray& ray) {
   const auto& uvs = mesh.object->mesh->uvs;
-  const Vec2 &t0 = uvs[h.index[0]], &t1 = uvs[h.index[1]], &t2 = uvs[h.index[2]];
-  const Vec2 uv = h.w[0] * t0 + h.w[1] * t1 + h.w[2] * t2;
+  const Vec3 &p0 = mesh.positions[h.index[0]], &p1 = mesh.positions[h.index[1]], &p2 = mesh.positions[h.index[2]];
+  const Vec3 e1 = p1 - p0, e2 = p2 - p0, n = glm::cross(e1, e2);
+  const Real facing = glm::dot(ray.direction, n);
+  if (facing == 0) return h.w[0] * uvs[h.index[0]] + h.w[1] * uvs[h.index[1]] + h.w[2] * uvs[h.index[2]];
+  const Vec3 P = ray.origin + (glm::dot(p0 - ray.origin, n) / facing) * ray.direction;
+  const Real area = glm::dot(n, n);
+  const Real w1 = glm::dot(glm::cross(P - p0, e2), n) / area, w2 = glm::dot(glm::cross(e1, P - p0), n) / area;
+  return (1 - w1 - w2) * uvs[h.index[0]] + w1 * uvs[h.index[1]] + w2 * uvs[h.index[2]];
+}
+
+// The texel GL_MODULATE multiplies by, filtered for the pixel's footprint on the triangle: for a
+// primary ray as the rasterizer finds it (the texture coordinates one pixel right and one pixel
+// up), further along a path from the ray cone's width.
+Vec4 texelAt(const Texture& texture, const EyeMesh& mesh, const HitPoint& h, const Ray& ray, const RayCone& cone,
+             Real coneWidth) {
+  const auto& uvs = mesh.object->mesh->uvs;
+  const Vec2 uv = h.w[0] * uvs[h.index[0]] + h.w[1] * uvs[h.index[1]] + h.w[2] * uvs[h.index[2]];
+  const Vec2 size(Real(texture.width()), Real(texture.height()));
+  if (cone.differentials) {
+    const Vec2 dx = uvOnPlane(mesh, h, cone.right) - uv, dy = uvOnPlane(mesh, h, cone.up) - uv;
+    return texture.sample(uv, std::max(glm::length(dx * size), glm::length(dy * size)));
+  }
   const Vec3 &p0 = mesh.positions[h.index[0]], &p1 = mesh.positions[h.index[1]], &p2 = mesh.positions[h.index[2]];
   const Real worldArea = glm::length(glm::cross(p1 - p0, p2 - p0));
-  const Vec2 e1 = t1 - t0, e2 = t2 - t0;
-  const Real texelArea = std::abs(e1.x * e2.y - e1.y * e2.x) * Real(texture.width()) * Real(texture.height());
+  const Vec2 e1 = uvs[h.index[1]] - uvs[h.index[0]], e2 = uvs[h.index[2]] - uvs[h.index[0]];
+  const Real texelArea = std::abs(e1.x * e2.y - e1.y * e2.x) * size.x * size.y;
   if (!(worldArea > 0)) return texture.sample(uv, 1);
   // Texels per unit length on the triangle, stretched along the view where it is seen edge-on.
-  const Real cosine = std::max(Real(0.05), std::abs(glm::dot(glm::normalize(direction), h.geometricNormal)));
+  const Real cosine = std::max(Real(0.05), std::abs(glm::dot(glm::normalize(ray.direction), h.geometricNormal)));
   return texture.sample(uv, coneWidth * std::sqrt(texelArea / worldArea) / cosine);
 }
 
@@ -194,7 +215,7 @@ Color4 WhittedTracer::shade(const Ray& ray, const RayHit& rayHit, const Path& pa
   Color4 color = clampedColor(terms, material);
   Vec4 texel(1);
   if (const Texture* texture = drawnTexture(object))
-    color *= texel = texelAt(*texture, mesh, h, ray.direction, path.cone.width + path.cone.spread * length);
+    color *= texel = texelAt(*texture, mesh, h, ray, path.cone, path.cone.width + path.cone.spread * length);
   if (probe) {
     probe->hit = true;
     probe->object = rayHit.object;
@@ -229,6 +250,7 @@ Color4 WhittedTracer::shade(const Ray& ray, const RayHit& rayHit, const Path& pa
     nextPath.weight = weight;
     nextPath.primary = false;
     nextPath.cone.width = path.cone.width + path.cone.spread * length;
+    nextPath.cone.differentials = false;
     return trace(next, nextPath, counts);
   };
   if (path.depth < scene_.rayTracing.maxDepth && (optics.reflects() || optics.transmits())) {
