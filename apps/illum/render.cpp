@@ -77,8 +77,17 @@ int runRender(const RenderOptions& o) {
     encoded = Clock::now();
     writeOutputFile(o.output, png, OutputOptions{o.force});
   }
-  if (o.scene.verbose) {
-    const auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
+  const auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
+  if (o.scene.verbose && scene.renderer != RendererKind::Raster) {
+    std::fprintf(stderr,
+                 "illum: loaded in %.1f ms; ray traced (%s) %dx%d in %.1f ms (%s triangles, BVH built in %.1f ms; "
+                 "%s primary, %s reflected/refracted, %s shadow rays; %d threads); PNG encoded in %.1f ms; "
+                 "peak memory %.0f MiB\n",
+                 loadMs, std::string(toString(scene.renderer)).c_str(), scene.width, scene.height, ms(loaded, rendered),
+                 withThousands(stats.trianglesIn).c_str(), stats.bvhMs, withThousands(stats.primaryRays).c_str(),
+                 withThousands(stats.secondaryRays).c_str(), withThousands(stats.shadowRays).c_str(), limit.threads(),
+                 ms(rendered, encoded), peakMemoryMiB());
+  } else if (o.scene.verbose) {
     std::fprintf(stderr,
                  "illum: loaded in %.1f ms; rendered %dx%d in %.1f ms (%s triangles in, %s drawn, %s fragments shaded; "
                  "%d threads, %s); PNG encoded in %.1f ms; peak memory %.0f MiB\n",
