@@ -208,7 +208,7 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o) {
   cmd.add_option("--width", o.width, "Image width in pixels")->check(CLI::Range(1, 16384));
   cmd.add_option("--height", o.height, "Image height in pixels")->check(CLI::Range(1, 16384));
   cmd.add_option("--resolution", o.resolution, "Image size W,H (models: 1000,600)");
-  cmd.add_option("--model", o.model, "Lighting model: blinn-phong, phong or lambert");
+  cmd.add_option("--model", o.model, "Lighting model: blinn-phong, phong, lambert or cook-torrance");
   cmd.add_option("--shading", o.shading, "Shading frequency: flat, gouraud or phong");
   cmd.add_option("--renderer", o.renderer, "raster (default), whitted (ray tracing, 1980) or hall (1983)");
   cmd.add_flag("--no-shadows", o.noShadows, "Ray tracers: no shadow rays");
@@ -251,7 +251,7 @@ Scene prepareScene(SceneOptions o, double* loadMs) {
   std::optional<Shading> shading;
   if (!o.model.empty()) {
     lightingModel = parseLightingModel(o.model);
-    if (!lightingModel) throw InputError("--model: expected blinn-phong, phong or lambert, got \"" + o.model + "\"");
+    if (!lightingModel) throw InputError("--model: expected blinn-phong, phong, lambert or cook-torrance, got \"" + o.model + "\"");
   }
   std::optional<RendererKind> renderer;
   if (!o.renderer.empty()) {
@@ -302,7 +302,11 @@ Scene prepareScene(SceneOptions o, double* loadMs) {
     throw InputError("the image would be " + std::to_string(scene.width) + "×" + std::to_string(scene.height) + " = " +
                      withThousands(std::uint64_t(scene.width) * std::uint64_t(scene.height)) +
                      " pixels, more than the limit of " + withThousands(o.limits.maxPixels) + " (raise it with --max-pixels)");
-  if (lightingModel) scene.model = *lightingModel;
+  if (lightingModel) {
+    // --model overrides every material's own model too.
+    scene.model = *lightingModel;
+    for (Object& object : scene.objects) object.material.model.reset();
+  }
   if (shading) scene.shading = *shading;
   if (renderer) scene.renderer = *renderer;
   if (o.noShadows) scene.rayTracing.shadows = false;

@@ -13,8 +13,9 @@ namespace illum {
 using Color3 = Vec3;
 using Color4 = Vec4;
 
-// The specular lobe: blinn-phong (N·H)^n, phong (R·V)^n, or none (lambert).
-enum class LightingModel { BlinnPhong, Phong, Lambert };
+// The specular lobe: blinn-phong (N·H)^n, phong (R·V)^n, none (lambert), or Cook and Torrance's
+// microfacet reflectance D·F·G / (4 N·L N·V) (cook-torrance, physically based).
+enum class LightingModel { BlinnPhong, Phong, Lambert, CookTorrance };
 // Where the equation is evaluated: once per triangle, per vertex, or per pixel.
 enum class Shading { Flat, Gouraud, Phong };
 
@@ -36,14 +37,56 @@ struct Light {
   Real spotCutoff = 180;  // degrees; 180 means no spot
 };
 
-// glMaterial parameters with GL's defaults. Shininess is not capped at 128.
+// The microfacet distribution of the cook-torrance model: Trowbridge-Reitz/GGX (Walter et al.
+// 2007, glTF's) or Beckmann's (Cook and Torrance 1982).
+enum class Microfacet { GGX, Beckmann };
+
+// What the cook-torrance model reads: glTF's metallic-roughness parameters.
+struct PhysicalMaterial {
+  Color3 baseColor{0.8, 0.8, 0.8};  // the diffuse albedo of a dielectric, the reflectance of a metal
+  Real metallic = 0;                // 0 dielectric .. 1 metal
+  Real roughness = 1;               // perceptual roughness; the distribution's α = roughness²
+  Color3 f0{0.04, 0.04, 0.04};      // a dielectric's reflectance at normal incidence, ((n−1)/(n+1))²
+  Microfacet distribution = Microfacet::GGX;
+};
+
+// glMaterial parameters with GL's defaults (shininess is not capped at 128), or a physically
+// based material. Every model draws every material: a physically based one carries GL
+// parameters derived from it (glFromPhysical, called by whoever makes one), and a GL one is seen
+// by cook-torrance through physicalOf. `model`, when set, is this material's lighting model.
 struct Material {
   Color4 ambient{0.2, 0.2, 0.2, 1};
-  Color4 diffuse{0.8, 0.8, 0.8, 1};
+  Color4 diffuse{0.8, 0.8, 0.8, 1};  // its alpha is the material's, under every model
   Color4 specular{0, 0, 0, 1};
-  Color4 emission{0, 0, 0, 1};
+  Color4 emission{0, 0, 0, 1};       // under every model
   Real shininess = 0;
+  bool physicallyBased = false;      // `physical` was given, the GL parameters derived from it
+  PhysicalMaterial physical;
+  std::optional<LightingModel> model;
 };
+
+// A GL material as cook-torrance sees it: base colour = diffuse, a dielectric whose f0 = 0.16·s²
+// for the specular colour s (Filament's reflectance mapping: s = 0.5 gives 0.04), α = √(2/(n+2))
+// (the Blinn-Phong exponent n that matches a Beckmann lobe of roughness α, Walter et al. 2007).
+PhysicalMaterial physicalFromGl(const Material& m);
+// Makes `m` physically based with `p` and derives its GL parameters, as the classic models see
+// it: ambient = diffuse = base·(1−metallic), specular = 2.5·√f0 (physicalFromGl's mapping
+// reversed) mixed towards the base colour by metallic, shininess n = 2/α² − 2 (emission and alpha
+// are kept).
+void glFromPhysical(Material& m, const PhysicalMaterial& p);
+// What cook-torrance reads of any material.
+inline PhysicalMaterial physicalOf(const Material& m) { return m.physicallyBased ? m.physical : physicalFromGl(m); }
+// The material GL uses at a vertex with colour `c` under GL_COLOR_MATERIAL(GL_AMBIENT_AND_DIFFUSE);
+// for cook-torrance the colour is the base colour.
+inline Material withVertexColor(Material m, const Color4& c) {
+  m.ambient = c;
+  m.diffuse = c;
+  m.physical.baseColor = Color3(c);
+  return m;
+}
+
+// The lighting model that draws `m` in a scene whose model is `sceneModel`.
+inline LightingModel modelOf(const Material& m, LightingModel sceneModel) { return m.model.value_or(sceneModel); }
 
 // glLightModel parameters with GL's defaults.
 struct LightModel {
@@ -102,6 +145,9 @@ struct LightDetail {
   Vec3 R{0};             // phong: 2N(N·L) − L
   Real RoV = 0;
   Real lobe = 0;         // (N·H)^n or (R·V)^n; 0 when N·L ≤ 0 (f_i = 0) or lambert
+  // cook-torrance: its terms at this light (N·V, V·H, and D, the visibility G/(4 N·L N·V), F)
+  Real NoV = 0, VoH = 0, D = 0, visibility = 0;
+  Color3 F{0};
   LightingTerms terms;   // this light's ambient, diffuse and specular, attenuation and spot applied
 };
 

@@ -14,7 +14,7 @@ DrawTarget::DrawTarget(const FrameContext& frame, const Scene& scene, Framebuffe
   litFromSurface = sizeof(Real) == 4 && !probe && frame.shading == Shading::Phong;
   for (const Object& o : scene.objects) {
     layouts.push_back(AttributeLayout::forObject(frame, o, probe != nullptr));
-    setups.push_back({frame.lights, frame.lightModel, frame.model, o.material});
+    setups.push_back({frame.lights, frame.lightModel, modelOf(o.material, frame.model), o.material});
     colored.push_back(!o.mesh->colors.empty());
     if (drawnTexture(o)) litFromSurface = false;
   }

@@ -21,7 +21,7 @@ Color4 shadePhongFragment(const FrameContext& frame, const Material& baseMateria
   const PhongSurface p = phongSurface(frame, vertexColors, r, l, w);
   const Material material = vertexColors ? withVertexColor(baseMaterial, p.color) : baseMaterial;
   const SurfaceGeometry s{p.position, p.normal, viewerDirection(p.position, frame.lightModel.localViewer)};
-  return clampedColor(evaluateTerms(frame.lights, frame.lightModel, material, frame.model, s), material);
+  return clampedColor(evaluateTerms(frame.lights, frame.lightModel, material, modelOf(material, frame.model), s), material);
 }
 
 Vec4 sampleDiffuseTexture(const Texture& texture, const DrawRecord& r, const AttributeLayout& l, Real l0, Real l1,

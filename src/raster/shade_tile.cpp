@@ -80,7 +80,8 @@ class PhongBatch {
   void flush() {
     if (n_ == 0) return;
     const Object& object = target_.scene.objects[object_];
-    const ShadeSetup setup{target_.frame.lights, target_.frame.lightModel, target_.frame.model, object.material};
+    const ShadeSetup setup{target_.frame.lights, target_.frame.lightModel, modelOf(object.material, target_.frame.model),
+                           object.material};
     SurfacePoints points;
     points.count = n_;
     for (int c = 0; c < 3; ++c) points.position[c] = s_.soa[c], points.normal[c] = s_.soa[3 + c];

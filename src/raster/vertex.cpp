@@ -17,7 +17,7 @@ constexpr std::size_t kLightingBatch = 256;  // vertices lit together, as struct
 // batches: front colours with N, and under two-sided lighting back colours with −N.
 void lightVertices(const FrameContext& frame, const Object& object, std::vector<ShadedVertex>& out, std::size_t first,
                    std::size_t last) {
-  const ShadeSetup setup{frame.lights, frame.lightModel, frame.model, object.material};
+  const ShadeSetup setup{frame.lights, frame.lightModel, modelOf(object.material, frame.model), object.material};
   const bool hasColors = !object.mesh->colors.empty();
   Real soa[14][kLightingBatch];  // position xyz, normal xyz, colour rgba, result rgba
   for (std::size_t b = first; b < last; b += kLightingBatch) {

@@ -36,13 +36,6 @@ struct ShadedVertex : VertexAttributes {
   WindowPosition window;
 };
 
-// The material GL uses at a vertex with colour `c` under GL_COLOR_MATERIAL(GL_AMBIENT_AND_DIFFUSE).
-inline Material withVertexColor(Material m, const Color4& c) {
-  m.ambient = c;
-  m.diffuse = c;
-  return m;
-}
-
 // The object's vertices [first, last) through the vertex stage, into `out` (already sized to the
 // mesh's vertex count); each vertex independent of the others, so ranges can run in parallel.
 void runVertexStage(const FrameContext& frame, const Object& object, std::vector<ShadedVertex>& out,

@@ -28,6 +28,7 @@ std::string describe(LightingModel model) {
     case LightingModel::BlinnPhong: return "Blinn-Phong: ambient + diffuse (N·L) + specular (N·H)ⁿ";
     case LightingModel::Phong: return "Phong: ambient + diffuse (N·L) + specular (R·V)ⁿ";
     case LightingModel::Lambert: return "Lambert: ambient + diffuse (N·L), no specular";
+    case LightingModel::CookTorrance: return "Cook-Torrance: diffuse + D·F·G / (4 (N·L)(N·V))";
   }
   return "";
 }

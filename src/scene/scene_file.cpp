@@ -83,15 +83,54 @@ Light readLight(const JsonReader& j) {
   return l;
 }
 
+// A material: GL's keys (glMaterial), or physically based ones (glTF's metallic-roughness), not
+// both; emission, the lighting model and the ray tracers' keys go with either.
 Material readMaterial(const JsonReader& j) {
-  j.expectObject({"ambient", "diffuse", "specular", "emission", "shininess", "reflective", "transmissive", "ior",
-                  "transmission_shininess", "filter"});
+  j.expectObject({"ambient", "diffuse", "specular", "emission", "shininess", "base_color", "metallic", "roughness",
+                  "f0", "distribution", "model", "reflective", "transmissive", "ior", "transmission_shininess",
+                  "filter"});
   Material m;
-  if (j.has("ambient")) m.ambient = j.at("ambient").color34();
-  if (j.has("diffuse")) m.diffuse = j.at("diffuse").color34();
-  if (j.has("specular")) m.specular = j.at("specular").color34();
   if (j.has("emission")) m.emission = j.at("emission").color34();
-  if (j.has("shininess")) m.shininess = j.at("shininess").nonNegative();
+  if (j.has("model")) {
+    const std::string name = j.at("model").string();
+    m.model = parseLightingModel(name);
+    if (!m.model)
+      j.at("model").fail("expected \"blinn-phong\", \"phong\", \"lambert\" or \"cook-torrance\", got \"" + name + "\"");
+  }
+  const bool physical = j.has("base_color") || j.has("metallic") || j.has("roughness") || j.has("f0") ||
+                        j.has("distribution");
+  if (!physical) {
+    if (j.has("ambient")) m.ambient = j.at("ambient").color34();
+    if (j.has("diffuse")) m.diffuse = j.at("diffuse").color34();
+    if (j.has("specular")) m.specular = j.at("specular").color34();
+    if (j.has("shininess")) m.shininess = j.at("shininess").nonNegative();
+    return m;
+  }
+  for (const char* gl : {"ambient", "diffuse", "specular", "shininess"})
+    if (j.has(gl))
+      j.at(gl).fail("a physically based material (base_color, metallic, roughness, f0, distribution) or a GL one "
+                    "(ambient, diffuse, specular, shininess), not both");
+  PhysicalMaterial p;
+  if (j.has("base_color")) {
+    const Color4 base = j.at("base_color").color34();
+    p.baseColor = Color3(base);
+    m.diffuse.a = base.a;
+  }
+  if (j.has("metallic")) p.metallic = j.at("metallic").number(0, 1);
+  if (j.has("roughness")) p.roughness = j.at("roughness").number(0, 1);
+  if (j.has("f0")) {
+    p.f0 = j.at("f0").color3();
+  } else if (j.has("ior")) {
+    const Real n = j.at("ior").number(Real(1), Real(10));
+    p.f0 = Color3(((n - 1) / (n + 1)) * ((n - 1) / (n + 1)));
+  }
+  if (j.has("distribution")) {
+    const std::string d = j.at("distribution").string();
+    if (d == "ggx") p.distribution = Microfacet::GGX;
+    else if (d == "beckmann") p.distribution = Microfacet::Beckmann;
+    else j.at("distribution").fail("expected \"ggx\" or \"beckmann\", got \"" + d + "\"");
+  }
+  glFromPhysical(m, p);
   return m;
 }
 
@@ -329,7 +368,7 @@ Scene parseScene(const std::string& text, const std::string& name, const std::fi
   if (j.has("model")) {
     const std::string m = j.at("model").string();
     const auto model = parseLightingModel(m);
-    if (!model) j.at("model").fail("expected \"blinn-phong\", \"phong\" or \"lambert\", got \"" + m + "\"");
+    if (!model) j.at("model").fail("expected \"blinn-phong\", \"phong\", \"lambert\" or \"cook-torrance\", got \"" + m + "\"");
     s.model = *model;
   }
   if (j.has("shading")) {

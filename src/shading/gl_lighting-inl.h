@@ -15,6 +15,7 @@
 #include <illum/lighting.h>
 
 #include "shading/brdf-inl.h"
+#include "shading/cook_torrance-inl.h"
 #include "shading/light_sample-inl.h"
 
 HWY_BEFORE_NAMESPACE();
@@ -40,8 +41,14 @@ struct TermsL {
   Vec3L<V> emission, ambient, diffuse, specular;
 };
 
+// The material's own colours at every lane: GL's ambient and diffuse, or for cook-torrance the
+// base colour in both (which vertex colours replace as they replace GL's two).
 template <class D, class V = hn::VFromD<D>>
-HWY_INLINE MaterialColorsL<V> UniformColors(D d, const Material& m) {
+HWY_INLINE MaterialColorsL<V> UniformColors(D d, const Material& m, LightingModel model) {
+  if (model == LightingModel::CookTorrance) {
+    const Vec3L<V> base = Broadcast(d, physicalOf(m).baseColor);
+    return {base, base, hn::Set(d, m.diffuse.a)};
+  }
   return {Broadcast(d, Vec3(m.ambient)), Broadcast(d, Vec3(m.diffuse)), hn::Set(d, m.diffuse.a)};
 }
 
@@ -118,13 +125,28 @@ HWY_INLINE void AccumulateGlLight(D d, TermsL<V>& terms, const EyeLight& light, 
   terms.specular = terms.specular + specular;
 }
 
+// One light's terms under the model: a GL material's answer, or a physically based one's
+// (`physical` is physicalOf(material), computed once by the caller).
+template <bool kRecord, class D, class V = hn::VFromD<D>>
+HWY_INLINE void AccumulateLight(D d, TermsL<V>& terms, const EyeLight& light, const Material& material,
+                                const PhysicalMaterial& physical, const MaterialColorsL<V>& colors,
+                                LightingModel model, const SurfaceL<V>& s, LightDetail* record) {
+  if (model == LightingModel::CookTorrance)
+    AccumulateCookTorrance<kRecord>(d, terms.ambient, terms.diffuse, terms.specular, light, physical, colors.diffuse,
+                                    s.P, s.N, s.toViewer, record);
+  else
+    AccumulateGlLight<kRecord>(d, terms, light, material, colors, model, s, record);
+}
+
 // The whole equation at each lane: emission, global ambient, then every light in order.
 template <class D, class V = hn::VFromD<D>>
-HWY_INLINE TermsL<V> ShadeGl(D d, std::span<const EyeLight> lights, const LightModel& lightModel,
-                             const Material& material, const MaterialColorsL<V>& colors, LightingModel model,
-                             const SurfaceL<V>& s) {
+HWY_INLINE TermsL<V> ShadeEquation(D d, std::span<const EyeLight> lights, const LightModel& lightModel,
+                                   const Material& material, const MaterialColorsL<V>& colors, LightingModel model,
+                                   const SurfaceL<V>& s) {
   TermsL<V> terms = TermsWithoutLights(d, lightModel, material, colors);
-  for (const EyeLight& light : lights) AccumulateGlLight<false>(d, terms, light, material, colors, model, s, nullptr);
+  const PhysicalMaterial physical = model == LightingModel::CookTorrance ? physicalOf(material) : PhysicalMaterial{};
+  for (const EyeLight& light : lights)
+    AccumulateLight<false>(d, terms, light, material, physical, colors, model, s, nullptr);
   return terms;
 }
 

@@ -110,6 +110,19 @@ HWY_INLINE hn::VFromD<D> Exp2(D d, hn::VFromD<D> y) {
   return (p * s1) * s2;
 }
 
+// e^x: 2^(x·log2 e) through Exp2 in float lanes; std::exp lane by lane in double lanes.
+template <class D>
+HWY_INLINE hn::VFromD<D> Exp(D d, hn::VFromD<D> x) {
+  if constexpr (sizeof(hn::TFromD<D>) == 4) {
+    return Exp2(d, x * hn::Set(d, 1.44269504f));
+  } else {
+    HWY_ALIGN hn::TFromD<D> lanes[hn::MaxLanes(d)];
+    hn::Store(x, d, lanes);
+    for (std::size_t i = 0; i < hn::Lanes(d); ++i) lanes[i] = std::exp(lanes[i]);
+    return hn::Load(d, lanes);
+  }
+}
+
 // x^n for x > 0. A whole exponent up to 4096 (GL shininess and spot exponents mostly are) by
 // binary powering: a multiplication or two per bit of n, relative error below n·2^-23. Other
 // float exponents by log2/exp2 above (relative error about 1e-7·max(1, |n·log2 x|)); double

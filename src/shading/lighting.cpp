@@ -11,6 +11,7 @@ std::string_view toString(LightingModel model) {
     case LightingModel::BlinnPhong: return "blinn-phong";
     case LightingModel::Phong: return "phong";
     case LightingModel::Lambert: return "lambert";
+    case LightingModel::CookTorrance: return "cook-torrance";
   }
   return "?";
 }
@@ -28,6 +29,7 @@ std::optional<LightingModel> parseLightingModel(std::string_view name) {
   if (name == "blinn-phong") return LightingModel::BlinnPhong;
   if (name == "phong") return LightingModel::Phong;
   if (name == "lambert") return LightingModel::Lambert;
+  if (name == "cook-torrance") return LightingModel::CookTorrance;
   return std::nullopt;
 }
 

@@ -18,12 +18,12 @@ template <class D, class V = hn::VFromD<D>>
 HWY_INLINE void LitColor(D d, const ShadeSetup& setup, SurfaceL<V>& s, const Real* const* color, V& r, V& g, V& b,
                          V& a) {
   s.toViewer = ToViewer(d, s.P, setup.lightModel.localViewer);
-  MaterialColorsL<V> colors = UniformColors(d, setup.material);
+  MaterialColorsL<V> colors = UniformColors(d, setup.material, setup.model);
   if (color) {
     const Vec3L<V> c{hn::LoadU(d, color[0]), hn::LoadU(d, color[1]), hn::LoadU(d, color[2])};
     colors = {c, c, hn::LoadU(d, color[3])};
   }
-  const TermsL<V> terms = ShadeGl(d, setup.lights, setup.lightModel, setup.material, colors, setup.model, s);
+  const TermsL<V> terms = ShadeEquation(d, setup.lights, setup.lightModel, setup.material, colors, setup.model, s);
   ClampedColor(d, terms, colors.alpha, r, g, b, a);
 }
 
@@ -162,7 +162,9 @@ HWY_NAMESPACE::Vec3L<V> lanes(const Vec3& v) { return HWY_NAMESPACE::Broadcast(d
 HWY_NAMESPACE::SurfaceL<V> surface(const SurfaceGeometry& s) {
   return {lanes(s.position), lanes(s.normal), lanes(s.toViewer)};
 }
-HWY_NAMESPACE::MaterialColorsL<V> colors(const Material& m) { return HWY_NAMESPACE::UniformColors(d, m); }
+HWY_NAMESPACE::MaterialColorsL<V> colors(const Material& m, LightingModel model) {
+  return HWY_NAMESPACE::UniformColors(d, m, model);
+}
 
 }  // namespace one
 
@@ -171,13 +173,14 @@ void accumulateLight(LightingTerms& terms, const EyeLight& light, const Material
   const HWY_NAMESPACE::TermsL<one::V> zero{one::lanes(Vec3(0)), one::lanes(Vec3(0)), one::lanes(Vec3(0)),
                                                 one::lanes(Vec3(0))};
   auto t = zero;
+  const PhysicalMaterial physical = model == LightingModel::CookTorrance ? physicalOf(material) : PhysicalMaterial{};
   if (detail) {
     *detail = LightDetail{};
-    HWY_NAMESPACE::AccumulateGlLight<true>(one::d, t, light, material, one::colors(material), model,
-                                           one::surface(surface), detail);
+    HWY_NAMESPACE::AccumulateLight<true>(one::d, t, light, material, physical, one::colors(material, model), model,
+                                         one::surface(surface), detail);
   } else {
-    HWY_NAMESPACE::AccumulateGlLight<false>(one::d, t, light, material, one::colors(material), model,
-                                            one::surface(surface), nullptr);
+    HWY_NAMESPACE::AccumulateLight<false>(one::d, t, light, material, physical, one::colors(material, model), model,
+                                          one::surface(surface), nullptr);
   }
   terms.ambient += HWY_NAMESPACE::Lane0(t.ambient);
   terms.diffuse += HWY_NAMESPACE::Lane0(t.diffuse);
@@ -186,8 +189,8 @@ void accumulateLight(LightingTerms& terms, const EyeLight& light, const Material
 
 LightingTerms evaluateTerms(std::span<const EyeLight> lights, const LightModel& lightModel, const Material& material,
                             LightingModel model, const SurfaceGeometry& surface) {
-  const auto t = HWY_NAMESPACE::ShadeGl(one::d, lights, lightModel, material, one::colors(material), model,
-                                        one::surface(surface));
+  const auto t = HWY_NAMESPACE::ShadeEquation(one::d, lights, lightModel, material, one::colors(material, model),
+                                              model, one::surface(surface));
   return {HWY_NAMESPACE::Lane0(t.emission), HWY_NAMESPACE::Lane0(t.ambient), HWY_NAMESPACE::Lane0(t.diffuse),
           HWY_NAMESPACE::Lane0(t.specular)};
 }

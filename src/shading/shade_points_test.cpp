@@ -91,13 +91,22 @@ TEST_P(EveryModelAndLight, SimdEqualsOneLaneBitForBit) {
   setup.material.specular = {0.8f, 0.8f, 0.8f, 1};
   setup.material.emission = {0.01f, 0.02f, 0.03f, 1};
   setup.material.shininess = 37;
+  if (model == LightingModel::CookTorrance && kind % 2 == 1) {
+    // A physically based material (metal, Beckmann) on odd kinds; a GL one seen through physicalOf on even.
+    PhysicalMaterial p;
+    p.baseColor = {0.9f, 0.6f, 0.3f};
+    p.metallic = 0.7f;
+    p.roughness = 0.35f;
+    p.distribution = Microfacet::Beckmann;
+    glFromPhysical(setup.material, p);
+  }
   const std::size_t n = 203;  // not a multiple of any lane count: the tail is tested too
   const Batch b = randomPoints(n, colors, rng);
   const std::vector<Real> simd = shadeAll(setup, b);
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3 p(b.v[0][i], b.v[1][i], b.v[2][i]), nrm(b.v[3][i], b.v[4][i], b.v[5][i]);
     Material m = setup.material;
-    if (colors) m.ambient = m.diffuse = {b.v[6][i], b.v[7][i], b.v[8][i], b.v[9][i]};
+    if (colors) m = withVertexColor(m, {b.v[6][i], b.v[7][i], b.v[8][i], b.v[9][i]});
     const SurfaceGeometry s{p, nrm, viewerDirection(p, localViewer)};
     const Color4 one = clampedColor(evaluateTerms(lights, setup.lightModel, m, model, s), m);
     for (int c = 0; c < 4; ++c)
@@ -108,7 +117,7 @@ TEST_P(EveryModelAndLight, SimdEqualsOneLaneBitForBit) {
 
 INSTANTIATE_TEST_SUITE_P(Shading, EveryModelAndLight,
                          testing::Combine(testing::Values(LightingModel::BlinnPhong, LightingModel::Phong,
-                                                          LightingModel::Lambert),
+                                                          LightingModel::Lambert, LightingModel::CookTorrance),
                                           testing::Values(0, 1, 2, 3), testing::Bool(), testing::Bool()));
 
 TEST(ShadePoints, EverySimdTargetGivesTheSameBits) {
@@ -118,15 +127,28 @@ TEST(ShadePoints, EverySimdTargetGivesTheSameBits) {
   setup.material.specular = {1, 1, 1, 1};
   setup.material.shininess = 90;
   const Batch b = randomPoints(1000, true, rng);
-  const std::vector<Real> reference = shadeAll(setup, b);
+  ShadeSetup physical = setup;
+  physical.model = LightingModel::CookTorrance;
+  PhysicalMaterial p;
+  p.metallic = 0.4f;
+  p.roughness = 0.3f;
+  glFromPhysical(physical.material, p);
+  ShadeSetup beckmann = physical;
+  p.distribution = Microfacet::Beckmann;
+  glFromPhysical(beckmann.material, p);
+  const std::vector<Real> reference = shadeAll(setup, b), physicalReference = shadeAll(physical, b),
+                          beckmannReference = shadeAll(beckmann, b);
   int tried = 0;
   for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
     hwy::SetSupportedTargetsForTest(target);
     EXPECT_STREQ(simdTargetName(), hwy::TargetName(target));
-    const std::vector<Real> out = shadeAll(setup, b);
     ++tried;
-    for (std::size_t i = 0; i < out.size(); ++i)
-      ASSERT_TRUE(sameBits(out[i], reference[i])) << hwy::TargetName(target) << " differs at " << i;
+    for (const auto& [s, expected] : {std::pair{&setup, &reference}, std::pair{&physical, &physicalReference},
+                                      std::pair{&beckmann, &beckmannReference}}) {
+      const std::vector<Real> out = shadeAll(*s, b);
+      for (std::size_t i = 0; i < out.size(); ++i)
+        ASSERT_TRUE(sameBits(out[i], (*expected)[i])) << hwy::TargetName(target) << " differs at " << i;
+    }
   }
   hwy::SetSupportedTargetsForTest(0);
   EXPECT_GE(tried, 2);  // at least the SIMD target and the portable one
@@ -150,7 +172,9 @@ TEST(PowLobe, FollowsStdPowClosely) {
   EXPECT_EQ(Fs_Phong(Real(0.5), 1), Real(0.5));
   EXPECT_EQ(Fs_Phong(Real(0.25), Real(0.5)), Real(0.5));
   EXPECT_GT(Fs_Phong(Real(1e-39), Real(0.5)), Real(3e-20));  // a denormal base
-  if constexpr (sizeof(Real) == 4) EXPECT_EQ(Fs_Phong(Real(1e-3), 40), 0);  // below the smallest float
+  if constexpr (sizeof(Real) == 4) {
+    EXPECT_EQ(Fs_Phong(Real(1e-3), 40), 0);  // below the smallest float
+  }
 }
 
 }  // namespace

@@ -210,7 +210,8 @@ Color4 WhittedTracer::shade(const Ray& ray, const RayHit& rayHit, const Path& pa
   hall.transmits = optics.transmits();
   const bool hallSurface = hall_ && (optics.reflects() || optics.transmits());
   const ShadowRays shadows(rays_, h, hall_, counts);
-  const LightingTerms terms = localTerms(lights_, scene_.lightModel, scene_.model, local,
+  const LightingModel model = modelOf(material, scene_.model);
+  const LightingTerms terms = localTerms(lights_, scene_.lightModel, model, local,
                                          scene_.rayTracing.shadows ? &shadows : nullptr, hallSurface ? &hall : nullptr);
   Color4 color = clampedColor(terms, material);
   Vec4 texel(1);
@@ -232,7 +233,7 @@ Color4 WhittedTracer::shade(const Ray& ray, const RayHit& rayHit, const Path& pa
     for (const EyeLight& light : lights_) {
       LightingTerms unused;
       LightDetail d;
-      accumulateLight(unused, light, material, scene_.model, local.geometry, &d);
+      accumulateLight(unused, light, material, model, local.geometry, &d);
       probe->lightVisibility.push_back(scene_.rayTracing.shadows ? shadows.towards(light, d.L, d.distance) : Color3(1));
     }
   }
