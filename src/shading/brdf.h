@@ -3,6 +3,7 @@
 // reports.
 #pragma once
 
+#include <illum/lighting.h>
 #include <illum/real.h>
 
 namespace illum {
@@ -16,5 +17,13 @@ Real Fs_BlinnPhong(Real NoH, Real shininess);
 Real distanceAttenuation(const Vec3& k, Real d);
 // max(−L·S, 0)^e inside the cone (−L·S ≥ cos cutoff), else 0.
 Real spotFactor(Real minusLoS, Real cosCutoff, Real exponent);
+
+// Cook-Torrance's terms (cook_torrance-inl.h, brdf-inl.h): the normal distributions, the Smith
+// visibility G / (4 N·L N·V), Schlick's Fresnel, and α for a perceptual roughness.
+Real D_GGX(Real NoH, Real alpha);
+Real D_Beckmann(Real NoH, Real alpha);
+Real V_SmithGGXCorrelated(Real NoV, Real NoL, Real alpha);
+Color3 F_Schlick(Real VoH, const Color3& f0);
+Real microfacetAlpha(Real roughness);
 
 }  // namespace illum

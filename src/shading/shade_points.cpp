@@ -218,6 +218,17 @@ Real distanceAttenuation(const Vec3& k, Real d) {
 Real spotFactor(Real minusLoS, Real cosCutoff, Real exponent) {
   return hn::GetLane(HWY_NAMESPACE::SpotFactor(one::d, one::lane(minusLoS), cosCutoff, exponent));
 }
+Real D_GGX(Real NoH, Real alpha) { return hn::GetLane(HWY_NAMESPACE::D_GGX(one::d, one::lane(NoH), alpha)); }
+Real D_Beckmann(Real NoH, Real alpha) {
+  return hn::GetLane(HWY_NAMESPACE::D_Beckmann(one::d, one::lane(NoH), alpha));
+}
+Real V_SmithGGXCorrelated(Real NoV, Real NoL, Real alpha) {
+  return hn::GetLane(HWY_NAMESPACE::V_SmithGGXCorrelated(one::d, one::lane(NoV), one::lane(NoL), alpha));
+}
+Color3 F_Schlick(Real VoH, const Color3& f0) {
+  return HWY_NAMESPACE::Lane0(HWY_NAMESPACE::F_Schlick(one::d, one::lane(VoH), one::lanes(f0)));
+}
+Real microfacetAlpha(Real roughness) { return HWY_NAMESPACE::MicrofacetAlpha(roughness); }
 
 }  // namespace illum
 #endif  // HWY_ONCE
