@@ -51,6 +51,7 @@ struct PixelProbe {
   Color4 lit{0};
   bool textured = false;
   Vec4 texel{1};             // GL_MODULATE's factor, when textured
+  bool texelIsBaseColor = false;  // cook-torrance per pixel: the texel tinted the base colour instead
   Color4 written{0};         // the fragment's colour: lit × texel, before 8-bit conversion and blending
   bool blended = false;      // source-over blending mixed it with what was there
   // Ray tracers: `lit` is the local equation with shadows (× texel), `written` what the ray brought

@@ -21,7 +21,7 @@ DrawTarget::DrawTarget(const FrameContext& frame, const Scene& scene, Framebuffe
 }
 
 void recordProbe(const DrawTarget& target, const DrawRecord& record, const std::array<Real, 3>& w, const Color4& lit,
-                 const Vec4* texel, const Color4& c) {
+                 const Vec4* texel, const Color4& c, bool texelIsBaseColor) {
   const Object& object = target.scene.objects[record.object];
   const std::size_t objectIndex = record.object, triangle = record.triangle;
   const TriangleSetup& t = record.setup;
@@ -48,6 +48,8 @@ void recordProbe(const DrawTarget& target, const DrawRecord& record, const std::
   p.material = object.material;
   if (!object.mesh->colors.empty())
     p.material = withVertexColor(object.material, w[0] * v[0].color() + w[1] * v[1].color() + w[2] * v[2].color());
+  p.texelIsBaseColor = texelIsBaseColor;
+  if (texel && texelIsBaseColor) p.material = withBaseTexel(p.material, *texel);
   if (target.frame.shading == Shading::Flat) {
     const Real* provoking = record.provoking(l);
     p.eyePosition = Vec3(provoking[0], provoking[1], provoking[2]);
@@ -73,24 +75,30 @@ void drawPixels(const DrawTarget& target, const DrawRecord& record, const PixelR
   const AttributeLayout& l = target.layout(record);
   const bool vertexColors = !object.mesh->colors.empty();
   const Texture* texture = kTextured ? object.diffuseTexture.get() : nullptr;
+  const bool baseTexture = kTextured && texturesBaseColor(frame, object);
   const int probeRow = kProbe ? frame.height - 1 - target.probe->y : -1;  // GL rows run bottom up
   rasterizeTriangle(t, rect, [&](int x, int y, Real l0, Real l1, Real l2) {
     const Real z = l0 * t.z[0] + l1 * t.z[1] + l2 * t.z[2];
     if (!target.fb.depthTest(x, y, z)) return;
     ++fragments;
     Color4 c;
+    Vec4 texel(1);
+    if constexpr (kTextured) texel = sampleDiffuseTexture(*texture, record, l, l0, l1, l2);
     if constexpr (kShading == Shading::Flat) c = record.flat;
     else if constexpr (kShading == Shading::Gouraud) c = gouraudColor(record, l, perspectiveWeights(t, l0, l1, l2));
-    else c = shadePhongFragment(frame, object.material, vertexColors, record, l, perspectiveWeights(t, l0, l1, l2));
+    else
+      c = shadePhongFragment(frame, object.material, vertexColors, record, l, perspectiveWeights(t, l0, l1, l2),
+                             kTextured && baseTexture ? &texel : nullptr);
     const Color4 lit = c;
-    // GL_MODULATE: the lit colour times the texel, alpha included.
-    Vec4 texel(1);
-    if constexpr (kTextured) c *= (texel = sampleDiffuseTexture(*texture, record, l, l0, l1, l2));
+    // GL_MODULATE: the lit colour times the texel, alpha included (unless it was the base colour).
+    if constexpr (kTextured)
+      if (!baseTexture) c *= texel;
     if constexpr (kBlend) target.fb.blendColor(x, y, c);
     else target.fb.writeColor(x, y, c);
     if constexpr (kProbe)
       if (y == probeRow && x == target.probe->x)
-        recordProbe(target, record, perspectiveWeights(t, l0, l1, l2), lit, kTextured ? &texel : nullptr, c);
+        recordProbe(target, record, perspectiveWeights(t, l0, l1, l2), lit, kTextured ? &texel : nullptr, c,
+                    baseTexture);
   });
 }
 

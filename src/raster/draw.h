@@ -39,9 +39,10 @@ struct DrawTarget {
 void drawRecord(const DrawTarget& target, const DrawRecord& record, const PixelRect& rect, std::size_t& fragments);
 
 // Records the fragment at the watched pixel: where it was lit (weights w), the lit colour, the
-// texel that modulated it (null without a texture) and what was written.
+// texel that modulated it or, with texelIsBaseColor, tinted its base colour (null without a
+// texture) and what was written.
 void recordProbe(const DrawTarget& target, const DrawRecord& record, const std::array<Real, 3>& w, const Color4& lit,
-                 const Vec4* texel, const Color4& written);
+                 const Vec4* texel, const Color4& written, bool texelIsBaseColor = false);
 
 // Scene order, or with blending the opaque objects first and then the translucent ones from the
 // farthest to the nearest. Ties keep scene order.

@@ -17,9 +17,11 @@ PhongSurface phongSurface(const FrameContext& frame, bool vertexColors, const Dr
 }
 
 Color4 shadePhongFragment(const FrameContext& frame, const Material& baseMaterial, bool vertexColors,
-                          const DrawRecord& r, const AttributeLayout& l, const std::array<Real, 3>& w) {
+                          const DrawRecord& r, const AttributeLayout& l, const std::array<Real, 3>& w,
+                          const Vec4* baseTexel) {
   const PhongSurface p = phongSurface(frame, vertexColors, r, l, w);
-  const Material material = vertexColors ? withVertexColor(baseMaterial, p.color) : baseMaterial;
+  Material material = vertexColors ? withVertexColor(baseMaterial, p.color) : baseMaterial;
+  if (baseTexel) material = withBaseTexel(material, *baseTexel);
   const SurfaceGeometry s{p.position, p.normal, viewerDirection(p.position, frame.lightModel.localViewer)};
   return clampedColor(evaluateTerms(frame.lights, frame.lightModel, material, modelOf(material, frame.model), s), material);
 }

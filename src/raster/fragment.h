@@ -30,9 +30,23 @@ PhongSurface phongSurface(const FrameContext& frame, bool vertexColors, const Dr
                           const std::array<Real, 3>& w);
 
 // The per-pixel lighting of Phong shading, one pixel at a time (the binned pipeline lights its
-// pixels in batches, shade_tile.cpp, with the same equation).
+// pixels in batches, shade_tile.cpp, with the same equation). With `baseTexel`, the texel tints
+// the base colour before lighting (texturesBaseColor) instead of modulating the lit colour.
 Color4 shadePhongFragment(const FrameContext& frame, const Material& material, bool vertexColors, const DrawRecord& r,
-                          const AttributeLayout& l, const std::array<Real, 3>& w);
+                          const AttributeLayout& l, const std::array<Real, 3>& w, const Vec4* baseTexel = nullptr);
+
+// Whether an object's texture is its base colour, multiplied in before lighting: a physically
+// based model lit per pixel (glTF's baseColorTexture). Otherwise GL_MODULATE multiplies the lit
+// colour by the texel, as GL does (and as the per-vertex frequencies must).
+inline bool texturesBaseColor(const FrameContext& frame, const Object& object) {
+  return drawnTexture(object) && frame.shading == Shading::Phong &&
+         modelOf(object.material, frame.model) == LightingModel::CookTorrance;
+}
+
+// The material with its base colour (or vertex colour) multiplied by a texel.
+inline Material withBaseTexel(const Material& m, const Vec4& texel) {
+  return withVertexColor(m, Color4(physicalOf(m).baseColor, m.diffuse.a) * texel);
+}
 
 // The texel that modulates the pixel, trilinearly filtered for the pixel's footprint, which is
 // found by evaluating the perspective-correct uv one pixel to the right and one up.

@@ -20,13 +20,14 @@ VisiblePixel visiblePixel(const TriangleSetup& t, const PixelRect& rect, int ind
           Real(t.edge[2].at(fx, fy)) * invArea};
 }
 
-// Writes a coloured pixel: GL_MODULATE by the texel, then the framebuffer, then the probe.
+// Writes a coloured pixel: GL_MODULATE by the texel (unless the texel was the base colour), then
+// the framebuffer, then the probe.
 void writePixel(const DrawTarget& target, const DrawRecord& r, const VisiblePixel& p, const Color4& lit,
-                const Vec4* texel) {
-  const Color4 c = texel ? lit * *texel : lit;
+                const Vec4* texel, bool texelIsBaseColor = false) {
+  const Color4 c = texel && !texelIsBaseColor ? lit * *texel : lit;
   target.fb.writeColor(p.x, p.y, c);
   if (target.probe && p.x == target.probe->x && p.y == target.frame.height - 1 - target.probe->y)
-    recordProbe(target, r, perspectiveWeights(r.setup, p.l0, p.l1, p.l2), lit, texel, c);
+    recordProbe(target, r, perspectiveWeights(r.setup, p.l0, p.l1, p.l2), lit, texel, c, texelIsBaseColor);
 }
 
 // Flat and Gouraud: the colours were lit at the vertices.
@@ -67,11 +68,18 @@ class PhongBatch {
         phongSurface(target_.frame, !object.mesh->colors.empty(), r, target_.layout(r),
                      perspectiveWeights(r.setup, p.l0, p.l1, p.l2));
     for (int c = 0; c < 3; ++c) s_.soa[c][n_] = surface.position[c], s_.soa[3 + c][n_] = surface.normal[c];
-    for (int c = 0; c < 4; ++c) s_.soa[6 + c][n_] = surface.color[c];
+    Color4 color = surface.color;
     if (const Texture* texture = drawnTexture(object)) {
       const Vec4 texel = sampleDiffuseTexture(*texture, r, target_.layout(r), p.l0, p.l1, p.l2);
       for (int c = 0; c < 4; ++c) s_.soa[10 + c][n_] = texel[c];
+      // A base colour texture tints the material's (or the vertex's) colour before lighting, as
+      // withBaseTexel does.
+      if (texturesBaseColor(target_.frame, object)) {
+        const Material& m = object.material;
+        color = (object.mesh->colors.empty() ? Color4(physicalOf(m).baseColor, m.diffuse.a) : color) * texel;
+      }
     }
+    for (int c = 0; c < 4; ++c) s_.soa[6 + c][n_] = color[c];
     s_.pixel[n_] = std::uint16_t(index);
     s_.slot[n_] = slot;
     ++n_;
@@ -82,20 +90,20 @@ class PhongBatch {
     const Object& object = target_.scene.objects[object_];
     const ShadeSetup setup{target_.frame.lights, target_.frame.lightModel, modelOf(object.material, target_.frame.model),
                            object.material};
+    const bool textured = drawnTexture(object) != nullptr, baseTexture = texturesBaseColor(target_.frame, object);
     SurfacePoints points;
     points.count = n_;
     for (int c = 0; c < 3; ++c) points.position[c] = s_.soa[c], points.normal[c] = s_.soa[3 + c];
-    if (!object.mesh->colors.empty())
+    if (!object.mesh->colors.empty() || baseTexture)
       for (int c = 0; c < 4; ++c) points.color[c] = s_.soa[6 + c];
     Real* const lit[4] = {s_.soa[14], s_.soa[15], s_.soa[16], s_.soa[17]};
     shadePoints(setup, points, lit);
-    const bool textured = drawnTexture(object) != nullptr;
     for (std::size_t k = 0; k < n_; ++k) {
       const DrawRecord& r = *records_[s_.slot[k]];
       const VisiblePixel p = visiblePixel(r.setup, rect_, s_.pixel[k]);
       const Color4 color(lit[0][k], lit[1][k], lit[2][k], lit[3][k]);
       const Vec4 texel(s_.soa[10][k], s_.soa[11][k], s_.soa[12][k], s_.soa[13][k]);
-      writePixel(target_, r, p, color, textured ? &texel : nullptr);
+      writePixel(target_, r, p, color, textured ? &texel : nullptr, baseTexture);
     }
     n_ = 0;
   }

@@ -273,14 +273,17 @@ Material materialFromFile(const FileMaterialValues& v) {
   // Files without an ambient colour (glTF, most PLY/STL) reflect ambient light in their diffuse colour.
   m.ambient = Color4(v.hasAmbient ? v.ambient : Color3(v.diffuse), 1);
   if (v.isMetallicRoughness) {
-    // glTF metallic-roughness onto Blinn-Phong: the specular colour is the Fresnel reflectance at
-    // normal incidence (4% for dielectrics, the base colour for metals), dimmed by roughness;
-    // the exponent matches Beckmann's lobe width, n = 2/α² − 2 with α = roughness².
-    const Real a = std::max(v.roughness * v.roughness, Real(0.03));
-    const Color3 f0 = glm::mix(Color3(0.04), Color3(v.diffuse), v.metallic);
-    m.specular = Color4(f0 * (1 - Real(0.5) * v.roughness), 1);
-    m.shininess = std::clamp(2 / (a * a) - 2, Real(1), Real(2048));
-    m.diffuse = Color4(Color3(v.diffuse) * (1 - Real(0.5) * v.metallic), m.diffuse.a);
+    // glTF's metallic-roughness material is physically based: drawn with cook-torrance unless a
+    // model is asked for, and seen by the classic models through its derived GL parameters.
+    PhysicalMaterial p;
+    p.baseColor = glm::clamp(Color3(v.diffuse), Color3(0), Color3(1));
+    p.metallic = glm::clamp(v.metallic, Real(0), Real(1));
+    p.roughness = glm::clamp(v.roughness, Real(0), Real(1));
+    m.emission = glm::clamp(m.emission, Color4(0), Color4(1));
+    m.diffuse.a = glm::clamp(m.diffuse.a, Real(0), Real(1));
+    glFromPhysical(m, p);
+    m.model = LightingModel::CookTorrance;
+    return m;
   } else {
     m.specular = Color4(v.hasSpecular ? v.specular : Color3(0), 1);
     m.shininess = std::max(v.shininess, Real(0));  // MTL Ns is the exponent itself

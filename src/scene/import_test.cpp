@@ -35,13 +35,22 @@ TEST(FileMaterial, GltfMetallicRoughness) {
   v.roughness = 0.5f;
   v.metallic = 0;
   const Material dielectric = materialFromFile(v);
+  // Physically based, drawn with cook-torrance by default.
+  EXPECT_TRUE(dielectric.physicallyBased);
+  EXPECT_EQ(dielectric.model, LightingModel::CookTorrance);
+  EXPECT_EQ(dielectric.physical.baseColor, Color3(0.8f, 0.2f, 0.1f));
+  EXPECT_EQ(dielectric.physical.roughness, 0.5f);
+  EXPECT_EQ(dielectric.physical.metallic, 0);
+  EXPECT_NEAR(dielectric.physical.f0.r, 0.04, 1e-6);  // glTF's dielectric: ior 1.5
+  // Its GL parameters, for --model blinn-phong and the like.
   EXPECT_EQ(Vec3(dielectric.ambient), Vec3(0.8, 0.2, 0.1));  // no ambient in glTF: the base colour
-  EXPECT_NEAR(dielectric.specular.r, 0.04 * 0.75, 1e-6);      // F0 = 4%, dimmed by roughness
+  EXPECT_NEAR(dielectric.specular.r, 0.5, 1e-6);              // 2.5·√0.04
   EXPECT_NEAR(dielectric.shininess, 2 / (0.25 * 0.25) - 2, 1e-3);  // α = roughness² = 0.25
   v.metallic = 1;
   const Material metal = materialFromFile(v);
-  EXPECT_NEAR(metal.specular.r, 0.8 * 0.75, 1e-6);  // metals reflect their base colour
-  EXPECT_NEAR(metal.diffuse.r, 0.4, 1e-6);
+  EXPECT_NEAR(metal.specular.r, 0.8, 1e-6);  // metals reflect their base colour
+  EXPECT_NEAR(metal.diffuse.r, 0, 1e-6);     // and have no diffuse part
+  EXPECT_EQ(metal.physical.metallic, 1);
 }
 
 TEST(Import, NodeTransformsPlaceTheMeshes) {

@@ -1,7 +1,7 @@
 #include "trace/whitted.h"
 
 #include "raster/draw_record.h"
-#include "raster/vertex.h"
+#include "raster/fragment.h"
 #include "trace/local_light.h"
 #include "trace/optics.h"
 
@@ -196,6 +196,13 @@ Color4 WhittedTracer::shade(const Ray& ray, const RayHit& rayHit, const Path& pa
     const auto& c = object.mesh->colors;
     material = withVertexColor(material, h.w[0] * c[h.index[0]] + h.w[1] * c[h.index[1]] + h.w[2] * c[h.index[2]]);
   }
+  // The texel: the base colour of a physically based model (before lighting), else GL_MODULATE's.
+  const LightingModel model = modelOf(material, scene_.model);
+  const Texture* texture = drawnTexture(object);
+  const bool baseTexture = texture && model == LightingModel::CookTorrance;
+  Vec4 texel(1);
+  if (texture) texel = texelAt(*texture, mesh, h, ray, path.cone, path.cone.width + path.cone.spread * length);
+  if (baseTexture) material = withBaseTexel(material, texel);
   LocalSurface local;
   local.material = material;
   local.geometry.position = h.position;
@@ -210,13 +217,10 @@ Color4 WhittedTracer::shade(const Ray& ray, const RayHit& rayHit, const Path& pa
   hall.transmits = optics.transmits();
   const bool hallSurface = hall_ && (optics.reflects() || optics.transmits());
   const ShadowRays shadows(rays_, h, hall_, counts);
-  const LightingModel model = modelOf(material, scene_.model);
   const LightingTerms terms = localTerms(lights_, scene_.lightModel, model, local,
                                          scene_.rayTracing.shadows ? &shadows : nullptr, hallSurface ? &hall : nullptr);
   Color4 color = clampedColor(terms, material);
-  Vec4 texel(1);
-  if (const Texture* texture = drawnTexture(object))
-    color *= texel = texelAt(*texture, mesh, h, ray, path.cone, path.cone.width + path.cone.spread * length);
+  if (texture && !baseTexture) color *= texel;
   if (probe) {
     probe->hit = true;
     probe->object = rayHit.object;
@@ -226,8 +230,9 @@ Color4 WhittedTracer::shade(const Ray& ray, const RayHit& rayHit, const Path& pa
     probe->eyeNormal = local.geometry.normal;
     probe->material = material;
     probe->weights = h.w;
-    probe->textured = drawnTexture(object) != nullptr;
+    probe->textured = texture != nullptr;
     probe->texel = texel;
+    probe->texelIsBaseColor = baseTexture;
     probe->lit = color;
     probe->lightVisibility.clear();
     for (const EyeLight& light : lights_) {
