@@ -71,6 +71,20 @@ TEST(CliEval, LightOppositeViewerIsDefined) {
   EXPECT_EQ(nlohmann::json::parse(r.out)["specular"][0].get<double>(), 0.0);
 }
 
+// Cook-Torrance at normal incidence worked by hand: N = L = V, so D = 1/(πα²), V = 1/4, F = f0,
+// diffuse (1 − f0)·base = 0.48 and specular π·D·V·F = f0/(4α²) = 0.0244 for α = 0.8² = 0.64.
+TEST(CliEval, CookTorranceAtNormalIncidence) {
+  const RunResult r = run("eval --model cook-torrance --base-color 0.5,0.5,0.5 --roughness 0.8 --f0 0.04,0.04,0.04 --json");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_NEAR(j["diffuse"][0].get<double>(), 0.48, 1e-6);
+  EXPECT_NEAR(j["specular"][0].get<double>(), 0.04 / (4 * 0.64 * 0.64), 1e-6);
+  EXPECT_NEAR(j["D"].get<double>(), 1 / (3.14159265358979 * 0.64 * 0.64), 1e-5);
+  EXPECT_NEAR(j["Vis"].get<double>(), 0.25, 1e-6);
+  EXPECT_EQ(run("eval --model cook-torrance --base-color 0.5,0.5,0.5 --material-diffuse 1,1,1").exitCode, 2);
+  EXPECT_EQ(run("eval --model cook-torrance --distribution phong").exitCode, 2);
+}
+
 TEST(CliEval, BadInputIsRefusedClearly) {
   const RunResult zero = run("eval --normal 0,0,0");
   EXPECT_EQ(zero.exitCode, 2);

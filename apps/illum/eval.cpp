@@ -25,6 +25,7 @@ struct EvalOptions {
   std::string angleNL, angleRV, angleNH;
   std::string normal, toLight, toViewer;
   std::string spotDirection, spotExponent, spotCutoff;
+  std::string baseColor, metallic, roughness, f0, distribution;  // a physically based material
   bool json = false;
 };
 
@@ -63,7 +64,7 @@ Geometry geometryFromAngles(const EvalOptions& o, LightingModel model) {
                        std::to_string(int(std::max<Real>(0, theta - 90))) + "° and " +
                        std::to_string(int(std::min<Real>(180, theta + 90))) + "°)");
     g.V = inPlane(alpha);
-  } else if (model == LightingModel::BlinnPhong && !o.angleNH.empty()) {
+  } else if ((model == LightingModel::BlinnPhong || model == LightingModel::CookTorrance) && !o.angleNH.empty()) {
     const Real psi = parseNumber("--angle-nh", o.angleNH, 0, 180);
     if (above(2 * psi - theta)) g.V = inPlane(2 * psi - theta);
     else if (above(-2 * psi - theta)) g.V = inPlane(-2 * psi - theta);
@@ -88,8 +89,9 @@ Geometry geometry(const EvalOptions& o, LightingModel model) {
                      "(--normal, --to-light, --to-viewer), not both");
   if (model != LightingModel::Phong && !o.angleRV.empty())
     throw InputError("--angle-rv: R·V is the phong model's specular angle; use --model phong, or --angle-nh for blinn-phong");
-  if (model != LightingModel::BlinnPhong && !o.angleNH.empty())
-    throw InputError("--angle-nh: N·H is the blinn-phong model's specular angle; use --model blinn-phong, or --angle-rv for phong");
+  if (model != LightingModel::BlinnPhong && model != LightingModel::CookTorrance && !o.angleNH.empty())
+    throw InputError("--angle-nh: N·H is the specular angle of blinn-phong and cook-torrance; use one of them, or "
+                     "--angle-rv for phong");
   if (!vectors) return geometryFromAngles(o, model);
   return {o.normal.empty() ? Vec3(0, 0, 1) : unitVector("--normal", o.normal),
           o.toLight.empty() ? Vec3(0, 0, 1) : unitVector("--to-light", o.toLight),
@@ -144,6 +146,21 @@ int runEval(const EvalOptions& o) {
   material.specular = color4("--material-specular", o.materialSpecular, materialDefaults.specular);
   material.emission = color4("--material-emission", o.materialEmission, materialDefaults.emission);
   if (!o.shininess.empty()) material.shininess = parseNumber("--shininess", o.shininess, 0, Real(1e6));
+  if (!o.baseColor.empty() || !o.metallic.empty() || !o.roughness.empty() || !o.f0.empty() || !o.distribution.empty()) {
+    // A physically based material, as a scene file's base_color, metallic, roughness, f0.
+    if (!o.materialAmbient.empty() || !o.materialDiffuse.empty() || !o.materialSpecular.empty() || !o.shininess.empty())
+      throw InputError("--base-color, --metallic, --roughness, --f0 make a physically based material: give them or "
+                       "--material-ambient, --material-diffuse, --material-specular, --shininess, not both");
+    PhysicalMaterial p;
+    p.baseColor = Color3(color4("--base-color", o.baseColor, Color4(p.baseColor, 1)));
+    if (!o.metallic.empty()) p.metallic = parseNumber("--metallic", o.metallic, 0, 1);
+    if (!o.roughness.empty()) p.roughness = parseNumber("--roughness", o.roughness, 0, 1);
+    p.f0 = Color3(color4("--f0", o.f0, Color4(p.f0, 1)));
+    if (o.distribution == "beckmann") p.distribution = Microfacet::Beckmann;
+    else if (!o.distribution.empty() && o.distribution != "ggx")
+      throw InputError("--distribution: expected ggx or beckmann, got \"" + o.distribution + "\"");
+    glFromPhysical(material, p);
+  }
   LightModel lightModel;
   lightModel.ambient = color3("--global-ambient", o.globalAmbient, Color3(0));
 
@@ -179,9 +196,7 @@ int runEval(const EvalOptions& o) {
                      ": a spot needs --spot-cutoff (without it the light has no cone)");
 
   // The same accumulateLight the renderer uses, recording every intermediate.
-  LightingTerms terms;
-  terms.emission = Color3(material.emission);
-  terms.ambient = lightModel.ambient * Color3(material.ambient);
+  LightingTerms terms = evaluateTerms({}, lightModel, material, *model, surface);  // emission, global ambient
   LightDetail d;
   accumulateLight(terms, light, material, *model, surface, &d);
   const Color3 total = Color3(clampedColor(terms, material));
@@ -191,6 +206,10 @@ int runEval(const EvalOptions& o) {
               << ",\"total\":" << triple(total) << ",\"N\":" << triple(g.N) << ",\"L\":" << triple(d.L)
               << ",\"V\":" << triple(g.V) << ",\"NoL\":" << number(d.NoL);
     if (*model == LightingModel::BlinnPhong) std::cout << ",\"H\":" << triple(d.H) << ",\"NoH\":" << number(d.NoH);
+    if (*model == LightingModel::CookTorrance)
+      std::cout << ",\"H\":" << triple(d.H) << ",\"NoH\":" << number(d.NoH) << ",\"NoV\":" << number(d.NoV)
+                << ",\"VoH\":" << number(d.VoH) << ",\"D\":" << number(d.D) << ",\"Vis\":" << number(d.visibility)
+                << ",\"F\":" << triple(d.F);
     if (*model == LightingModel::Phong) std::cout << ",\"R\":" << triple(d.R) << ",\"RoV\":" << number(d.RoV);
     std::cout << ",\"attenuation\":" << number(d.attenuation) << ",\"spot\":" << number(d.spot) << "}\n";
     return 0;
@@ -214,6 +233,10 @@ int runEval(const EvalOptions& o) {
   if (*model == LightingModel::Phong)
     std::printf("; R = %s, R·V = %.4f, (R·V)^%g = %.4f", vec(d.R).c_str(), double(d.RoV), double(material.shininess),
                 double(d.lobe));
+  if (*model == LightingModel::CookTorrance)
+    std::printf("; H = %s, N·H = %.4f, N·V = %.4f, V·H = %.4f\nD = %.4f, V = G/(4 N·L N·V) = %.4f, F = %s",
+                vec(d.H).c_str(), double(d.NoH), double(d.NoV), double(d.VoH), double(d.D), double(d.visibility),
+                vec(d.F).c_str());
   std::printf("\nattenuation %.4f%s; spot factor %.4f%s\n", double(d.attenuation),
               d.positional ? "" : " (directional light)", double(d.spot), light.isSpot() ? "" : " (no cone)");
   return 0;
@@ -252,6 +275,11 @@ Command addEvalCommand(CLI::App& app) {
   cmd->add_option("--spot-cutoff", o->spotCutoff, "Spot cone half-angle in degrees, [0, 90] or 180 (no cone) [180]");
   cmd->add_option("--spot-exponent", o->spotExponent, "Spot exponent in [0, 128] [0]");
   cmd->add_option("--spot-direction", o->spotDirection, "Spot axis x,y,z [from the light towards the point]");
+  cmd->add_option("--base-color", o->baseColor, "cook-torrance: base colour R,G,B (a physically based material) [0.8,0.8,0.8]");
+  cmd->add_option("--metallic", o->metallic, "cook-torrance: metallic, 0..1 [0]");
+  cmd->add_option("--roughness", o->roughness, "cook-torrance: perceptual roughness, 0..1 (α = roughness²) [1]");
+  cmd->add_option("--f0", o->f0, "cook-torrance: a dielectric's reflectance at normal incidence R,G,B [0.04,0.04,0.04]");
+  cmd->add_option("--distribution", o->distribution, "cook-torrance: ggx or beckmann [ggx]");
   cmd->add_flag("--json", o->json, "Print the terms as JSON (terms unclamped, total clamped)");
   return [o] { return runEval(*o); };
 }

@@ -28,8 +28,15 @@ int byte(Real c) { return int(std::lround(double(glm::clamp(c, Real(0), Real(1))
 // The equation (OpenGL 2.1 §2.14.1) at one point, one light at a time, with each light's geometry;
 // computed by the same accumulateLight the renderer uses. Returns the clamped colour.
 Color4 printEquation(const Scene& scene, const Material& material, const Vec3& P, const Vec3& N) {
+  const LightingModel model = modelOf(material, scene.model);
   const Vec3 V = viewerDirection(P, scene.lightModel.localViewer);
   std::printf("  eye space: P = %s, N = %s, V = %s\n", vec(P).c_str(), vec(N).c_str(), vec(V).c_str());
+  if (model == LightingModel::CookTorrance) {
+    const PhysicalMaterial p = physicalOf(material);
+    std::printf("  cook-torrance (%s): base colour %s, metallic %.4f, roughness %.4f, f0 %s\n",
+                p.distribution == Microfacet::GGX ? "GGX" : "Beckmann", vec(p.baseColor).c_str(), double(p.metallic),
+                double(p.roughness), vec(p.f0).c_str());
+  }
   const SurfaceGeometry surface{P, N, V};
   const Mat4 view = scene.camera.viewFromWorld();
   std::printf("  %-22s %9s %9s %9s\n", "", "R", "G", "B");
@@ -41,22 +48,26 @@ Color4 printEquation(const Scene& scene, const Material& material, const Vec3& P
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {
     const EyeLight light = toEyeSpace(scene.lights[i], view);
     LightDetail d;
-    accumulateLight(total, light, material, scene.model, surface, &d);
+    accumulateLight(total, light, material, model, surface, &d);
     const std::string name = "light " + std::to_string(i);
     std::printf("  %s: %s, L = %s", name.c_str(), d.positional ? "positional" : "directional", vec(d.L).c_str());
     if (d.positional) std::printf(", distance %.4f", double(d.distance));
     std::printf(", attenuation %.4f, spot factor %.4f%s; N·L = %.4f", double(d.attenuation), double(d.spot),
                 light.isSpot() ? "" : " (no cone)", double(d.NoL));
-    if (scene.model == LightingModel::BlinnPhong)
+    if (model == LightingModel::CookTorrance)
+      std::printf("; H = %s, N·H = %.4f, N·V = %.4f, V·H = %.4f; D = %.4f, V = G/(4 N·L N·V) = %.4f, F = %s",
+                  vec(d.H).c_str(), double(d.NoH), double(d.NoV), double(d.VoH), double(d.D), double(d.visibility),
+                  vec(d.F).c_str());
+    else if (model == LightingModel::BlinnPhong)
       std::printf("; H = %s, N·H = %.4f, (N·H)^%g = %.4f", vec(d.H).c_str(), double(d.NoH), double(material.shininess),
                   double(d.lobe));
-    else if (scene.model == LightingModel::Phong)
+    else if (model == LightingModel::Phong)
       std::printf("; R = %s, R·V = %.4f, (R·V)^%g = %.4f", vec(d.R).c_str(), double(d.RoV), double(material.shininess),
                   double(d.lobe));
     std::printf("\n");
     row(name + " ambient", d.terms.ambient);
     row(name + " diffuse", d.terms.diffuse);
-    if (scene.model != LightingModel::Lambert) row(name + " specular", d.terms.specular);
+    if (model != LightingModel::Lambert) row(name + " specular", d.terms.specular);
   }
   const Color4 lit = clampedColor(total, material);
   row("total (clamped)", Color3(lit));
@@ -69,7 +80,7 @@ void printTracedReport(const Scene& scene, const PixelProbe& p, const std::uint8
   std::printf("pixel (%d, %d): object %zu, triangle %zu, %s face; %s; ray traced (%s): lit where the ray through the "
               "pixel's centre meets the surface, with the interpolated normal\n",
               p.x, p.y, p.object, p.triangle, p.frontFacing ? "front" : "back",
-              std::string(toString(scene.model)).c_str(), std::string(toString(scene.renderer)).c_str());
+              std::string(toString(modelOf(p.material, scene.model))).c_str(), std::string(toString(scene.renderer)).c_str());
   std::printf("  barycentric weights: %.4f %.4f %.4f\n", double(p.weights[0]), double(p.weights[1]),
               double(p.weights[2]));
   std::printf(" the local equation, every light seen:\n");
@@ -82,7 +93,9 @@ void printTracedReport(const Scene& scene, const PixelProbe& p, const std::uint8
   }
   std::printf("  local colour with shadows%s: %s\n", scene.renderer == RendererKind::Hall ? " (Hall's terms)" : "",
               rgba(p.lit).c_str());
-  if (p.textured) std::printf("  (× texel %s, GL_MODULATE)\n", rgba(p.texel).c_str());
+  if (p.textured)
+    std::printf(p.texelIsBaseColor ? "  (the texel %s tinted the base colour before lighting)\n" : "  (× texel %s, GL_MODULATE)\n",
+                rgba(p.texel).c_str());
   std::printf("  with the reflected, refracted and see-through rays: %s = bytes %d %d %d %d\n", rgba(p.written).c_str(),
               byte(p.written.r), byte(p.written.g), byte(p.written.b), byte(p.written.a));
   std::printf("  in the file: bytes %d %d %d %d%s\n", b[0], b[1], b[2], b[3],
@@ -106,7 +119,7 @@ void printPixelReport(const Scene& scene, const PixelProbe& p, const Image& imag
                         : scene.shading == Shading::Gouraud ? "Gouraud shading: lit at the vertices, colours interpolated"
                                                             : "Phong shading: lit here, with the interpolated normal";
   std::printf("pixel (%d, %d): object %zu, triangle %zu, %s face; %s; %s\n", p.x, p.y, p.object, p.triangle,
-              p.frontFacing ? "front" : "back", std::string(toString(scene.model)).c_str(), shading);
+              p.frontFacing ? "front" : "back", std::string(toString(modelOf(p.material, scene.model))).c_str(), shading);
   switch (scene.shading) {
     case Shading::Flat:
       std::printf(" the provoking vertex:\n");
@@ -128,7 +141,9 @@ void printPixelReport(const Scene& scene, const PixelProbe& p, const Image& imag
       std::printf("  lit colour: %s\n", rgba(p.lit).c_str());
       break;
   }
-  if (p.textured)
+  if (p.textured && p.texelIsBaseColor)
+    std::printf("  (the texel %s tinted the base colour before lighting)\n", rgba(p.texel).c_str());
+  else if (p.textured)
     std::printf("  × texel %s (GL_MODULATE)\n", rgba(p.texel).c_str());
   std::printf("  fragment: %s = bytes %d %d %d %d%s\n", rgba(p.written).c_str(), byte(p.written.r), byte(p.written.g),
               byte(p.written.b), byte(p.written.a), p.blended ? ", blended over what was there (source over)" : "");

@@ -13,6 +13,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <sstream>
 
 namespace illum::cli {
@@ -315,6 +316,18 @@ Scene prepareScene(SceneOptions o, double* loadMs) {
   if (!o.background.empty()) scene.background = Color4(parseColor("--background-color", o.background, true), 1);
   if (o.noBackground) scene.background.a = 0;
 
+  if (o.verbose && !scene.objects.empty()) {
+    // Which model lights what: a material's own model (glTF's physically based ones) or the scene's.
+    std::map<std::string, std::size_t> objectsByModel;
+    for (const Object& object : scene.objects) {
+      const Material& m = object.material;
+      ++objectsByModel[std::string(toString(modelOf(m, scene.model))) + (m.physicallyBased ? ", physically based" : "")];
+    }
+    std::string list;
+    for (const auto& [name, count] : objectsByModel)
+      list += (list.empty() ? "" : "; ") + std::to_string(count) + (count == 1 ? " object " : " objects ") + name;
+    std::fprintf(stderr, "illum: lighting models: %s\n", list.c_str());
+  }
   if (loadMs) *loadMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return scene;
 }
