@@ -21,7 +21,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (illum::cameraFault(scene.camera, illum::Real(scene.width) / illum::Real(scene.height)) ==
         illum::CameraFault::None) {
       // The ray tracers' work grows with samples and depth: a few of each keep every run short.
-      scene.rayTracing.samples = std::min(scene.rayTracing.samples, 2);
+      scene.rayTracing.samples = std::min(illum::samplesPerPixel(scene), 2);
       scene.rayTracing.maxDepth = std::min(scene.rayTracing.maxDepth, 4);
       (void)illum::renderScene(scene);
     }

@@ -358,7 +358,7 @@ TEST(CliRayTracing, RendererOptionsApplyAndBadValuesAreRefused) {
   EXPECT_EQ(illum::readPng(out).width, 96);
   const RunResult bad = run("render --renderer pathtracer -o " + out);
   EXPECT_EQ(bad.exitCode, 2);
-  EXPECT_NE(bad.err.find("--renderer: expected raster, whitted or hall"), std::string::npos) << bad.err;
+  EXPECT_NE(bad.err.find("--renderer: expected raster, whitted, hall or path"), std::string::npos) << bad.err;
   EXPECT_EQ(run("render --renderer whitted --samples 0 -o " + out).exitCode, 2);
   EXPECT_EQ(run("render --renderer whitted --max-depth 17 -o " + out).exitCode, 2);
 }

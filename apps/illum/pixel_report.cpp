@@ -99,7 +99,7 @@ void printTracedReport(const Scene& scene, const PixelProbe& p, const std::uint8
   std::printf("  with the reflected, refracted and see-through rays: %s = bytes %d %d %d %d\n", rgba(p.written).c_str(),
               byte(p.written.r), byte(p.written.g), byte(p.written.b), byte(p.written.a));
   std::printf("  in the file: bytes %d %d %d %d%s\n", b[0], b[1], b[2], b[3],
-              scene.rayTracing.samples > 1 ? " (the mean of every sample of the pixel)" : "");
+              samplesPerPixel(scene) > 1 ? " (the mean of every sample of the pixel)" : "");
 }
 
 }  // namespace

@@ -211,9 +211,9 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o) {
   cmd.add_option("--resolution", o.resolution, "Image size W,H (models: 1000,600)");
   cmd.add_option("--model", o.model, "Lighting model: blinn-phong, phong, lambert or cook-torrance");
   cmd.add_option("--shading", o.shading, "Shading frequency: flat, gouraud or phong");
-  cmd.add_option("--renderer", o.renderer, "raster (default), whitted (ray tracing, 1980) or hall (1983)");
+  cmd.add_option("--renderer", o.renderer, "raster (default), whitted (ray tracing, 1980), hall (1983) or path (path tracing, 1986)");
   cmd.add_flag("--no-shadows", o.noShadows, "Ray tracers: no shadow rays");
-  cmd.add_option("--samples", o.samples, "Ray tracers: rays per pixel (1: through the centre) [1]")
+  cmd.add_option("--samples", o.samples, "Ray tracers: rays per pixel (1: through the centre) [1; path: 64]")
       ->check(CLI::Range(1, kMaxSamples));
   cmd.add_option("--max-depth", o.maxDepth, "Ray tracers: reflected and refracted bounces followed [5]")
       ->check(CLI::Range(0, kMaxRayDepth));
@@ -257,7 +257,7 @@ Scene prepareScene(SceneOptions o, double* loadMs) {
   std::optional<RendererKind> renderer;
   if (!o.renderer.empty()) {
     renderer = parseRendererKind(o.renderer);
-    if (!renderer) throw InputError("--renderer: expected raster, whitted or hall, got \"" + o.renderer + "\"");
+    if (!renderer) throw InputError("--renderer: expected raster, whitted, hall or path, got \"" + o.renderer + "\"");
   }
   if (!o.shading.empty()) {
     shading = parseShading(o.shading);

@@ -21,6 +21,16 @@ struct Image {
   }
 };
 
+// Linear values per pixel before their 8-bit conversion, RGBA floats, rows top to bottom: the
+// radiance the ray and path tracers computed, unclamped (the rasterizer's bytes / 255).
+struct FloatImage {
+  int width = 0;
+  int height = 0;
+  std::vector<float> rgba;
+  float* pixel(int x, int y) { return &rgba[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * 4]; }
+  const float* pixel(int x, int y) const { return &rgba[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * 4]; }
+};
+
 // Encodes the image as PNG in memory.
 std::vector<std::uint8_t> encodePng(const Image& image);
 // Writes a PNG with writeOutputFile (output_file.h): never a partial or clobbered file.

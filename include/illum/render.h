@@ -70,7 +70,9 @@ class Renderer {
   Renderer& operator=(const Renderer&) = delete;
 
   // As renderScene, into `image` (its memory reused).
-  void render(const Scene& scene, Image& image, RenderStats* stats = nullptr, PixelProbe* probe = nullptr);
+  // With `linear`, the unclamped values too (for OpenEXR output and tests).
+  void render(const Scene& scene, Image& image, RenderStats* stats = nullptr, PixelProbe* probe = nullptr,
+              FloatImage* linear = nullptr);
 
   struct State;  // defined by the pipeline
 
@@ -84,6 +86,7 @@ const char* simdTarget();
 
 // Renders like OpenGL 2.1 fixed-function (or its per-pixel equivalent) into an RGBA8 image,
 // row 0 at the top. The same scene gives the same bytes on every run.
-Image renderScene(const Scene& scene, RenderStats* stats = nullptr, PixelProbe* probe = nullptr);
+Image renderScene(const Scene& scene, RenderStats* stats = nullptr, PixelProbe* probe = nullptr,
+                  FloatImage* linear = nullptr);
 
 }  // namespace illum

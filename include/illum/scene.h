@@ -75,9 +75,10 @@ struct Label {
   Real size = 16;  // pixel height
 };
 
-// Which renderer draws the scene: the rasterizer (OpenGL's pipeline) or a ray tracer, Whitted's
-// (1980) or Hall and Greenberg's (1983), on the same scene, lights and local equation.
-enum class RendererKind { Raster, Whitted, Hall };
+// Which renderer draws the scene: the rasterizer (OpenGL's pipeline), a ray tracer, Whitted's
+// (1980) or Hall and Greenberg's (1983), on the same scene, lights and local equation, or a path
+// tracer solving Kajiya's rendering equation (1986) for the same lights and materials.
+enum class RendererKind { Raster, Whitted, Hall, Path };
 std::string_view toString(RendererKind renderer);
 std::optional<RendererKind> parseRendererKind(std::string_view name);
 
@@ -88,8 +89,13 @@ constexpr int kMaxSamples = 1024;
 struct RayTracing {
   int maxDepth = 5;      // reflected and refracted rays followed this many bounces deep
   bool shadows = true;   // shadow rays towards every light
-  int samples = 1;       // rays per pixel: 1 through the centre, more jittered (fixed seeds)
+  std::optional<int> samples;  // rays per pixel: 1 through the centre, more jittered (fixed seeds)
+  Color3 environment{0};       // the path tracer: radiance arriving from everywhere rays escape to
 };
+
+struct Scene;
+// Rays per pixel: as the scene says, else 1 (64 for the path tracer, which needs many).
+int samplesPerPixel(const Scene& scene);
 
 struct Scene {
   RendererKind renderer = RendererKind::Raster;

@@ -146,10 +146,10 @@ class BinnedFrame {
 Renderer::Renderer() : state_(std::make_unique<State>()) {}
 Renderer::~Renderer() = default;
 
-void Renderer::render(const Scene& scene, Image& image, RenderStats* statsOut, PixelProbe* probe) {
+void Renderer::render(const Scene& scene, Image& image, RenderStats* statsOut, PixelProbe* probe, FloatImage* linear) {
   if (scene.renderer != RendererKind::Raster) {
     RenderStats stats;
-    traceScene(scene, image, stats, probe);
+    traceScene(scene, image, stats, probe, linear);
     if (statsOut) *statsOut = stats;
     return;
   }
@@ -161,15 +161,19 @@ void Renderer::render(const Scene& scene, Image& image, RenderStats* statsOut, P
   pass.flush();
   RenderStats stats = pass.stats();
   finishFrame(state_->fb, scene, stats, image);
+  if (linear) {
+    *linear = FloatImage{image.width, image.height, std::vector<float>(image.rgba.size())};
+    for (std::size_t i = 0; i < image.rgba.size(); ++i) linear->rgba[i] = float(image.rgba[i]) / 255;
+  }
   if (statsOut) *statsOut = stats;
 }
 
 const char* simdTarget() { return simdTargetName(); }
 
-Image renderScene(const Scene& scene, RenderStats* stats, PixelProbe* probe) {
+Image renderScene(const Scene& scene, RenderStats* stats, PixelProbe* probe, FloatImage* linear) {
   Renderer renderer;
   Image image;
-  renderer.render(scene, image, stats, probe);
+  renderer.render(scene, image, stats, probe, linear);
   return image;
 }
 

@@ -48,6 +48,7 @@ std::string describe(Shading shading, RendererKind renderer) {
     case RendererKind::Raster: return describe(shading);
     case RendererKind::Whitted: return "Whitted ray tracing (1980): shadows, mirror and refracted rays";
     case RendererKind::Hall: return "Hall ray tracing (1983): Fresnel-weighted mirrors and glass, filtered light";
+    case RendererKind::Path: return "path tracing (Kajiya 1986): the rendering equation, light bouncing everywhere";
   }
   return "";
 }

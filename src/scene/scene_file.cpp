@@ -87,10 +87,13 @@ Light readLight(const JsonReader& j) {
 // both; emission, the lighting model and the ray tracers' keys go with either.
 Material readMaterial(const JsonReader& j) {
   j.expectObject({"ambient", "diffuse", "specular", "emission", "shininess", "base_color", "metallic", "roughness",
-                  "f0", "distribution", "model", "reflective", "transmissive", "ior", "transmission_shininess",
+                  "f0", "distribution", "model", "emission_strength", "reflective", "transmissive", "ior", "transmission_shininess",
                   "filter"});
   Material m;
   if (j.has("emission")) m.emission = j.at("emission").color34();
+  // Emitters brighter than white (area lights for the path tracer), like glTF's emissive_strength.
+  if (j.has("emission_strength"))
+    m.emission = Color4(Color3(m.emission) * j.at("emission_strength").nonNegative(), m.emission.a);
   if (j.has("model")) {
     const std::string name = j.at("model").string();
     m.model = parseLightingModel(name);
@@ -354,7 +357,7 @@ Scene parseScene(const std::string& text, const std::string& name, const std::fi
   const JsonReader j(root, name);
   j.expectObject({"version", "width", "height", "background", "model", "shading", "camera",
                   "light_model", "lights", "objects", "labels", "blend", "renderer", "max_depth", "shadows",
-                  "samples"});
+                  "samples", "environment"});
   Scene s;
   if (j.has("version") && j.at("version").integer(0, std::numeric_limits<int>::max()) != 1)
     j.at("version").fail("expected version 1");
@@ -380,12 +383,13 @@ Scene parseScene(const std::string& text, const std::string& name, const std::fi
   if (j.has("renderer")) {
     const std::string r = j.at("renderer").string();
     const auto renderer = parseRendererKind(r);
-    if (!renderer) j.at("renderer").fail("expected \"raster\", \"whitted\" or \"hall\", got \"" + r + "\"");
+    if (!renderer) j.at("renderer").fail("expected \"raster\", \"whitted\", \"hall\" or \"path\", got \"" + r + "\"");
     s.renderer = *renderer;
   }
   if (j.has("max_depth")) s.rayTracing.maxDepth = j.at("max_depth").integer(0, kMaxRayDepth);
   if (j.has("shadows")) s.rayTracing.shadows = j.at("shadows").boolean();
   if (j.has("samples")) s.rayTracing.samples = j.at("samples").integer(1, kMaxSamples);
+  if (j.has("environment")) s.rayTracing.environment = Color3(j.at("environment").intensity34());
   if (j.has("camera")) {
     readCamera(j.at("camera"), s.camera);
     checkCamera(j, s.camera, Real(s.width) / Real(s.height));

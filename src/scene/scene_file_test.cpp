@@ -230,7 +230,7 @@ TEST(SceneDefaults, RayTracingKeysLeaveTheRasterizerAsItWas) {
   EXPECT_EQ(s.renderer, RendererKind::Raster);
   EXPECT_EQ(s.rayTracing.maxDepth, 5);
   EXPECT_TRUE(s.rayTracing.shadows);
-  EXPECT_EQ(s.rayTracing.samples, 1);
+  EXPECT_EQ(samplesPerPixel(s), 1);
   const SurfaceOptics& o = s.objects[0].optics;
   EXPECT_EQ(o.reflective, Color3(0));
   EXPECT_EQ(o.transmissive, Color3(0));
@@ -258,7 +258,7 @@ TEST(SceneFile, ReadsTheRayTracingKeys) {
 
 TEST(SceneRejects, BadRayTracingKeys) {
   EXPECT_EQ(errorOf(R"({"renderer": "pathtracer"})"),
-            "scene.json: /renderer: expected \"raster\", \"whitted\" or \"hall\", got \"pathtracer\"");
+            "scene.json: /renderer: expected \"raster\", \"whitted\", \"hall\" or \"path\", got \"pathtracer\"");
   EXPECT_NE(errorOf(R"({"max_depth": 17})").find("/max_depth"), std::string::npos);
   EXPECT_NE(errorOf(R"({"samples": 0})").find("/samples"), std::string::npos);
   EXPECT_NE(errorOf(R"({"shadows": 1})").find("/shadows"), std::string::npos);

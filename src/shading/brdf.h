@@ -20,6 +20,7 @@ Real spotFactor(Real minusLoS, Real cosCutoff, Real exponent);
 
 // Cook-Torrance's terms (cook_torrance-inl.h, brdf-inl.h): the normal distributions, the Smith
 // visibility G / (4 N·L N·V), Schlick's Fresnel, and α for a perceptual roughness.
+Real Fd_Lambert();  // 1/π
 Real D_GGX(Real NoH, Real alpha);
 Real D_Beckmann(Real NoH, Real alpha);
 Real V_SmithGGXCorrelated(Real NoV, Real NoL, Real alpha);

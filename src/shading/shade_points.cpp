@@ -218,6 +218,7 @@ Real distanceAttenuation(const Vec3& k, Real d) {
 Real spotFactor(Real minusLoS, Real cosCutoff, Real exponent) {
   return hn::GetLane(HWY_NAMESPACE::SpotFactor(one::d, one::lane(minusLoS), cosCutoff, exponent));
 }
+Real Fd_Lambert() { return HWY_NAMESPACE::Fd_Lambert(); }
 Real D_GGX(Real NoH, Real alpha) { return hn::GetLane(HWY_NAMESPACE::D_GGX(one::d, one::lane(NoH), alpha)); }
 Real D_Beckmann(Real NoH, Real alpha) {
   return hn::GetLane(HWY_NAMESPACE::D_Beckmann(one::d, one::lane(NoH), alpha));

@@ -4,6 +4,7 @@
 #include "raster/framebuffer.h"
 #include "raster/labels.h"
 #include "trace/camera_rays.h"
+#include "trace/path_tracer.h"
 #include "trace/ray_scene.h"
 #include "trace/whitted.h"
 
@@ -14,6 +15,7 @@
 #include <array>
 #include <chrono>
 #include <cstring>
+#include <optional>
 
 namespace illum {
 namespace {
@@ -23,20 +25,19 @@ constexpr int kBlock = 4;   // pixels on a side of a primary ray packet
 
 using Clock = std::chrono::steady_clock;
 
-// A sample position's offset in its pixel, from a hash of (x, y, sample) alone (SplitMix64), so
-// that jitter is the same on every run and thread count.
+// A pixel sample's seed: a hash of (x, y, sample) alone (SplitMix64's finalizer), so that jitter
+// and a path's random numbers are the same on every run and thread count.
+std::uint64_t sampleSeed(int x, int y, int sample, std::uint64_t salt) {
+  std::uint64_t r = (std::uint64_t(std::uint32_t(x)) << 40) ^ (std::uint64_t(std::uint32_t(y)) << 20) ^
+                    std::uint64_t(std::uint32_t(sample)) ^ (salt * 0x9E3779B97F4A7C15ull);
+  r = (r ^ (r >> 30)) * 0xBF58476D1CE4E5B9ull;
+  r = (r ^ (r >> 27)) * 0x94D049BB133111EBull;
+  return r ^ (r >> 31);
+}
+
+// A sample position's offset in its pixel.
 Vec2 jitter(int x, int y, int sample) {
-  std::uint64_t z = (std::uint64_t(std::uint32_t(x)) << 40) ^ (std::uint64_t(std::uint32_t(y)) << 20) ^
-                    std::uint64_t(std::uint32_t(sample)) ^ 0x9E3779B97F4A7C15ull;
-  const auto next = [&] {
-    z += 0x9E3779B97F4A7C15ull;
-    std::uint64_t r = z;
-    r = (r ^ (r >> 30)) * 0xBF58476D1CE4E5B9ull;
-    r = (r ^ (r >> 27)) * 0x94D049BB133111EBull;
-    return r ^ (r >> 31);
-  };
-  const Real u = Real(next() >> 40) / Real(1 << 24), v = Real(next() >> 40) / Real(1 << 24);
-  return {u, v};
+  return {Real(sampleSeed(x, y, sample, 1) >> 40) / Real(1 << 24), Real(sampleSeed(x, y, sample, 2) >> 40) / Real(1 << 24)};
 }
 
 struct TileCounts {
@@ -46,13 +47,15 @@ struct TileCounts {
 
 class TracedFrame {
  public:
-  TracedFrame(const Scene& scene, const RayScene& rays, Image& image, PixelProbe* probe)
-      : scene_(scene), rays_(rays), image_(image), probe_(probe), camera_(scene.camera, scene.width, scene.height),
-        tracer_(scene, rays) {}
+  TracedFrame(const Scene& scene, const RayScene& rays, Image& image, PixelProbe* probe, FloatImage* linear)
+      : scene_(scene), rays_(rays), image_(image), linear_(linear), probe_(probe), camera_(scene.camera, scene.width, scene.height),
+        tracer_(scene, rays) {
+    if (scene.renderer == RendererKind::Path) pathTracer_.emplace(scene, rays);
+  }
 
   void tile(int x0, int y0, TileCounts& counts) const {
     const int x1 = std::min(x0 + kTile, scene_.width), y1 = std::min(y0 + kTile, scene_.height);
-    const int samples = scene_.rayTracing.samples;
+    const int samples = samplesPerPixel(scene_);
     std::array<Color4, kTile * kTile> sum;
     sum.fill(Color4(0));
     for (int s = 0; s < samples; ++s)
@@ -63,6 +66,8 @@ class TracedFrame {
         const Color4 c = sum[std::size_t((y - y0) * kTile + (x - x0))] / Real(samples);
         std::uint8_t* p = image_.pixel(x, y);
         for (int k = 0; k < 4; ++k) p[k] = toUnorm8(c[k]);
+        if (linear_)
+          for (int k = 0; k < 4; ++k) linear_->pixel(x, y)[k] = float(c[k]);
       }
   }
 
@@ -97,30 +102,38 @@ class TracedFrame {
         cone.right = camera_.through(at.x + 1, at.y);
         cone.up = camera_.through(at.x, at.y - 1);
       }
+      const RayHit* first = hit.t >= 0 ? &hit : nullptr;
+      Color4& pixel = sum[std::size_t((y - y0) * kTile + (x - x0))];
+      if (pathTracer_) {
+        // Radiance is averaged as it is: the mean converges to the rendering equation's solution.
+        pixel += pathTracer_->primary(ray, first, cone, counts.rays, sampleSeed(x, y, s, 3));
+        continue;
+      }
       PixelProbe* probe = probe_ && s == 0 && x == probe_->x && y == probe_->y ? probe_ : nullptr;
-      const Color4 c = tracer_.primary(ray, hit.t >= 0 ? &hit : nullptr, cone, counts.rays, probe);
       // Each sample as the display shows it: clamped, then averaged.
-      sum[std::size_t((y - y0) * kTile + (x - x0))] += glm::clamp(c, Color4(0), Color4(1));
+      pixel += glm::clamp(tracer_.primary(ray, first, cone, counts.rays, probe), Color4(0), Color4(1));
     }
   }
 
   // Where sample s of pixel (x, y) goes through the image: the centre, or jittered.
   Vec2 pixelPoint(int x, int y, int s) const {
-    const Vec2 offset = scene_.rayTracing.samples == 1 ? Vec2(Real(0.5)) : jitter(x, y, s);
+    const Vec2 offset = samplesPerPixel(scene_) == 1 ? Vec2(Real(0.5)) : jitter(x, y, s);
     return {Real(x) + offset.x, Real(y) + offset.y};
   }
 
   const Scene& scene_;
   const RayScene& rays_;
   Image& image_;
+  FloatImage* linear_;
   PixelProbe* probe_;
   CameraRays camera_;
   WhittedTracer tracer_;
+  std::optional<PathTracer> pathTracer_;
 };
 
 }  // namespace
 
-void traceScene(const Scene& scene, Image& image, RenderStats& stats, PixelProbe* probe) {
+void traceScene(const Scene& scene, Image& image, RenderStats& stats, PixelProbe* probe, FloatImage* linear) {
   stats = RenderStats{};
   const auto start = Clock::now();
   const RayScene rays(scene);
@@ -128,7 +141,8 @@ void traceScene(const Scene& scene, Image& image, RenderStats& stats, PixelProbe
   stats.trianglesIn = rays.triangleCount();
   if (image.width != scene.width || image.height != scene.height) image = Image(scene.width, scene.height);
   if (probe) probe->hit = false;
-  const TracedFrame frame(scene, rays, image, probe);
+  if (linear) *linear = FloatImage{scene.width, scene.height, std::vector<float>(std::size_t(scene.width) * std::size_t(scene.height) * 4)};
+  const TracedFrame frame(scene, rays, image, probe, linear);
   const int tilesX = (scene.width + kTile - 1) / kTile, tilesY = (scene.height + kTile - 1) / kTile;
   tbb::combinable<TileCounts> counts;
   tbb::parallel_for(tbb::blocked_range<int>(0, tilesX * tilesY), [&](const tbb::blocked_range<int>& r) {

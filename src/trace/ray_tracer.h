@@ -10,6 +10,8 @@
 namespace illum {
 
 // `probe`, if given, is filled from the centre ray of its pixel (the first sample).
-void traceScene(const Scene& scene, Image& image, RenderStats& stats, PixelProbe* probe = nullptr);
+// `linear`, if given, receives each pixel's mean before its 8-bit conversion.
+void traceScene(const Scene& scene, Image& image, RenderStats& stats, PixelProbe* probe = nullptr,
+                FloatImage* linear = nullptr);
 
 }  // namespace illum

@@ -10,6 +10,7 @@
 #include <illum/scene.h>
 
 #include "trace/ray_scene.h"
+#include "trace/surface_hit.h"
 
 #include <cstdint>
 #include <vector>
@@ -22,17 +23,6 @@ struct RayCounts {
     primary += o.primary, secondary += o.secondary, shadow += o.shadow;
     return *this;
   }
-};
-
-// How wide a pixel's footprint is along a path, for texture filtering: a ray cone (Akenine-Möller
-// et al. 2019, without curvature), and for primary rays the rays through the next pixel to the
-// right and the next one up, whose texture coordinates on the hit's plane are the rasterizer's
-// derivatives exactly.
-struct RayCone {
-  Real width = 0;   // at the ray's origin
-  Real spread = 0;  // growth per unit distance
-  bool differentials = false;
-  Ray right, up;
 };
 
 class WhittedTracer {

@@ -1,0 +1,178 @@
+#include "trace/path_tracer.h"
+
+#include "raster/draw_record.h"
+#include "raster/fragment.h"
+#include "shading/brdf.h"
+#include "trace/path_bsdf.h"
+#include "trace/sampling.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace illum {
+namespace {
+
+constexpr int kRouletteDepth = 3;  // bounces before Russian roulette may end a path
+
+Real maxComponent(const Color3& c) { return std::max({c.r, c.g, c.b}); }
+
+// A point light's direction, distance and the factor att·spot (GL's, brdf.h) at P.
+struct PointLightAt {
+  Vec3 L{0};
+  Real distance = 0;  // 0: directional
+  Real factor = 0;
+};
+
+PointLightAt lightAt(const EyeLight& light, const Vec3& P) {
+  PointLightAt out;
+  if (light.isPositional()) {
+    const Vec3 d = Vec3(light.position) / light.position.w - P;
+    out.distance = glm::length(d);
+    if (!(out.distance > 0)) return out;
+    out.L = d / out.distance;
+    out.factor = distanceAttenuation(light.attenuation, out.distance);
+  } else {
+    out.L = glm::normalize(Vec3(light.position));
+    out.factor = 1;
+  }
+  if (light.isSpot()) out.factor *= spotFactor(-glm::dot(out.L, light.spotDirection), light.spotCosCutoff, light.spotExponent);
+  return out;
+}
+
+}  // namespace
+
+PathTracer::PathTracer(const Scene& scene, const RayScene& rays) : scene_(scene), rays_(rays), area_(scene, rays) {
+  const Mat4 viewFromWorld = scene.camera.viewFromWorld();
+  for (const Light& l : scene.lights) lights_.push_back(toEyeSpace(l, viewFromWorld));
+}
+
+Color4 PathTracer::primary(const Ray& primaryRay, const RayHit* primaryHit, const RayCone& primaryCone,
+                           RayCounts& counts, std::uint64_t seed) const {
+  ++counts.primary;
+  if (!primaryHit) return scene_.background;
+  Rng rng(seed, seed >> 32);
+  Color3 radiance(0), beta(1);
+  Ray ray = primaryRay;
+  RayHit hit = *primaryHit;
+  RayCone cone = primaryCone;
+  Real bsdfPdf = 0;  // of the direction that led here; 0 after a camera ray
+  const int maxDepth = scene_.rayTracing.maxDepth;
+  for (int depth = 0;; ++depth) {
+    const HitPoint h = hitPoint(rays_, ray, hit);
+    const Object& object = *h.object;
+    const EyeMesh& mesh = rays_.mesh(hit.object);
+    const Real length = hit.t * glm::length(ray.direction);
+    const Vec3 wo = -glm::normalize(ray.direction);
+
+    // The material here: vertex colours, and a texture as base colour (cook-torrance) or as the
+    // diffuse albedo it modulates (GL).
+    Material material = object.material;
+    if (!object.mesh->colors.empty()) {
+      const auto& c = object.mesh->colors;
+      material = withVertexColor(material, h.w[0] * c[h.index[0]] + h.w[1] * c[h.index[1]] + h.w[2] * c[h.index[2]]);
+    }
+    const LightingModel model = modelOf(material, scene_.model);
+    if (const Texture* texture = drawnTexture(object)) {
+      const Vec4 texel = texelAt(*texture, mesh, h, ray, cone, cone.width + cone.spread * length);
+      if (model == LightingModel::CookTorrance) material = withBaseTexel(material, texel);
+      else material.diffuse *= texel;
+    }
+
+    // Emission: what the camera (or a mirror-like bounce) sees whole, else weighed against the
+    // chance that next-event estimation found the same light.
+    // Emitters shine from their front (counter-clockwise) side, as pbrt's area lights do.
+    const Color3 emission = h.front ? Color3(material.emission) : Color3(0);
+    if (emission != Color3(0)) {
+      if (depth == 0) {
+        radiance += beta * emission;
+      } else {
+        const Real cosLight = glm::dot(h.geometricNormal, wo);
+        const Real lightPdf = cosLight > 0 ? area_.pdfArea(hit.object) * length * length / cosLight : 0;
+        radiance += beta * emission * powerHeuristic(bsdfPdf, lightPdf);
+      }
+    }
+    if (depth >= maxDepth) break;
+
+    // Shade on the side the ray came from.
+    const Vec3 Ng = glm::dot(h.geometricNormal, wo) > 0 ? h.geometricNormal : -h.geometricNormal;
+    Vec3 N = glm::dot(h.normal, Ng) > 0 ? h.normal : -h.normal;
+    // Where the interpolated normal turns away from the viewer (at silhouettes), the BSDF would
+    // reflect nothing the viewer sees: the facet's normal stands in.
+    if (!(glm::dot(N, wo) > 0)) N = Ng;
+    const PathBsdf bsdf(material, model, N);
+    const auto leaves = [&](const Vec3& wi) { return glm::dot(wi, N) > 0 && glm::dot(wi, Ng) > 0; };
+
+    // Next-event estimation: every point, spot and directional light (irradiance π·c·att·spot·cos,
+    // as the rasterizer's physically based lights), then one point on an emissive surface.
+    // Without shadows (a comparison with the local models) nothing, not even the facet, blocks them.
+    const bool shadows = scene_.rayTracing.shadows;
+    for (const EyeLight& light : lights_) {
+      const PointLightAt at = lightAt(light, h.position);
+      if (!(at.factor > 0) || !(shadows ? leaves(at.L) : glm::dot(at.L, N) > 0)) continue;
+      const BsdfValue f = bsdf.eval(wo, at.L);
+      if (f.sum() == Color3(0)) continue;
+      if (shadows) {
+        Ray shadow;
+        shadow.origin = offsetOrigin(h.position, Ng, at.L);
+        shadow.direction = at.L;
+        if (at.distance > 0) shadow.tFar = at.distance * Real(1 - 1e-4);
+        ++counts.shadow;
+        if (rays_.occluded(shadow)) continue;
+      }
+      const Real E = kPiReal * at.factor * glm::dot(N, at.L);
+      radiance += beta * (f.diffuse * light.diffuse + f.specular * light.specular) * E;
+    }
+    if (!area_.empty()) {
+      const AreaLightSample s = area_.sample(rng.uniform(), rng.uniform(), rng.uniform());
+      const Vec3 d = s.position - h.position;
+      const Real distance = glm::length(d);
+      const Vec3 wi = d / distance;
+      const Real cosLight = -glm::dot(s.normal, wi);  // the light's front faces the point
+      if (distance > 0 && cosLight > 0 && leaves(wi)) {
+        const BsdfValue f = bsdf.eval(wo, wi);
+        // The shadow ray stops just short of the light's surface, measured from where it starts.
+        Ray shadow;
+        shadow.origin = offsetOrigin(h.position, Ng, wi);
+        shadow.direction = s.position - shadow.origin;
+        shadow.tFar = Real(1 - 1e-3);
+        if (f.sum() != Color3(0)) {
+          ++counts.shadow;
+          if (!rays_.occluded(shadow)) {
+            const Real lightPdf = s.pdfArea * distance * distance / cosLight;
+            const Real weight = powerHeuristic(lightPdf, bsdf.pdf(wo, wi));
+            radiance += beta * f.sum() * s.radiance * (glm::dot(N, wi) * weight / lightPdf);
+          }
+        }
+      }
+    }
+
+    // The next bounce, sampled from the BSDF.
+    BsdfSample next;
+    if (!bsdf.sample(wo, rng, next) || !(glm::dot(N, next.direction) > 0)) break;
+    beta *= next.value.sum() * (glm::dot(N, next.direction) / next.pdf);
+    // An interpolated normal tilts away from the facet near silhouettes: a direction sampled above
+    // it but below the facet would re-enter the surface and its energy be lost, so it is turned
+    // back across the facet's plane (the white furnace stays exact).
+    if (!(glm::dot(next.direction, Ng) > 0))
+      next.direction = glm::normalize(next.direction - 2 * glm::dot(next.direction, Ng) * Ng);
+    bsdfPdf = next.pdf;
+    if (depth + 1 >= kRouletteDepth) {
+      const Real survive = std::min(Real(0.95), maxComponent(beta));
+      if (!(rng.uniform() < survive)) break;
+      beta /= survive;
+    }
+    cone.width += cone.spread * length;
+    cone.differentials = false;
+    ray = Ray{};
+    ray.origin = offsetOrigin(h.position, Ng, next.direction);
+    ray.direction = next.direction;
+    ++counts.secondary;
+    if (!rays_.intersect(ray, hit)) {
+      radiance += beta * scene_.rayTracing.environment;  // nothing samples the environment but BSDFs
+      break;
+    }
+  }
+  return {radiance, 1};
+}
+
+}  // namespace illum

@@ -1,0 +1,35 @@
+// Kajiya's rendering equation (1986), L_o = L_e + ∫ f L_i cos θ dω, solved by Monte Carlo path
+// tracing on the ray tracers' scene: next-event estimation towards the scene's point, spot and
+// directional lights and its emissive surfaces (multiple importance sampling with the BSDF, Veach's
+// power heuristic), BSDF importance sampling (GGX visible normals, the classic lobes, cosine),
+// Russian roulette after three bounces, and `environment` radiance where rays escape — what the
+// classic models' ambient term stood for.
+#pragma once
+
+#include <illum/scene.h>
+
+#include "trace/area_lights.h"
+#include "trace/ray_scene.h"
+#include "trace/surface_hit.h"
+#include "trace/whitted.h"
+
+#include <vector>
+
+namespace illum {
+
+class PathTracer {
+ public:
+  PathTracer(const Scene& scene, const RayScene& rays);
+
+  // The radiance (unclamped) and alpha seen along a primary ray whose first hit is `hit` (null: a
+  // miss, which shows the background); `seed` picks this pixel sample's random numbers.
+  Color4 primary(const Ray& ray, const RayHit* hit, const RayCone& cone, RayCounts& counts, std::uint64_t seed) const;
+
+ private:
+  const Scene& scene_;
+  const RayScene& rays_;
+  std::vector<EyeLight> lights_;
+  AreaLights area_;
+};
+
+}  // namespace illum

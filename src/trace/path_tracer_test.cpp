@@ -1,0 +1,204 @@
+// The path tracer against physics: the white furnace, a Lambertian plane under a uniform sky, one
+// bounce from a point light against the rasterizer's per-pixel Lambert image, error falling as
+// 1/√samples, and the same bytes for any thread count.
+#include <illum/render.h>
+#include <illum/scene.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include <cmath>
+
+namespace illum {
+namespace {
+
+Material lambertian(Real albedo) {
+  Material m;
+  m.ambient = m.diffuse = Color4(Color3(albedo), 1);
+  return m;
+}
+
+Scene pathScene(int size) {
+  Scene s;
+  s.width = s.height = size;
+  s.renderer = RendererKind::Path;
+  s.lights.clear();
+  s.background = {0, 0, 0, 1};
+  s.camera.eye = {0, 0, 4};
+  return s;
+}
+
+// Mean and extremes of the linear values of the pixels an object covers whole (every sample hit it).
+struct Stats {
+  double mean = 0, min = 1e30, max = -1e30;
+  int count = 0;
+};
+Stats over(const FloatImage& image, const Image& coverage) {
+  Stats s;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      if (coverage.pixel(x, y)[3] != 255) continue;  // the background (alpha 0) shows, at least in part
+      const double v = image.pixel(x, y)[0];
+      s.mean += v, s.min = std::min(s.min, v), s.max = std::max(s.max, v), ++s.count;
+    }
+  s.mean /= std::max(1, s.count);
+  return s;
+}
+
+TEST(PathTracer, WhiteFurnace) {
+  // A white Lambertian object in a uniform environment of radiance 0.5 shows 0.5 everywhere: it
+  // reflects all it receives. A sphere reflects every path straight out (no variance at all); a
+  // torus sends some paths around itself several times (Russian roulette keeps it unbiased).
+  for (const bool torus : {false, true}) {
+    Scene s = pathScene(48);
+    s.background = {0, 0, 0, 0};
+    s.rayTracing.environment = Color3(0.5f);
+    s.rayTracing.samples = torus ? 256 : 4;
+    s.rayTracing.maxDepth = 16;
+    Object o;
+    o.mesh = std::make_shared<const Mesh>(torus ? makeTorus(0.4f, 1, 24, 48) : makeSphere(1, 32, 16));
+    o.worldFromObject = glm::rotate(Mat4(1), glm::radians(Real(60)), Vec3(1, 0, 0));
+    o.material = lambertian(1);
+    s.objects.push_back(o);
+    FloatImage linear;
+    const Image image = renderScene(s, nullptr, nullptr, &linear);
+    const Stats st = over(linear, image);
+    ASSERT_GT(st.count, 200);
+    if (!torus) {
+      EXPECT_NEAR(st.min, 0.5, 1e-5);
+      EXPECT_NEAR(st.max, 0.5, 1e-5);
+    } else {
+      EXPECT_NEAR(st.mean, 0.5, 0.01);
+    }
+  }
+}
+
+TEST(PathTracer, ALambertianPlaneUnderAUniformSkyHasAlbedoTimesSky) {
+  Scene s = pathScene(16);
+  s.camera.projection = Projection::Orthographic;
+  s.rayTracing.environment = {0.5f, 1.0f, 0.25f};
+  s.rayTracing.samples = 8;
+  Object plane;
+  Mesh m;
+  m.positions = {{-50, -50, 0}, {50, -50, 0}, {50, 50, 0}, {-50, 50, 0}};
+  m.normals.assign(4, Vec3(0, 0, 1));
+  m.indices = {0, 1, 2, 0, 2, 3};
+  plane.mesh = std::make_shared<const Mesh>(m);
+  plane.material = lambertian(0.6f);
+  s.objects.push_back(plane);
+  FloatImage linear;
+  renderScene(s, nullptr, nullptr, &linear);
+  for (int y = 0; y < 16; y += 5)
+    for (int x = 0; x < 16; x += 5) {
+      EXPECT_NEAR(linear.pixel(x, y)[0], 0.6 * 0.5, 1e-5);
+      EXPECT_NEAR(linear.pixel(x, y)[1], 0.6 * 1.0, 1e-5);
+      EXPECT_NEAR(linear.pixel(x, y)[2], 0.6 * 0.25, 1e-5);
+    }
+}
+
+TEST(PathTracer, OneBounceFromAPointLightIsTheRasterizersLambertImage) {
+  // Direct light only, no ambient, no shadow rays (which would see the faceted sphere shadow itself
+  // along the terminator, as the local model cannot): L = (k_d/π)·(π·c·att)·(N·L), GL's diffuse term.
+  Scene s = pathScene(256);
+  s.model = LightingModel::Lambert;
+  s.lightModel.ambient = Color3(0);
+  Light light;
+  light.position = {2, 3, 4, 1};
+  light.diffuse = {0.9f, 0.8f, 0.7f};
+  light.attenuation = {1, 0.05f, 0.01f};
+  s.lights = {light};
+  s.rayTracing.samples = 1;
+  s.rayTracing.maxDepth = 1;
+  s.rayTracing.shadows = false;
+  Object ball;
+  ball.mesh = std::make_shared<const Mesh>(makeSphere(1.2f, 48, 24));
+  ball.material = lambertian(0.7f);
+  ball.material.diffuse = {0.8f, 0.5f, 0.3f, 1};
+  s.objects.push_back(ball);
+  const Image traced = renderScene(s);
+  s.renderer = RendererKind::Raster;
+  s.shading = Shading::Phong;
+  const Image raster = renderScene(s);
+  // Inside the silhouette (at its very edge the viewer can see past the interpolated normal,
+  // where the path tracer lights the facet instead).
+  int inside = 0, within = 0;
+  for (int y = 1; y + 1 < s.height; ++y)
+    for (int x = 1; x + 1 < s.width; ++x) {
+      bool covered = true;
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) covered = covered && raster.pixel(x + dx, y + dy)[3] == 255 && raster.pixel(x + dx, y + dy)[0] != 0;
+      if (!covered) continue;
+      ++inside;
+      bool close = true;
+      for (int c = 0; c < 3; ++c) close = close && std::abs(traced.pixel(x, y)[c] - raster.pixel(x, y)[c]) <= 1;
+      within += close;
+    }
+  ASSERT_GT(inside, 10000);
+  EXPECT_GE(double(within) / inside, 0.999) << within << " of " << inside;
+  // And the background is the background in both.
+  EXPECT_EQ(traced.pixel(0, 0)[3], raster.pixel(0, 0)[3]);
+}
+
+TEST(PathTracer, ErrorFallsAsOneOverTheSquareRootOfSamples) {
+  // A sphere on a floor lit by an emissive quad: the RMS error against a 4096-sample render
+  // halves when the samples quadruple.
+  Scene s = pathScene(24);
+  s.rayTracing.maxDepth = 4;
+  Object floor;
+  Mesh m;
+  m.positions = {{-3, -1, 3}, {3, -1, 3}, {3, -1, -3}, {-3, -1, -3}};
+  m.normals.assign(4, Vec3(0, 1, 0));
+  m.indices = {0, 1, 2, 0, 2, 3};
+  floor.mesh = std::make_shared<const Mesh>(m);
+  floor.material = lambertian(0.7f);
+  s.objects.push_back(floor);
+  Object ball;
+  ball.mesh = std::make_shared<const Mesh>(makeSphere(0.8f, 24, 12));
+  ball.material = lambertian(0.5f);
+  s.objects.push_back(ball);
+  Object lamp;
+  Mesh q;
+  q.positions = {{-1, 2.5f, -1}, {-1, 2.5f, 1}, {1, 2.5f, 1}, {1, 2.5f, -1}};  // facing down
+  q.normals.assign(4, Vec3(0, -1, 0));
+  q.indices = {0, 1, 2, 0, 2, 3};
+  lamp.mesh = std::make_shared<const Mesh>(q);
+  lamp.material = lambertian(0);
+  lamp.material.emission = {1, 1, 1, 1};
+  s.objects.push_back(lamp);
+  s.rayTracing.samples = 4096;
+  FloatImage reference;
+  renderScene(s, nullptr, nullptr, &reference);
+  double previous = 0;
+  for (int samples : {16, 64, 256}) {
+    s.rayTracing.samples = samples;
+    FloatImage estimate;
+    renderScene(s, nullptr, nullptr, &estimate);
+    double squared = 0;
+    for (std::size_t i = 0; i < estimate.rgba.size(); i += 4) {
+      const double e = estimate.rgba[i] - reference.rgba[i];
+      squared += e * e;
+    }
+    const double rms = std::sqrt(squared / double(estimate.rgba.size() / 4));
+    if (previous > 0) {
+      EXPECT_GT(previous / rms, 1.6) << samples << " samples";
+      EXPECT_LT(previous / rms, 2.5) << samples << " samples";
+    }
+    previous = rms;
+  }
+}
+
+TEST(PathTracer, TheSameBytesOnEveryThreadCount) {
+  Scene s = defaultScene(LightingModel::BlinnPhong, Shading::Phong, RendererKind::Path);
+  s.width = 160, s.height = 90;
+  s.rayTracing.samples = 4;
+  s.rayTracing.environment = Color3(0.2f);
+  const Image all = renderScene(s);
+  for (int threads : {1, 3}) {
+    const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
+    EXPECT_EQ(renderScene(s).rgba, all.rgba) << threads << " threads";
+  }
+}
+
+}  // namespace
+}  // namespace illum
