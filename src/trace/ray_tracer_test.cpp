@@ -130,6 +130,7 @@ TEST(RayTracer, WithoutShadowsMirrorsAndGlassItDrawsTheRasterizersPhongShading) 
       for (RendererKind kind : {RendererKind::Whitted, RendererKind::Hall}) {
         scene.renderer = kind;
         scene.rayTracing.shadows = false;
+        scene.rayTracing.samples = 1;  // through the pixel centres, as the rasterizer samples
         const Image traced = renderScene(scene);
         const ImageDifference d = compareImages(traced, raster, 1);
         EXPECT_GE(d.fractionWithin, 0.999) << name << " " << toString(model) << " " << toString(kind)
