@@ -10,7 +10,7 @@ cd "$(dirname "$0")/.."
 # Debian packages only (docs/dependencies.md): nothing vendored, nothing downloaded at build time.
 PACKAGES=(
   g++ cmake make pkg-config
-  libglm-dev nlohmann-json3-dev libcli11-dev libstb-dev libassimp-dev libdeflate-dev libtbb-dev libhwy-dev libembree-dev
+  libglm-dev nlohmann-json3-dev libcli11-dev libstb-dev libassimp-dev libdeflate-dev libtbb-dev libhwy-dev libembree-dev libopenexr-dev
   libgtest-dev libbenchmark-dev libosmesa6-dev assimp-testmodels fonts-dejavu-core
   clang libclang-rt-14-dev
 )

@@ -392,6 +392,31 @@ TEST(CliRayTracing, BenchCountsRays) {
   EXPECT_GT(j["primary_rays_per_core_second"].get<double>(), 0);
 }
 
+TEST(CliPathTracing, RendersToPngAndToLinearOpenExr) {
+  // A glowing quad of radiance 5 seen head-on, and a white Lambertian sphere under a sky of 0.5:
+  // the PNG clamps the glow to 255, the EXR keeps 5, and the furnace sphere is 0.5 in both.
+  TempDir dir;
+  std::ofstream(dir / "glow.json") << R"({"width": 40, "height": 20, "renderer": "path", "samples": 4,
+    "environment": [0.5, 0.5, 0.5], "lights": [],
+    "camera": {"eye": [0, 0, 5], "projection": "orthographic", "view_height": 2},
+    "objects": [
+      {"mesh": {"type": "triangles", "positions": [-2,-1,0, -0.2,-1,0, -0.2,1,0, -2,1,0], "indices": [0,1,2, 0,2,3]},
+       "material": {"diffuse": [0,0,0], "ambient": [0,0,0], "emission": [1,1,1], "emission_strength": 5}},
+      {"mesh": {"type": "sphere", "radius": 0.8, "slices": 32, "stacks": 16},
+       "transform": [{"translate": [1, 0, 0]}], "material": {"diffuse": [1,1,1], "ambient": [1,1,1]}}]})";
+  ASSERT_EQ(run("render " + (dir / "glow.json").string() + " -o " + (dir / "glow.png").string()).exitCode, 0);
+  ASSERT_EQ(run("render " + (dir / "glow.json").string() + " -o " + (dir / "glow.exr").string()).exitCode, 0);
+  const illum::Image png = illum::readPng(dir / "glow.png");
+  const illum::FloatImage exr = illum::readExr(dir / "glow.exr");
+  ASSERT_EQ(exr.width, 40);
+  ASSERT_EQ(exr.height, 20);
+  EXPECT_EQ(png.pixel(5, 10)[0], 255);
+  EXPECT_FLOAT_EQ(exr.pixel(5, 10)[0], 5);
+  EXPECT_EQ(png.pixel(30, 10)[0], 128);
+  EXPECT_NEAR(exr.pixel(30, 10)[0], 0.5, 1e-5);
+  EXPECT_EQ(exr.pixel(30, 10)[3], 1);
+}
+
 TEST(CliOutput, PngEncodingIsDeterministicAndDecodes) {
   TempDir dir;
   ASSERT_EQ(run("render --width 200 --height 100 -o " + (dir / "a.png").string()).exitCode, 0);

@@ -14,7 +14,10 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cctype>
 #include <chrono>
+#include <filesystem>
 #include <cstdio>
 #include <memory>
 #include <optional>
@@ -40,6 +43,12 @@ bool isStandardOutput(const std::string& path) {
          out.st_ino == target.st_ino;
 }
 
+bool isExrPath(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext == ".exr";
+}
+
 int runRender(const RenderOptions& o) {
   const ThreadLimit limit(o.scene);
   double loadMs = 0;
@@ -56,7 +65,10 @@ int runRender(const RenderOptions& o) {
     probe->x = parseInteger("--debug-pixel", o.debugPixel.substr(0, comma), 0, scene.width - 1);
     probe->y = parseInteger("--debug-pixel", o.debugPixel.substr(comma + 1), 0, scene.height - 1);
   }
-  const Image image = renderScene(scene, &stats, probe ? &*probe : nullptr);
+  // A .exr output gets the linear values, unclamped (OpenEXR); anything else a PNG.
+  const bool exr = isExrPath(o.output);
+  FloatImage linear;
+  const Image image = renderScene(scene, &stats, probe ? &*probe : nullptr, exr ? &linear : nullptr);
   const auto rendered = Clock::now();
   auto encoded = rendered;
   if (stats.pixelsDrawn == 0 && !scene.objects.empty())
@@ -73,28 +85,28 @@ int runRender(const RenderOptions& o) {
     if (std::fwrite(png.data(), 1, png.size(), stdout) != png.size() || std::fflush(stdout) != 0)
       throw Error("cannot write the PNG to standard output");
   } else {
-    const std::vector<std::uint8_t> png = encodePng(image);
+    const std::vector<std::uint8_t> bytes = exr ? encodeExr(linear) : encodePng(image);
     encoded = Clock::now();
-    writeOutputFile(o.output, png, OutputOptions{o.force});
+    writeOutputFile(o.output, bytes, OutputOptions{o.force});
   }
   const auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
   if (o.scene.verbose && scene.renderer != RendererKind::Raster) {
     std::fprintf(stderr,
                  "illum: loaded in %.1f ms; ray traced (%s) %dx%d in %.1f ms (%s triangles, BVH built in %.1f ms; "
-                 "%s primary, %s reflected/refracted, %s shadow rays; %d threads); PNG encoded in %.1f ms; "
+                 "%s primary, %s reflected/refracted, %s shadow rays; %d threads); %s encoded in %.1f ms; "
                  "peak memory %.0f MiB\n",
                  loadMs, std::string(toString(scene.renderer)).c_str(), scene.width, scene.height, ms(loaded, rendered),
                  withThousands(stats.trianglesIn).c_str(), stats.bvhMs, withThousands(stats.primaryRays).c_str(),
                  withThousands(stats.secondaryRays).c_str(), withThousands(stats.shadowRays).c_str(), limit.threads(),
-                 ms(rendered, encoded), peakMemoryMiB());
+                 exr ? "EXR" : "PNG", ms(rendered, encoded), peakMemoryMiB());
   } else if (o.scene.verbose) {
     std::fprintf(stderr,
                  "illum: loaded in %.1f ms; rendered %dx%d in %.1f ms (%s triangles in, %s drawn, %s fragments shaded; "
-                 "%d threads, %s); PNG encoded in %.1f ms; peak memory %.0f MiB\n",
+                 "%d threads, %s); %s encoded in %.1f ms; peak memory %.0f MiB\n",
                  loadMs, scene.width, scene.height, ms(loaded, rendered),
                  withThousands(stats.trianglesIn).c_str(), withThousands(stats.trianglesDrawn).c_str(),
-                 withThousands(stats.fragmentsShaded).c_str(), limit.threads(), simdTarget(), ms(rendered, encoded),
-                 peakMemoryMiB());
+                 withThousands(stats.fragmentsShaded).c_str(), limit.threads(), simdTarget(), exr ? "EXR" : "PNG",
+                 ms(rendered, encoded), peakMemoryMiB());
   }
   if (toStdout) return 0;
   if (!o.quiet && !isStandardOutput(o.output)) std::printf("%s\n", o.output.c_str());
@@ -113,7 +125,9 @@ Command addRenderCommand(CLI::App& app) {
       "assimp (OBJ+MTL, PLY, STL, glTF/GLB, FBX, Collada, 3DS, ...), framed and lit automatically.\n"
       "Colours are R,G,B in [0,1] or #rrggbb; both are written to the image as they are (docs/cli.md).");
   addSceneOptions(*cmd, o->scene);
-  cmd->add_option("-o,--output", o->output, "Output PNG, written atomically; - for standard output")->capture_default_str();
+  cmd->add_option("-o,--output", o->output,
+                  "Output PNG, or OpenEXR (linear, unclamped) when it ends in .exr; written atomically; - for standard "
+                  "output (PNG)")->capture_default_str();
   cmd->add_flag("-q,--quiet", o->quiet, "Do not print the output's path on standard output");
   cmd->add_flag("--force", o->force, "Replace a read-only output file (its permissions are kept)");
   cmd->add_option("--debug-pixel", o->debugPixel, "Print every term of the lighting equation at pixel x,y (0,0 top-left)");

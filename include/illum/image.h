@@ -31,6 +31,11 @@ struct FloatImage {
   const float* pixel(int x, int y) const { return &rgba[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * 4]; }
 };
 
+// Encodes linear values as OpenEXR (32-bit float R, G, B, A, ZIP compression) in memory.
+std::vector<std::uint8_t> encodeExr(const FloatImage& image);
+// Reads an OpenEXR file's R, G, B, A channels (missing ones read as 0). Throws InputError.
+FloatImage readExr(const std::filesystem::path& path);
+
 // Encodes the image as PNG in memory.
 std::vector<std::uint8_t> encodePng(const Image& image);
 // Writes a PNG with writeOutputFile (output_file.h): never a partial or clobbered file.

@@ -15,7 +15,7 @@ namespace {
 TEST(PngIo, EncodeDecodeRoundTripIsExact) {
   std::mt19937 random(7);
   const auto path = std::filesystem::temp_directory_path() / ("illum_png_" + std::to_string(::getpid()) + ".png");
-  for (const auto [w, h] : {std::pair{1, 1}, std::pair{3, 2}, std::pair{257, 31}, std::pair{64, 64}}) {
+  for (const auto& [w, h] : {std::pair{1, 1}, std::pair{3, 2}, std::pair{257, 31}, std::pair{64, 64}}) {
     Image image(w, h);
     for (std::size_t i = 0; i < image.rgba.size(); ++i) image.rgba[i] = std::uint8_t(random() & 0xff);
     writePng(path, image);

@@ -1,0 +1,79 @@
+// OpenEXR output (Debian's libopenexr): linear float channels, unclamped, as the ray and path
+// tracers computed them. Encoded in memory so that writeOutputFile can put it in place safely.
+#include <illum/error.h>
+#include <illum/image.h>
+
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfIO.h>
+#include <ImfInputFile.h>
+#include <ImfOutputFile.h>
+
+#include <cstring>
+#include <exception>
+
+namespace illum {
+namespace {
+
+// An Imf::OStream into a byte vector.
+class MemoryStream final : public Imf::OStream {
+ public:
+  MemoryStream() : Imf::OStream("memory") {}
+  void write(const char c[], int n) override {
+    if (position_ + std::size_t(n) > bytes_.size()) bytes_.resize(position_ + std::size_t(n));
+    std::memcpy(bytes_.data() + position_, c, std::size_t(n));
+    position_ += std::size_t(n);
+  }
+  uint64_t tellp() override { return position_; }
+  void seekp(uint64_t pos) override { position_ = std::size_t(pos); }
+  std::vector<std::uint8_t> take() { return std::move(bytes_); }
+
+ private:
+  std::vector<std::uint8_t> bytes_;
+  std::size_t position_ = 0;
+};
+
+Imf::FrameBuffer frameBuffer(const float* base, int width) {
+  Imf::FrameBuffer fb;
+  const std::size_t pixel = 4 * sizeof(float), row = pixel * std::size_t(width);
+  const char* names[4] = {"R", "G", "B", "A"};
+  for (int c = 0; c < 4; ++c)
+    fb.insert(names[c], Imf::Slice(Imf::FLOAT, const_cast<char*>(reinterpret_cast<const char*>(base + c)), pixel, row));
+  return fb;
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> encodeExr(const FloatImage& image) {
+  Imf::Header header(image.width, image.height);
+  header.compression() = Imf::ZIP_COMPRESSION;
+  for (const char* name : {"R", "G", "B", "A"}) header.channels().insert(name, Imf::Channel(Imf::FLOAT));
+  MemoryStream stream;
+  {
+    Imf::OutputFile file(stream, header);
+    file.setFrameBuffer(frameBuffer(image.rgba.data(), image.width));
+    file.writePixels(image.height);
+  }
+  return stream.take();
+}
+
+FloatImage readExr(const std::filesystem::path& path) {
+  try {
+    Imf::InputFile file(path.c_str());
+    const Imath::Box2i window = file.header().dataWindow();
+    FloatImage image;
+    image.width = window.max.x - window.min.x + 1;
+    image.height = window.max.y - window.min.y + 1;
+    image.rgba.assign(std::size_t(image.width) * std::size_t(image.height) * 4, 0.0f);
+    // The frame buffer is addressed from the data window's origin.
+    const std::ptrdiff_t origin = (std::ptrdiff_t(window.min.y) * image.width + window.min.x) * 4;
+    file.setFrameBuffer(frameBuffer(image.rgba.data() - origin, image.width));
+    file.readPixels(window.min.y, window.max.y);
+    return image;
+  } catch (const std::exception& e) {
+    throw InputError(path.string() + ": cannot read the OpenEXR file: " + e.what());
+  }
+}
+
+}  // namespace illum
