@@ -60,13 +60,17 @@ int runBench(const BenchOptions& o) {
   // The ray tracers' figures: rays of each kind and the primary rays' BVH throughput per core.
   std::string rays;
   if (scene.renderer != RendererKind::Raster) {
-    char buf[400];
+    const double seconds = median(frameMs) / 1000;
+    const double raysPerSecond = double(stats.primaryRays + stats.secondaryRays + stats.shadowRays) / seconds;
+    char buf[600];
     std::snprintf(buf, sizeof buf,
-                  "\"renderer\": \"%s\", \"primary_rays\": %llu, \"secondary_rays\": %llu, \"shadow_rays\": %llu, "
-                  "\"bvh_ms\": %.1f, \"rays_per_second\": %.0f, \"primary_rays_per_core_second\": %.0f, ",
-                  std::string(toString(scene.renderer)).c_str(), (unsigned long long)stats.primaryRays,
-                  (unsigned long long)stats.secondaryRays, (unsigned long long)stats.shadowRays, stats.bvhMs,
-                  double(stats.primaryRays + stats.secondaryRays + stats.shadowRays) / (median(frameMs) / 1000),
+                  "\"renderer\": \"%s\", \"samples\": %d, \"primary_rays\": %llu, \"secondary_rays\": %llu, "
+                  "\"shadow_rays\": %llu, \"bvh_ms\": %.1f, \"rays_per_second\": %.0f, \"mrays_per_second\": %.2f, "
+                  "\"samples_per_second\": %.0f, \"primary_rays_per_core_second\": %.0f, ",
+                  std::string(toString(scene.renderer)).c_str(), samplesPerPixel(scene),
+                  (unsigned long long)stats.primaryRays, (unsigned long long)stats.secondaryRays,
+                  (unsigned long long)stats.shadowRays, stats.bvhMs, raysPerSecond, raysPerSecond / 1e6,
+                  double(stats.primaryRays) / seconds,
                   stats.primaryRaySeconds > 0 ? double(stats.primaryRays) / stats.primaryRaySeconds : 0.0);
     rays = buf;
   }

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -74,10 +75,15 @@ class Renderer {
   void render(const Scene& scene, Image& image, RenderStats* stats = nullptr, PixelProbe* probe = nullptr,
               FloatImage* linear = nullptr);
 
+  // Called with the fraction of the picture done, from the rendering threads (the ray and path
+  // tracers, tile by tile), so that a long render can show its progress.
+  void onProgress(std::function<void(double)> progress) { progress_ = std::move(progress); }
+
   struct State;  // defined by the pipeline
 
  private:
   std::unique_ptr<State> state_;
+  std::function<void(double)> progress_;
 };
 
 // The SIMD instruction set the renderer's kernels run with on this CPU, chosen at run time

@@ -149,7 +149,7 @@ Renderer::~Renderer() = default;
 void Renderer::render(const Scene& scene, Image& image, RenderStats* statsOut, PixelProbe* probe, FloatImage* linear) {
   if (scene.renderer != RendererKind::Raster) {
     RenderStats stats;
-    traceScene(scene, image, stats, probe, linear);
+    traceScene(scene, image, stats, probe, linear, progress_);
     if (statsOut) *statsOut = stats;
     return;
   }

@@ -13,6 +13,7 @@
 #include <tbb/parallel_for.h>
 
 #include <array>
+#include <atomic>
 #include <chrono>
 #include <cstring>
 #include <optional>
@@ -133,7 +134,8 @@ class TracedFrame {
 
 }  // namespace
 
-void traceScene(const Scene& scene, Image& image, RenderStats& stats, PixelProbe* probe, FloatImage* linear) {
+void traceScene(const Scene& scene, Image& image, RenderStats& stats, PixelProbe* probe, FloatImage* linear,
+                const std::function<void(double)>& progress) {
   stats = RenderStats{};
   const auto start = Clock::now();
   const RayScene rays(scene);
@@ -145,9 +147,14 @@ void traceScene(const Scene& scene, Image& image, RenderStats& stats, PixelProbe
   const TracedFrame frame(scene, rays, image, probe, linear);
   const int tilesX = (scene.width + kTile - 1) / kTile, tilesY = (scene.height + kTile - 1) / kTile;
   tbb::combinable<TileCounts> counts;
-  tbb::parallel_for(tbb::blocked_range<int>(0, tilesX * tilesY), [&](const tbb::blocked_range<int>& r) {
+  std::atomic<int> done{0};
+  const int tiles = tilesX * tilesY;
+  tbb::parallel_for(tbb::blocked_range<int>(0, tiles), [&](const tbb::blocked_range<int>& r) {
     TileCounts& local = counts.local();
-    for (int t = r.begin(); t < r.end(); ++t) frame.tile(t % tilesX * kTile, t / tilesX * kTile, local);
+    for (int t = r.begin(); t < r.end(); ++t) {
+      frame.tile(t % tilesX * kTile, t / tilesX * kTile, local);
+      if (progress) progress(double(++done) / tiles);
+    }
   });
   counts.combine_each([&](const TileCounts& c) {
     stats.primaryRays += c.rays.primary;
