@@ -67,6 +67,8 @@ Scene defaultScene(LightingModel model, Shading shading, RendererKind renderer) 
   s.camera.center = {0, 0.1, 0};
   s.camera.fovy = 40;
   s.lightModel.ambient = {0.15, 0.15, 0.17};
+  // What the ambient term stands for, to the path tracer: light arriving from everywhere.
+  s.rayTracing.environment = s.lightModel.ambient;
 
   Light key;  // warm positional key light, upper left front, gently attenuated
   key.position = {-4, 5, 6, 1};
