@@ -3,6 +3,7 @@
 #pragma once
 
 #include <illum/lighting.h>
+#include <illum/environment.h>
 #include <illum/limits.h>
 #include <illum/mesh.h>
 #include <illum/texture.h>
@@ -91,6 +92,8 @@ struct RayTracing {
   bool shadows = true;   // shadow rays towards every light
   std::optional<int> samples;  // rays per pixel: 1 through the centre, more jittered (fixed seeds)
   Color3 environment{0};       // the path tracer: radiance arriving from everywhere rays escape to
+  // ... or from an equirectangular .hdr image, times `environment` (which is then 1 unless given)
+  std::shared_ptr<const EnvironmentMap> environmentMap;
 };
 
 struct Scene;

@@ -357,7 +357,7 @@ Scene parseScene(const std::string& text, const std::string& name, const std::fi
   const JsonReader j(root, name);
   j.expectObject({"version", "width", "height", "background", "model", "shading", "camera",
                   "light_model", "lights", "objects", "labels", "blend", "renderer", "max_depth", "shadows",
-                  "samples", "environment"});
+                  "samples", "environment", "environment_map"});
   Scene s;
   if (j.has("version") && j.at("version").integer(0, std::numeric_limits<int>::max()) != 1)
     j.at("version").fail("expected version 1");
@@ -389,6 +389,15 @@ Scene parseScene(const std::string& text, const std::string& name, const std::fi
   if (j.has("max_depth")) s.rayTracing.maxDepth = j.at("max_depth").integer(0, kMaxRayDepth);
   if (j.has("shadows")) s.rayTracing.shadows = j.at("shadows").boolean();
   if (j.has("samples")) s.rayTracing.samples = j.at("samples").integer(1, kMaxSamples);
+  if (j.has("environment_map")) {
+    const std::filesystem::path file = baseDir / j.at("environment_map").string();
+    try {
+      s.rayTracing.environmentMap = std::make_shared<const EnvironmentMap>(EnvironmentMap::load(file, limits));
+    } catch (const InputError& e) {
+      j.at("environment_map").fail(std::string("expected a readable Radiance .hdr image; ") + e.what());
+    }
+    s.rayTracing.environment = Color3(1);
+  }
   if (j.has("environment")) s.rayTracing.environment = Color3(j.at("environment").intensity34());
   if (j.has("camera")) {
     readCamera(j.at("camera"), s.camera);

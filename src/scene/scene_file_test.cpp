@@ -260,6 +260,9 @@ TEST(SceneRejects, BadRayTracingKeys) {
   EXPECT_EQ(errorOf(R"({"renderer": "pathtracer"})"),
             "scene.json: /renderer: expected \"raster\", \"whitted\", \"hall\" or \"path\", got \"pathtracer\"");
   EXPECT_NE(errorOf(R"({"max_depth": 17})").find("/max_depth"), std::string::npos);
+  EXPECT_NE(errorOf(R"({"environment_map": "no-such-sky.hdr"})").find("/environment_map: expected a readable Radiance .hdr"),
+            std::string::npos);
+  EXPECT_NE(errorOf(R"({"environment": [-1, 0, 0]})").find("/environment"), std::string::npos);
   EXPECT_NE(errorOf(R"({"samples": 0})").find("/samples"), std::string::npos);
   EXPECT_NE(errorOf(R"({"shadows": 1})").find("/shadows"), std::string::npos);
   EXPECT_NE(errorOf(R"({"objects": [{"material": {"ior": 0.5}}]})").find("/objects/0/material/ior"), std::string::npos);

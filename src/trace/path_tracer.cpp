@@ -43,7 +43,14 @@ PointLightAt lightAt(const EyeLight& light, const Vec3& P) {
 
 PathTracer::PathTracer(const Scene& scene, const RayScene& rays) : scene_(scene), rays_(rays), area_(scene, rays) {
   const Mat4 viewFromWorld = scene.camera.viewFromWorld();
+  worldFromView_ = glm::transpose(Mat3(viewFromWorld));  // a rotation: its inverse is its transpose
   for (const Light& l : scene.lights) lights_.push_back(toEyeSpace(l, viewFromWorld));
+}
+
+Color3 PathTracer::environment(const Vec3& eyeDirection) const {
+  const Color3& scale = scene_.rayTracing.environment;
+  if (!scene_.rayTracing.environmentMap) return scale;
+  return scale * scene_.rayTracing.environmentMap->radiance(glm::normalize(worldFromView_ * eyeDirection));
 }
 
 Color4 PathTracer::primary(const Ray& primaryRay, const RayHit* primaryHit, const RayCone& primaryCone,
@@ -168,7 +175,7 @@ Color4 PathTracer::primary(const Ray& primaryRay, const RayHit* primaryHit, cons
     ray.direction = next.direction;
     ++counts.secondary;
     if (!rays_.intersect(ray, hit)) {
-      radiance += beta * scene_.rayTracing.environment;  // nothing samples the environment but BSDFs
+      radiance += beta * environment(ray.direction);  // nothing samples the environment but BSDFs
       break;
     }
   }

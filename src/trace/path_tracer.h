@@ -26,10 +26,14 @@ class PathTracer {
   Color4 primary(const Ray& ray, const RayHit* hit, const RayCone& cone, RayCounts& counts, std::uint64_t seed) const;
 
  private:
+  // The radiance arriving along an escaping ray (eye-space direction).
+  Color3 environment(const Vec3& eyeDirection) const;
+
   const Scene& scene_;
   const RayScene& rays_;
   std::vector<EyeLight> lights_;
   AreaLights area_;
+  Mat3 worldFromView_{1};
 };
 
 }  // namespace illum

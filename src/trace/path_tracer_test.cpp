@@ -9,6 +9,9 @@
 #include <tbb/global_control.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
 
 namespace illum {
 namespace {
@@ -95,6 +98,49 @@ TEST(PathTracer, ALambertianPlaneUnderAUniformSkyHasAlbedoTimesSky) {
       EXPECT_NEAR(linear.pixel(x, y)[1], 0.6 * 1.0, 1e-5);
       EXPECT_NEAR(linear.pixel(x, y)[2], 0.6 * 0.25, 1e-5);
     }
+}
+
+TEST(PathTracer, AnEnvironmentMapLightsWhatSeesItsBrightHalf) {
+  // A Radiance .hdr sky: radiance 2 above the horizon, 0 below (64×32, flat RGBE). A plane facing
+  // up sees the bright half only: radiance = albedo × 2. Facing down it sees nothing.
+  const auto path = std::filesystem::temp_directory_path() / ("illum_sky_" + std::to_string(::getpid()) + ".hdr");
+  {
+    std::ofstream out(path, std::ios::binary);
+    out << "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 32 +X 64\n";
+    for (int y = 0; y < 32; ++y)
+      for (int x = 0; x < 64; ++x) {
+        const unsigned char bright[4] = {128, 128, 128, 130}, dark[4] = {0, 0, 0, 0};  // 128·2^(130−136) = 2
+        out.write(reinterpret_cast<const char*>(y < 16 ? bright : dark), 4);
+      }
+  }
+  for (const bool up : {true, false}) {
+    Scene s = pathScene(8);
+    s.camera.projection = Projection::Orthographic;
+    s.camera.eye = {0, up ? 5.0f : -5.0f, 0};
+    s.camera.up = {0, 0, -1};
+    s.rayTracing.samples = 256;
+    s.rayTracing.environmentMap = std::make_shared<const EnvironmentMap>(EnvironmentMap::load(path, Limits{}));
+    s.rayTracing.environment = Color3(1);
+    Object plane;
+    Mesh m;
+    const Real y = 0;
+    m.positions = {{-50, y, 50}, {50, y, 50}, {50, y, -50}, {-50, y, -50}};
+    if (!up) std::swap(m.positions[1], m.positions[3]);
+    m.normals.assign(4, Vec3(0, up ? 1 : -1, 0));
+    m.indices = {0, 1, 2, 0, 2, 3};
+    plane.mesh = std::make_shared<const Mesh>(m);
+    plane.material = lambertian(0.5f);
+    s.objects.push_back(plane);
+    FloatImage linear;
+    renderScene(s, nullptr, nullptr, &linear);
+    double mean = 0;
+    for (std::size_t i = 0; i < linear.rgba.size(); i += 4) mean += linear.rgba[i];
+    mean /= double(linear.rgba.size() / 4);
+    // The bilinear blend across the horizon dims the lowest directions a little.
+    if (up) EXPECT_NEAR(mean, 0.5 * 2, 0.03);
+    else EXPECT_NEAR(mean, 0, 0.03);
+  }
+  std::filesystem::remove(path);
 }
 
 TEST(PathTracer, OneBounceFromAPointLightIsTheRasterizersLambertImage) {
