@@ -3,6 +3,7 @@
 #include "raster/draw_record.h"
 #include "raster/fragment.h"
 #include "shading/brdf.h"
+#include "trace/optics.h"
 #include "trace/path_bsdf.h"
 #include "trace/sampling.h"
 
@@ -15,6 +16,7 @@ namespace {
 constexpr int kRouletteDepth = 3;  // bounces before Russian roulette may end a path
 
 Real maxComponent(const Color3& c) { return std::max({c.r, c.g, c.b}); }
+Real luminance(const Color3& c) { return Real(0.2126) * c.r + Real(0.7152) * c.g + Real(0.0722) * c.b; }
 
 // A point light's direction, distance and the factor att·spot (GL's, brdf.h) at P.
 struct PointLightAt {
@@ -62,7 +64,8 @@ Color4 PathTracer::primary(const Ray& primaryRay, const RayHit* primaryHit, cons
   Ray ray = primaryRay;
   RayHit hit = *primaryHit;
   RayCone cone = primaryCone;
-  Real bsdfPdf = 0;  // of the direction that led here; 0 after a camera ray
+  Real bsdfPdf = 0;        // of the direction that led here
+  bool lightHitWhole = true;  // after a camera ray or an ideal mirror or refraction, no light sampling competed
   const int maxDepth = scene_.rayTracing.maxDepth;
   for (int depth = 0;; ++depth) {
     const HitPoint h = hitPoint(rays_, ray, hit);
@@ -90,7 +93,7 @@ Color4 PathTracer::primary(const Ray& primaryRay, const RayHit* primaryHit, cons
     // Emitters shine from their front (counter-clockwise) side, as pbrt's area lights do.
     const Color3 emission = h.front ? Color3(material.emission) : Color3(0);
     if (emission != Color3(0)) {
-      if (depth == 0) {
+      if (lightHitWhole) {
         radiance += beta * emission;
       } else {
         const Real cosLight = glm::dot(h.geometricNormal, wo);
@@ -100,6 +103,27 @@ Color4 PathTracer::primary(const Ray& primaryRay, const RayHit* primaryHit, cons
     }
     if (depth >= maxDepth) break;
 
+    // Follows `direction` from here: Russian roulette, then the next hit (or the environment).
+    // Returns false where the path ends.
+    const auto continuePath = [&](const Vec3& direction) {
+      if (depth + 1 >= kRouletteDepth) {
+        const Real survive = std::min(Real(0.95), maxComponent(beta));
+        if (!(rng.uniform() < survive)) return false;
+        beta /= survive;
+      }
+      cone.width += cone.spread * length;
+      cone.differentials = false;
+      ray = Ray{};
+      ray.origin = offsetOrigin(h.position, h.geometricNormal, direction);
+      ray.direction = direction;
+      ++counts.secondary;
+      if (!rays_.intersect(ray, hit)) {
+        radiance += beta * environment(ray.direction);  // nothing samples the environment but BSDFs
+        return false;
+      }
+      return true;
+    };
+
     // Shade on the side the ray came from.
     const Vec3 Ng = glm::dot(h.geometricNormal, wo) > 0 ? h.geometricNormal : -h.geometricNormal;
     Vec3 N = glm::dot(h.normal, Ng) > 0 ? h.normal : -h.normal;
@@ -108,6 +132,36 @@ Color4 PathTracer::primary(const Ray& primaryRay, const RayHit* primaryHit, cons
     if (!(glm::dot(N, wo) > 0)) N = Ng;
     const PathBsdf bsdf(material, model, N);
     const auto leaves = [&](const Vec3& wi) { return glm::dot(wi, N) > 0 && glm::dot(wi, Ng) > 0; };
+
+    // Mirror and glass: the material is k × an ideal mirror (k = k_r) or a smooth dielectric
+    // (k = k_t: Fresnel's F reflected, 1 − F refracted) plus (1 − k) × its BSDF; one of the two is
+    // followed, chosen by k's luminance.
+    const SurfaceOptics& optics = object.optics;
+    const Color3 k = optics.transmits() ? optics.transmissive : optics.reflective;
+    const Real idealChance = std::clamp(luminance(k), Real(0), Real(1));
+    if (idealChance > 0 && rng.uniform() < idealChance) {
+      const Vec3 D = -wo;
+      const Vec3 facing = glm::dot(h.normal, D) < 0 ? h.normal : -h.normal;
+      const Real etaI = h.front ? Real(1) : optics.ior, etaT = h.front ? optics.ior : Real(1);
+      Vec3 direction = reflectDirection(D, facing);
+      bool refracts = false;
+      if (optics.transmits()) {
+        const std::optional<Vec3> refracted = refractDirection(D, facing, etaI, etaT);
+        if (refracted && !(rng.uniform() < fresnelDielectric(-glm::dot(facing, D), etaI, etaT))) {
+          direction = *refracted;
+          refracts = true;
+        }
+      }
+      // Near silhouettes the interpolated normal can send a mirror ray under the facet (or a
+      // refracted one over it): it is turned back across the facet's plane, as the Whitted tracer does.
+      if ((glm::dot(direction, Ng) > 0) == refracts)
+        direction = glm::normalize(direction - 2 * glm::dot(direction, Ng) * Ng);
+      beta *= k / idealChance;
+      lightHitWhole = true;
+      if (!continuePath(direction)) break;
+      continue;
+    }
+    if (idealChance > 0) beta *= (Color3(1) - k) / (1 - idealChance);
 
     // Next-event estimation: every point, spot and directional light (irradiance π·c·att·spot·cos,
     // as the rasterizer's physically based lights), then one point on an emissive surface.
@@ -163,21 +217,8 @@ Color4 PathTracer::primary(const Ray& primaryRay, const RayHit* primaryHit, cons
     if (!(glm::dot(next.direction, Ng) > 0))
       next.direction = glm::normalize(next.direction - 2 * glm::dot(next.direction, Ng) * Ng);
     bsdfPdf = next.pdf;
-    if (depth + 1 >= kRouletteDepth) {
-      const Real survive = std::min(Real(0.95), maxComponent(beta));
-      if (!(rng.uniform() < survive)) break;
-      beta /= survive;
-    }
-    cone.width += cone.spread * length;
-    cone.differentials = false;
-    ray = Ray{};
-    ray.origin = offsetOrigin(h.position, Ng, next.direction);
-    ray.direction = next.direction;
-    ++counts.secondary;
-    if (!rays_.intersect(ray, hit)) {
-      radiance += beta * environment(ray.direction);  // nothing samples the environment but BSDFs
-      break;
-    }
+    lightHitWhole = false;
+    if (!continuePath(next.direction)) break;
   }
   return {radiance, 1};
 }

@@ -77,6 +77,34 @@ TEST(PathTracer, WhiteFurnace) {
   }
 }
 
+TEST(PathTracer, MirrorsAndGlassConserveEnergyInTheFurnace) {
+  // A perfect mirror shows the environment behind the camera exactly; a glass sphere (reflecting F,
+  // refracting 1 − F, at any depth) sends every path out again: 0.5 everywhere, within noise.
+  for (const bool glass : {false, true}) {
+    Scene s = pathScene(32);
+    s.background = {0, 0, 0, 0};
+    s.rayTracing.environment = Color3(0.5f);
+    s.rayTracing.samples = glass ? 128 : 4;
+    s.rayTracing.maxDepth = 16;
+    Object o;
+    o.mesh = std::make_shared<const Mesh>(makeSphere(1, 48, 24));
+    o.material = lambertian(0);
+    if (glass) o.optics.transmissive = Color3(1), o.optics.ior = 1.5f;
+    else o.optics.reflective = Color3(1);
+    s.objects.push_back(o);
+    FloatImage linear;
+    const Image image = renderScene(s, nullptr, nullptr, &linear);
+    const Stats st = over(linear, image);
+    ASSERT_GT(st.count, 250);
+    if (!glass) {
+      EXPECT_NEAR(st.min, 0.5, 1e-5);
+      EXPECT_NEAR(st.max, 0.5, 1e-5);
+    } else {
+      EXPECT_NEAR(st.mean, 0.5, 0.01);
+    }
+  }
+}
+
 TEST(PathTracer, ALambertianPlaneUnderAUniformSkyHasAlbedoTimesSky) {
   Scene s = pathScene(16);
   s.camera.projection = Projection::Orthographic;
