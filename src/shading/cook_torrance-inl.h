@@ -50,12 +50,7 @@ HWY_INLINE void AccumulateCookTorrance(D d, Vec3L<V>& ambientOut, Vec3L<V>& diff
   ambientOut = ambientOut + ambient;
   const auto lit = NoL > zero;
   if constexpr (kRecord) {
-    record->positional = light.isPositional();
-    record->L = Lane0(ls.L);
-    record->distance = hn::GetLane(ls.distance);
-    record->attenuation = hn::GetLane(ls.attenuation);
-    record->spot = hn::GetLane(ls.spot);
-    record->NoL = hn::GetLane(NoL);
+    RecordLightSample(record, light, ls, NoL);
     if (hn::GetLane(scale) != 0) record->terms.ambient = Lane0(ambient);
   } else if (hn::AllFalse(d, hn::And(lit, scale > zero))) {
     return;  // no lane sees this light

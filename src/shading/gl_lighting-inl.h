@@ -81,12 +81,7 @@ HWY_INLINE void AccumulateGlLight(D d, TermsL<V>& terms, const EyeLight& light, 
   const V scale = ls.attenuation * ls.spot;
   const V NoL = Dot(s.N, ls.L);
   if constexpr (kRecord) {
-    record->positional = light.isPositional();
-    record->L = Lane0(ls.L);
-    record->distance = hn::GetLane(ls.distance);
-    record->attenuation = hn::GetLane(ls.attenuation);
-    record->spot = hn::GetLane(ls.spot);
-    record->NoL = hn::GetLane(NoL);
+    RecordLightSample(record, light, ls, NoL);
   } else if (hn::AllTrue(d, scale == hn::Zero(d))) {
     return;  // out of every lane's cone, or attenuated to nothing
   }

@@ -63,6 +63,17 @@ HWY_INLINE LightSample<V> SampleLight(D d, const EyeLight& light, const Vec3L<V>
   return s;
 }
 
+// Records lane 0's light geometry for the reports (LightDetail), as every model does first.
+template <class V>
+HWY_INLINE void RecordLightSample(LightDetail* record, const EyeLight& light, const LightSample<V>& ls, V NoL) {
+  record->positional = light.isPositional();
+  record->L = Lane0(ls.L);
+  record->distance = hn::GetLane(ls.distance);
+  record->attenuation = hn::GetLane(ls.attenuation);
+  record->spot = hn::GetLane(ls.spot);
+  record->NoL = hn::GetLane(NoL);
+}
+
 }  // namespace illum::HWY_NAMESPACE
 HWY_AFTER_NAMESPACE();
 

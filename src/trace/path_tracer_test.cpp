@@ -16,6 +16,15 @@
 namespace illum {
 namespace {
 
+// A quad p0 p1 p2 p3, counter-clockwise seen from its front, with its face normal.
+std::shared_ptr<const Mesh> quad(Vec3 p0, Vec3 p1, Vec3 p2, Vec3 p3) {
+  Mesh m;
+  m.positions = {p0, p1, p2, p3};
+  m.normals.assign(4, glm::normalize(glm::cross(p1 - p0, p2 - p0)));
+  m.indices = {0, 1, 2, 0, 2, 3};
+  return std::make_shared<const Mesh>(std::move(m));
+}
+
 Material lambertian(Real albedo) {
   Material m;
   m.ambient = m.diffuse = Color4(Color3(albedo), 1);
@@ -49,60 +58,53 @@ Stats over(const FloatImage& image, const Image& coverage) {
   return s;
 }
 
+// An object alone in a uniform environment of radiance 0.5, with no lights: what the pixels it
+// covers whole show.
+Stats inTheFurnace(const Object& object, int size, int samples) {
+  Scene s = pathScene(size);
+  s.background = {0, 0, 0, 0};
+  s.rayTracing.environment = Color3(0.5f);
+  s.rayTracing.samples = samples;
+  s.rayTracing.maxDepth = 16;
+  s.objects.push_back(object);
+  FloatImage linear;
+  const Image image = renderScene(s, nullptr, nullptr, &linear);
+  return over(linear, image);
+}
+
 TEST(PathTracer, WhiteFurnace) {
-  // A white Lambertian object in a uniform environment of radiance 0.5 shows 0.5 everywhere: it
-  // reflects all it receives. A sphere reflects every path straight out (no variance at all); a
-  // torus sends some paths around itself several times (Russian roulette keeps it unbiased).
-  for (const bool torus : {false, true}) {
-    Scene s = pathScene(48);
-    s.background = {0, 0, 0, 0};
-    s.rayTracing.environment = Color3(0.5f);
-    s.rayTracing.samples = torus ? 256 : 4;
-    s.rayTracing.maxDepth = 16;
-    Object o;
-    o.mesh = std::make_shared<const Mesh>(torus ? makeTorus(0.4f, 1, 24, 48) : makeSphere(1, 32, 16));
-    o.worldFromObject = glm::rotate(Mat4(1), glm::radians(Real(60)), Vec3(1, 0, 0));
-    o.material = lambertian(1);
-    s.objects.push_back(o);
-    FloatImage linear;
-    const Image image = renderScene(s, nullptr, nullptr, &linear);
-    const Stats st = over(linear, image);
-    ASSERT_GT(st.count, 200);
-    if (!torus) {
-      EXPECT_NEAR(st.min, 0.5, 1e-5);
-      EXPECT_NEAR(st.max, 0.5, 1e-5);
-    } else {
-      EXPECT_NEAR(st.mean, 0.5, 0.01);
-    }
-  }
+  // A white Lambertian object reflects all it receives, so it shows the environment's 0.5
+  // everywhere. A sphere reflects every path straight out (no variance at all); a torus sends some
+  // paths around itself several times (Russian roulette keeps it unbiased).
+  Object o;
+  o.worldFromObject = glm::rotate(Mat4(1), glm::radians(Real(60)), Vec3(1, 0, 0));
+  o.material = lambertian(1);
+  o.mesh = std::make_shared<const Mesh>(makeSphere(1, 32, 16));
+  const Stats sphere = inTheFurnace(o, 48, 4);
+  ASSERT_GT(sphere.count, 200);
+  EXPECT_NEAR(sphere.min, 0.5, 1e-5);
+  EXPECT_NEAR(sphere.max, 0.5, 1e-5);
+  o.mesh = std::make_shared<const Mesh>(makeTorus(0.4f, 1, 24, 48));
+  const Stats torus = inTheFurnace(o, 48, 256);
+  ASSERT_GT(torus.count, 200);
+  EXPECT_NEAR(torus.mean, 0.5, 0.01);
 }
 
 TEST(PathTracer, MirrorsAndGlassConserveEnergyInTheFurnace) {
   // A perfect mirror shows the environment behind the camera exactly; a glass sphere (reflecting F,
   // refracting 1 − F, at any depth) sends every path out again: 0.5 everywhere, within noise.
-  for (const bool glass : {false, true}) {
-    Scene s = pathScene(32);
-    s.background = {0, 0, 0, 0};
-    s.rayTracing.environment = Color3(0.5f);
-    s.rayTracing.samples = glass ? 128 : 4;
-    s.rayTracing.maxDepth = 16;
-    Object o;
-    o.mesh = std::make_shared<const Mesh>(makeSphere(1, 48, 24));
-    o.material = lambertian(0);
-    if (glass) o.optics.transmissive = Color3(1), o.optics.ior = 1.5f;
-    else o.optics.reflective = Color3(1);
-    s.objects.push_back(o);
-    FloatImage linear;
-    const Image image = renderScene(s, nullptr, nullptr, &linear);
-    const Stats st = over(linear, image);
-    ASSERT_GT(st.count, 250);
-    if (!glass) {
-      EXPECT_NEAR(st.min, 0.5, 1e-5);
-      EXPECT_NEAR(st.max, 0.5, 1e-5);
-    } else {
-      EXPECT_NEAR(st.mean, 0.5, 0.01);
-    }
-  }
+  Object o;
+  o.mesh = std::make_shared<const Mesh>(makeSphere(1, 48, 24));
+  o.material = lambertian(0);
+  o.optics.reflective = Color3(1);
+  const Stats mirror = inTheFurnace(o, 32, 4);
+  ASSERT_GT(mirror.count, 250);
+  EXPECT_NEAR(mirror.min, 0.5, 1e-5);
+  EXPECT_NEAR(mirror.max, 0.5, 1e-5);
+  o.optics = SurfaceOptics{};
+  o.optics.transmissive = Color3(1);
+  const Stats glass = inTheFurnace(o, 32, 128);
+  EXPECT_NEAR(glass.mean, 0.5, 0.01);
 }
 
 TEST(PathTracer, ALambertianPlaneUnderAUniformSkyHasAlbedoTimesSky) {
@@ -111,11 +113,7 @@ TEST(PathTracer, ALambertianPlaneUnderAUniformSkyHasAlbedoTimesSky) {
   s.rayTracing.environment = {0.5f, 1.0f, 0.25f};
   s.rayTracing.samples = 8;
   Object plane;
-  Mesh m;
-  m.positions = {{-50, -50, 0}, {50, -50, 0}, {50, 50, 0}, {-50, 50, 0}};
-  m.normals.assign(4, Vec3(0, 0, 1));
-  m.indices = {0, 1, 2, 0, 2, 3};
-  plane.mesh = std::make_shared<const Mesh>(m);
+  plane.mesh = quad({-50, -50, 0}, {50, -50, 0}, {50, 50, 0}, {-50, 50, 0});
   plane.material = lambertian(0.6f);
   s.objects.push_back(plane);
   FloatImage linear;
@@ -150,13 +148,8 @@ TEST(PathTracer, AnEnvironmentMapLightsWhatSeesItsBrightHalf) {
     s.rayTracing.environmentMap = std::make_shared<const EnvironmentMap>(EnvironmentMap::load(path, Limits{}));
     s.rayTracing.environment = Color3(1);
     Object plane;
-    Mesh m;
-    const Real y = 0;
-    m.positions = {{-50, y, 50}, {50, y, 50}, {50, y, -50}, {-50, y, -50}};
-    if (!up) std::swap(m.positions[1], m.positions[3]);
-    m.normals.assign(4, Vec3(0, up ? 1 : -1, 0));
-    m.indices = {0, 1, 2, 0, 2, 3};
-    plane.mesh = std::make_shared<const Mesh>(m);
+    plane.mesh = up ? quad({-50, 0, 50}, {50, 0, 50}, {50, 0, -50}, {-50, 0, -50})
+                    : quad({-50, 0, 50}, {-50, 0, -50}, {50, 0, -50}, {50, 0, 50});
     plane.material = lambertian(0.5f);
     s.objects.push_back(plane);
     FloatImage linear;
@@ -220,11 +213,7 @@ TEST(PathTracer, ErrorFallsAsOneOverTheSquareRootOfSamples) {
   Scene s = pathScene(24);
   s.rayTracing.maxDepth = 4;
   Object floor;
-  Mesh m;
-  m.positions = {{-3, -1, 3}, {3, -1, 3}, {3, -1, -3}, {-3, -1, -3}};
-  m.normals.assign(4, Vec3(0, 1, 0));
-  m.indices = {0, 1, 2, 0, 2, 3};
-  floor.mesh = std::make_shared<const Mesh>(m);
+  floor.mesh = quad({-3, -1, 3}, {3, -1, 3}, {3, -1, -3}, {-3, -1, -3});
   floor.material = lambertian(0.7f);
   s.objects.push_back(floor);
   Object ball;
@@ -232,11 +221,7 @@ TEST(PathTracer, ErrorFallsAsOneOverTheSquareRootOfSamples) {
   ball.material = lambertian(0.5f);
   s.objects.push_back(ball);
   Object lamp;
-  Mesh q;
-  q.positions = {{-1, 2.5f, -1}, {-1, 2.5f, 1}, {1, 2.5f, 1}, {1, 2.5f, -1}};  // facing down
-  q.normals.assign(4, Vec3(0, -1, 0));
-  q.indices = {0, 1, 2, 0, 2, 3};
-  lamp.mesh = std::make_shared<const Mesh>(q);
+  lamp.mesh = quad({-1, 2.5f, -1}, {-1, 2.5f, 1}, {1, 2.5f, 1}, {1, 2.5f, -1});  // facing down
   lamp.material = lambertian(0);
   lamp.material.emission = {1, 1, 1, 1};
   s.objects.push_back(lamp);

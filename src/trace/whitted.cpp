@@ -173,18 +173,20 @@ Color4 WhittedTracer::shade(const Ray& ray, const RayHit& rayHit, const Path& pa
 
   // Mirror and glass: the rays the surface sends on, each weighted by what it carries to the pixel.
   Color3 rgb(color);
-  const auto follow = [&](const Vec3& direction, const Color3& k) -> Color4 {
+  // A ray the surface sends on, weighed `k` in this ray's colour: what it brings back, or nothing
+  // when its weight in the pixel is too small or the primary ray's budget is spent.
+  const auto follow = [&](const Vec3& direction, const Color3& k, bool primary) -> std::optional<Color4> {
     const Color3 weight = path.weight * k;
-    if (maxComponent(weight) < kMinWeight || *path.budget <= 0) return Color4(0);
+    if (maxComponent(weight) < kMinWeight || *path.budget <= 0) return std::nullopt;
     Ray next;
     next.origin = offsetOrigin(h.position, h.geometricNormal, direction);
     next.direction = direction;
     Path nextPath = path;
     nextPath.depth = path.depth + 1;
     nextPath.weight = weight;
-    nextPath.primary = false;
+    nextPath.primary = primary;
     nextPath.cone.width = path.cone.width + path.cone.spread * length;
-    nextPath.cone.differentials = false;
+    nextPath.cone.differentials = primary && path.cone.differentials;  // the camera's next pixels still apply
     return trace(next, nextPath, counts);
   };
   if (path.depth < scene_.rayTracing.maxDepth && (optics.reflects() || optics.transmits())) {
@@ -208,27 +210,17 @@ Color4 WhittedTracer::shade(const Ray& ray, const RayHit& rayHit, const Path& pa
       const Real side = glm::dot(direction, Ng);
       return (side > 0) == above ? direction : glm::normalize(direction - 2 * side * Ng);
     };
-    if (kr != Color3(0)) rgb += kr * Color3(follow(keepSide(reflectDirection(D, N), true), kr));
-    if (kt != Color3(0)) rgb += kt * Color3(follow(keepSide(*refracted, false), kt));
+    const auto add = [&](const Vec3& direction, const Color3& k) {
+      rgb += k * Color3(follow(direction, k, false).value_or(Color4(0)));
+    };
+    if (kr != Color3(0)) add(keepSide(reflectDirection(D, N), true), kr);
+    if (kt != Color3(0)) add(keepSide(*refracted, false), kt);
   }
   Real alpha = color.a;
   // GL blending's counterpart: a translucent surface lets (1 − α) of what lies behind through.
   if (scene_.blend && color.a < 1 && path.depth < kMaxRayDepth) {
-    const Color3 weight = path.weight * (1 - color.a);
-    Color4 behind = Color4(0);
-    if (maxComponent(weight) >= kMinWeight && *path.budget > 0) {
-      Ray next;
-      next.origin = offsetOrigin(h.position, h.geometricNormal, D);
-      next.direction = D;
-      Path nextPath = path;
-      nextPath.depth = path.depth + 1;
-      nextPath.weight = weight;
-      nextPath.cone.width = path.cone.width + path.cone.spread * length;
-      // A primary ray seen through a translucent surface keeps GL's viewer.
-      behind = trace(next, nextPath, counts);
-    } else {
-      behind = scene_.background;
-    }
+    // A primary ray seen through a translucent surface keeps GL's viewer.
+    const Color4 behind = follow(D, Color3(1 - color.a), path.primary).value_or(scene_.background);
     rgb = color.a * rgb + (1 - color.a) * Color3(behind);
     alpha = color.a + behind.a * (1 - color.a);
   }
