@@ -93,7 +93,7 @@ Material readMaterial(const JsonReader& j) {
   if (j.has("emission")) m.emission = j.at("emission").color34();
   // Emitters brighter than white (area lights for the path tracer), like glTF's emissive_strength.
   if (j.has("emission_strength"))
-    m.emission = Color4(Color3(m.emission) * j.at("emission_strength").nonNegative(), m.emission.a);
+    m.emission = Color4(Color3(m.emission) * j.at("emission_strength").number(0, Real(1e6)), m.emission.a);
   if (j.has("model")) {
     const std::string name = j.at("model").string();
     m.model = parseLightingModel(name);

@@ -263,6 +263,8 @@ TEST(SceneRejects, BadRayTracingKeys) {
   EXPECT_NE(errorOf(R"({"environment_map": "no-such-sky.hdr"})").find("/environment_map: expected a readable Radiance .hdr"),
             std::string::npos);
   EXPECT_NE(errorOf(R"({"environment": [-1, 0, 0]})").find("/environment"), std::string::npos);
+  EXPECT_NE(errorOf(R"({"objects": [{"material": {"emission_strength": 1e7}}]})").find("/objects/0/material/emission_strength"),
+            std::string::npos);
   EXPECT_NE(errorOf(R"({"samples": 0})").find("/samples"), std::string::npos);
   EXPECT_NE(errorOf(R"({"shadows": 1})").find("/shadows"), std::string::npos);
   EXPECT_NE(errorOf(R"({"objects": [{"material": {"ior": 0.5}}]})").find("/objects/0/material/ior"), std::string::npos);

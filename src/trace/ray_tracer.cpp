@@ -15,6 +15,7 @@
 #include <array>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <cstring>
 #include <optional>
 
@@ -107,7 +108,9 @@ class TracedFrame {
       Color4& pixel = sum[std::size_t((y - y0) * kTile + (x - x0))];
       if (pathTracer_) {
         // Radiance is averaged as it is: the mean converges to the rendering equation's solution.
-        pixel += pathTracer_->primary(ray, first, cone, counts.rays, sampleSeed(x, y, s, 3));
+        // (A sample that overflowed, say under an emitter of absurd strength, counts as nothing.)
+        const Color4 radiance = pathTracer_->primary(ray, first, cone, counts.rays, sampleSeed(x, y, s, 3));
+        if (std::isfinite(radiance.r + radiance.g + radiance.b + radiance.a)) pixel += radiance;
         continue;
       }
       PixelProbe* probe = probe_ && s == 0 && x == probe_->x && y == probe_->y ? probe_ : nullptr;
