@@ -143,7 +143,9 @@ Color4 WhittedTracer::shade(const Ray& ray, const RayHit& rayHit, const Path& pa
   hall.etaBeyond = h.front ? etaInside : etaOutside;
   hall.transmissionShininess = optics.transmissionShininess.value_or(material.shininess);
   hall.transmits = optics.transmits();
-  const bool hallSurface = hall_ && (optics.reflects() || optics.transmits());
+  // Hall's Fresnel-weighted and transmitted highlights, for the classic models' mirrors and glass
+  // (cook-torrance's own highlight already carries Fresnel's F).
+  const bool hallSurface = hall_ && model != LightingModel::CookTorrance && (optics.reflects() || optics.transmits());
   const ShadowRays shadows(rays_, h, hall_, counts);
   const LightingTerms terms = localTerms(lights_, scene_.lightModel, model, local,
                                          scene_.rayTracing.shadows ? &shadows : nullptr, hallSurface ? &hall : nullptr);
