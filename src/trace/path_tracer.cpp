@@ -13,7 +13,8 @@
 namespace illum {
 namespace {
 
-constexpr int kRouletteDepth = 3;  // bounces before Russian roulette may end a path
+constexpr int kRouletteDepth = 3;       // bounces before Russian roulette may end a path
+constexpr std::size_t kAllLights = 16;  // lights sampled all at once at every bounce
 
 Real maxComponent(const Color3& c) { return std::max({c.r, c.g, c.b}); }
 Real luminance(const Color3& c) { return Real(0.2126) * c.r + Real(0.7152) * c.g + Real(0.0722) * c.b; }
@@ -166,8 +167,16 @@ Color4 PathTracer::primary(const Ray& primaryRay, const RayHit* primaryHit, cons
     // Next-event estimation: every point, spot and directional light (irradiance π·c·att·spot·cos,
     // as the rasterizer's physically based lights), then one point on an emissive surface.
     // Without shadows (a comparison with the local models) nothing, not even the facet, blocks them.
+    // Up to kAllLights lights each get a shadow ray at every bounce; beyond, one chosen uniformly
+    // stands for all n (weighted n), so that a scene of thousands of lights costs no more per path.
     const bool shadows = scene_.rayTracing.shadows;
-    for (const EyeLight& light : lights_) {
+    const std::size_t lightCount = lights_.size();
+    const bool everyLight = lightCount <= kAllLights;
+    const std::size_t firstLight =
+        everyLight ? 0 : std::min(lightCount - 1, std::size_t(rng.uniform() * Real(lightCount)));
+    const Real lightWeight = everyLight ? Real(1) : Real(lightCount);
+    for (std::size_t i = firstLight; i < (everyLight ? lightCount : firstLight + 1); ++i) {
+      const EyeLight& light = lights_[i];
       const PointLightAt at = lightAt(light, h.position);
       if (!(at.factor > 0) || !(shadows ? leaves(at.L) : glm::dot(at.L, N) > 0)) continue;
       const BsdfValue f = bsdf.eval(wo, at.L);
@@ -180,7 +189,7 @@ Color4 PathTracer::primary(const Ray& primaryRay, const RayHit* primaryHit, cons
         ++counts.shadow;
         if (rays_.occluded(shadow)) continue;
       }
-      const Real E = kPiReal * at.factor * glm::dot(N, at.L);
+      const Real E = kPiReal * at.factor * glm::dot(N, at.L) * lightWeight;
       radiance += beta * (f.diffuse * light.diffuse + f.specular * light.specular) * E;
     }
     if (!area_.empty()) {

@@ -207,6 +207,28 @@ TEST(PathTracer, OneBounceFromAPointLightIsTheRasterizersLambertImage) {
   EXPECT_EQ(traced.pixel(0, 0)[3], raster.pixel(0, 0)[3]);
 }
 
+TEST(PathTracer, ManyLightsAreSampledOneAtATimeWithoutBias) {
+  // Beyond 16 lights one light per bounce stands for all: 40 copies of a directional light of
+  // colour c/40 give the picture of the one light c, exactly (every copy gives the same).
+  Scene s = pathScene(32);
+  s.rayTracing.samples = 2;
+  s.rayTracing.maxDepth = 1;
+  Object ball;
+  ball.mesh = std::make_shared<const Mesh>(makeSphere(1, 32, 16));
+  ball.material = lambertian(0.8f);
+  s.objects.push_back(ball);
+  Light light;
+  light.position = {1, 1, 1, 0};
+  light.diffuse = Color3(1);
+  s.lights = {light};
+  FloatImage one, many;
+  renderScene(s, nullptr, nullptr, &one);
+  light.diffuse = Color3(1.0f / 40);
+  s.lights.assign(40, light);
+  renderScene(s, nullptr, nullptr, &many);
+  for (std::size_t i = 0; i < one.rgba.size(); ++i) ASSERT_NEAR(many.rgba[i], one.rgba[i], 1e-5) << i;
+}
+
 TEST(PathTracer, ErrorFallsAsOneOverTheSquareRootOfSamples) {
   // A sphere on a floor lit by an emissive quad: the RMS error against a 4096-sample render
   // halves when the samples quadruple.
