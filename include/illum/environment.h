@@ -21,6 +21,8 @@ class EnvironmentMap {
   // The radiance towards world direction `d` (unit; +Y up): longitude from −Z towards +X across the
   // image's width, latitude from +Y (top row) to −Y (bottom row); bilinear between texels.
   Vec3 radiance(const Vec3& d) const;
+  // The stored texel at column x, row y (row 0 at the top).
+  const Vec3& texel(int x, int y) const { return texels_[std::size_t(y) * std::size_t(width_) + std::size_t(x)]; }
   int width() const { return width_; }
   int height() const { return height_; }
 

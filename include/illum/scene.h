@@ -55,6 +55,20 @@ struct SurfaceOptics {
   bool transmits() const { return transmissive != Color3(0); }
 };
 
+// glTF's other texture maps (§3.9 of the glTF 2.0 spec), read where the mesh has uvs, by per-pixel
+// shading and the ray tracers (flat and Gouraud shading light vertices, which have no texels).
+struct MaterialMaps {
+  // Roughness × G, metallic × B (linear values), for the cook-torrance model.
+  std::shared_ptr<const Texture> metallicRoughness;
+  // A tangent-space normal (RGB = XYZ·0.5 + 0.5, +Y towards the image's top), for every model.
+  std::shared_ptr<const Texture> normal;
+  Real normalScale = 1;  // the map's X and Y are scaled by this (glTF's normalTexture.scale)
+  // The emission colour × RGB, for every model.
+  std::shared_ptr<const Texture> emissive;
+
+  bool any() const { return metallicRoughness || normal || emissive; }
+};
+
 struct Object {
   std::shared_ptr<const Mesh> mesh;
   Mat4 worldFromObject{1};
@@ -64,6 +78,7 @@ struct Object {
   // Where the mesh has vertex colours they replace the material's ambient and diffuse colours
   // (GL_COLOR_MATERIAL with GL_AMBIENT_AND_DIFFUSE).
   SurfaceOptics optics;  // mirror and glass, for the ray tracers
+  MaterialMaps maps;     // glTF's metallic-roughness, normal and emissive textures
 };
 
 // Text drawn over the finished picture, centred on a point of the world or of the image, so that a

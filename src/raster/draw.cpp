@@ -16,12 +16,12 @@ DrawTarget::DrawTarget(const FrameContext& frame, const Scene& scene, Framebuffe
     layouts.push_back(AttributeLayout::forObject(frame, o, probe != nullptr));
     setups.push_back({frame.lights, frame.lightModel, modelOf(o.material, frame.model), o.material});
     colored.push_back(!o.mesh->colors.empty());
-    if (drawnTexture(o)) litFromSurface = false;
+    if (drawnTexture(o) || mapsDrawn(frame, o)) litFromSurface = false;
   }
 }
 
 void recordProbe(const DrawTarget& target, const DrawRecord& record, const std::array<Real, 3>& w, const Color4& lit,
-                 const Vec4* texel, const Color4& c, bool texelIsBaseColor) {
+                 const Vec4* texel, const Color4& c, bool texelIsBaseColor, const MappedSurface* mapped) {
   const Object& object = target.scene.objects[record.object];
   const std::size_t objectIndex = record.object, triangle = record.triangle;
   const TriangleSetup& t = record.setup;
@@ -50,6 +50,7 @@ void recordProbe(const DrawTarget& target, const DrawRecord& record, const std::
     p.material = withVertexColor(object.material, w[0] * v[0].color() + w[1] * v[1].color() + w[2] * v[2].color());
   p.texelIsBaseColor = texelIsBaseColor;
   if (texel && texelIsBaseColor) p.material = withBaseTexel(p.material, *texel);
+  if (mapped) p.material = mapped->material;
   if (target.frame.shading == Shading::Flat) {
     const Real* provoking = record.provoking(l);
     p.eyePosition = Vec3(provoking[0], provoking[1], provoking[2]);
@@ -59,7 +60,7 @@ void recordProbe(const DrawTarget& target, const DrawRecord& record, const std::
     // Where Phong shading lit this pixel (for Gouraud, the point between the vertices).
     const PhongSurface surface = phongSurface(target.frame, false, record, l, w);
     p.eyePosition = surface.position;
-    p.eyeNormal = surface.normal;
+    p.eyeNormal = mapped ? mapped->normal : surface.normal;
   }
 }
 
@@ -76,6 +77,8 @@ void drawPixels(const DrawTarget& target, const DrawRecord& record, const PixelR
   const bool vertexColors = !object.mesh->colors.empty();
   const Texture* texture = kTextured ? object.diffuseTexture.get() : nullptr;
   const bool baseTexture = kTextured && texturesBaseColor(frame, object);
+  const bool mapped = mapsDrawn(frame, object);
+  MappedSurface surface;
   const int probeRow = kProbe ? frame.height - 1 - target.probe->y : -1;  // GL rows run bottom up
   rasterizeTriangle(t, rect, [&](int x, int y, Real l0, Real l1, Real l2) {
     const Real z = l0 * t.z[0] + l1 * t.z[1] + l2 * t.z[2];
@@ -86,6 +89,9 @@ void drawPixels(const DrawTarget& target, const DrawRecord& record, const PixelR
     if constexpr (kTextured) texel = sampleDiffuseTexture(*texture, record, l, l0, l1, l2);
     if constexpr (kShading == Shading::Flat) c = record.flat;
     else if constexpr (kShading == Shading::Gouraud) c = gouraudColor(record, l, perspectiveWeights(t, l0, l1, l2));
+    else if (mapped)
+      c = shadeMappedFragment(frame, surface = mappedSurface(frame, object, record, l, l0, l1, l2,
+                                                             kTextured && baseTexture ? &texel : nullptr));
     else
       c = shadePhongFragment(frame, object.material, vertexColors, record, l, perspectiveWeights(t, l0, l1, l2),
                              kTextured && baseTexture ? &texel : nullptr);
@@ -98,7 +104,7 @@ void drawPixels(const DrawTarget& target, const DrawRecord& record, const PixelR
     if constexpr (kProbe)
       if (y == probeRow && x == target.probe->x)
         recordProbe(target, record, perspectiveWeights(t, l0, l1, l2), lit, kTextured ? &texel : nullptr, c,
-                    baseTexture);
+                    baseTexture, kShading == Shading::Phong && mapped ? &surface : nullptr);
   });
 }
 

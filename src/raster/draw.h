@@ -6,6 +6,7 @@
 #include <illum/render.h>
 
 #include "raster/draw_record.h"
+#include "raster/fragment.h"
 #include "raster/frame_context.h"
 #include "raster/framebuffer.h"
 #include "raster/rasterize.h"
@@ -26,7 +27,7 @@ struct DrawTarget {
   PixelProbe* probe;  // null unless a pixel is watched
   std::vector<AttributeLayout> layouts;  // per object: what its records carry
   // Phong shading lit from the tile's visible surface in SIMD (shade_tile.h): float channels, no
-  // texture in the scene and no watched pixel. Then, per object, its lighting and vertex colours.
+  // texture or map in the scene and no watched pixel. Then, per object, its lighting and vertex colours.
   bool litFromSurface = false;
   std::vector<ShadeSetup> setups;
   std::vector<std::uint8_t> colored;
@@ -40,9 +41,10 @@ void drawRecord(const DrawTarget& target, const DrawRecord& record, const PixelR
 
 // Records the fragment at the watched pixel: where it was lit (weights w), the lit colour, the
 // texel that modulated it or, with texelIsBaseColor, tinted its base colour (null without a
-// texture) and what was written.
+// texture) and what was written; with `mapped`, the material and normal glTF's maps gave the pixel.
 void recordProbe(const DrawTarget& target, const DrawRecord& record, const std::array<Real, 3>& w, const Color4& lit,
-                 const Vec4* texel, const Color4& written, bool texelIsBaseColor = false);
+                 const Vec4* texel, const Color4& written, bool texelIsBaseColor = false,
+                 const MappedSurface* mapped = nullptr);
 
 // Scene order, or with blending the opaque objects first and then the translucent ones from the
 // farthest to the nearest. Ties keep scene order.

@@ -19,7 +19,7 @@ AttributeLayout AttributeLayout::forObject(const FrameContext& frame, const Obje
   if (probe || frame.shading == Shading::Gouraud) l.lit = take(4);
   if (probe || frame.shading == Shading::Phong) l.position = take(3), l.normal = take(3);
   if (probe || (frame.shading == Shading::Phong && colors)) l.color = take(4);
-  if (textured) l.uv = take(2);
+  if (textured || (object.maps.any() && !object.mesh->uvs.empty())) l.uv = take(2);
   return l;
 }
 

@@ -1,5 +1,7 @@
 #include "raster/fragment.h"
 
+#include "shading/material_maps.h"
+
 namespace illum {
 
 PhongSurface phongSurface(const FrameContext& frame, bool vertexColors, const DrawRecord& r, const AttributeLayout& l,
@@ -26,8 +28,7 @@ Color4 shadePhongFragment(const FrameContext& frame, const Material& baseMateria
   return clampedColor(evaluateTerms(frame.lights, frame.lightModel, material, modelOf(material, frame.model), s), material);
 }
 
-Vec4 sampleDiffuseTexture(const Texture& texture, const DrawRecord& r, const AttributeLayout& l, Real l0, Real l1,
-                          Real l2) {
+TexturePoint texturePoint(const DrawRecord& r, const AttributeLayout& l, Real l0, Real l1, Real l2) {
   const TriangleSetup& t = r.setup;
   const Vec2 uv0 = VertexValues{r.vertex(0, l), l}.uv(), uv1 = VertexValues{r.vertex(1, l), l}.uv(),
              uv2 = VertexValues{r.vertex(2, l), l}.uv();
@@ -40,9 +41,42 @@ Vec4 sampleDiffuseTexture(const Texture& texture, const DrawRecord& r, const Att
   const Vec2 uv = uvAt(l0, l1, l2);
   const Vec2 dx = uvAt(l0 + Real(t.edge[0].a) * step, l1 + Real(t.edge[1].a) * step, l2 + Real(t.edge[2].a) * step) - uv;
   const Vec2 dy = uvAt(l0 + Real(t.edge[0].b) * step, l1 + Real(t.edge[1].b) * step, l2 + Real(t.edge[2].b) * step) - uv;
+  return {uv, dx, dy};
+}
+
+Vec4 sampleAt(const Texture& texture, const TexturePoint& p) {
   const Vec2 size(Real(texture.width()), Real(texture.height()));
-  const Real footprint = std::max(glm::length(dx * size), glm::length(dy * size));
-  return texture.sample(uv, footprint);
+  return texture.sample(p.uv, std::max(glm::length(p.dx * size), glm::length(p.dy * size)));
+}
+
+MappedSurface mappedSurface(const FrameContext& frame, const Object& object, const DrawRecord& r,
+                            const AttributeLayout& l, Real l0, Real l1, Real l2, const Vec4* baseTexel) {
+  const bool vertexColors = !object.mesh->colors.empty();
+  const PhongSurface p = phongSurface(frame, vertexColors, r, l, perspectiveWeights(r.setup, l0, l1, l2));
+  Material material = vertexColors ? withVertexColor(object.material, p.color) : object.material;
+  if (baseTexel) material = withBaseTexel(material, *baseTexel);
+  const TexturePoint at = texturePoint(r, l, l0, l1, l2);
+  const MaterialMaps& maps = object.maps;
+  MapTexels texels;
+  if (maps.metallicRoughness) texels.metallicRoughness = sampleAt(*maps.metallicRoughness, at);
+  if (maps.emissive) texels.emissive = sampleAt(*maps.emissive, at);
+  MappedSurface s{p.position, p.normal, withMapTexels(material, texels)};
+  if (maps.normal) {
+    // The map bends the front side's normal; two-sided lighting's back faces take its opposite.
+    const bool back = frame.lightModel.twoSided && !r.setup.frontFacing;
+    const VertexValues v[3] = {{r.vertex(0, l), l}, {r.vertex(1, l), l}, {r.vertex(2, l), l}};
+    const TangentFrame tangents =
+        triangleTangents({v[0].position(), v[1].position(), v[2].position()}, {v[0].uv(), v[1].uv(), v[2].uv()});
+    const Vec3 front = normalFromMap(back ? -p.normal : p.normal, tangents, sampleAt(*maps.normal, at), maps.normalScale);
+    s.normal = back ? -front : front;
+  }
+  return s;
+}
+
+Color4 shadeMappedFragment(const FrameContext& frame, const MappedSurface& s) {
+  const SurfaceGeometry g{s.position, s.normal, viewerDirection(s.position, frame.lightModel.localViewer)};
+  return clampedColor(evaluateTerms(frame.lights, frame.lightModel, s.material, modelOf(s.material, frame.model), g),
+                      s.material);
 }
 
 }  // namespace illum

@@ -48,10 +48,38 @@ inline Material withBaseTexel(const Material& m, const Vec4& texel) {
   return withVertexColor(m, Color4(physicalOf(m).baseColor, m.diffuse.a) * texel);
 }
 
-// The texel that modulates the pixel, trilinearly filtered for the pixel's footprint, which is
-// found by evaluating the perspective-correct uv one pixel to the right and one up.
-Vec4 sampleDiffuseTexture(const Texture& texture, const DrawRecord& r, const AttributeLayout& l, Real l0, Real l1,
-                          Real l2);
+// Where a pixel falls on the textures: its perspective-correct uv, and how much uv changes one
+// pixel to the right and one up (the uv evaluated there), which sets each texture's footprint.
+struct TexturePoint {
+  Vec2 uv, dx, dy;
+};
+TexturePoint texturePoint(const DrawRecord& r, const AttributeLayout& l, Real l0, Real l1, Real l2);
+// A texture's texel at the point, trilinearly filtered for its footprint there.
+Vec4 sampleAt(const Texture& texture, const TexturePoint& p);
+
+// The texel that modulates the pixel (the diffuse or base colour texture).
+inline Vec4 sampleDiffuseTexture(const Texture& texture, const DrawRecord& r, const AttributeLayout& l, Real l0,
+                                 Real l1, Real l2) {
+  return sampleAt(texture, texturePoint(r, l, l0, l1, l2));
+}
+
+// Whether glTF's other maps (metallic-roughness, normal, emissive) shape an object's pixels: with
+// per-pixel shading, where its mesh has uvs.
+inline bool mapsDrawn(const FrameContext& frame, const Object& object) {
+  return object.maps.any() && !object.mesh->uvs.empty() && frame.shading == Shading::Phong;
+}
+
+// A pixel of an object whose maps are drawn, as Phong shading lights it: the interpolated surface
+// with the normal map's normal, and the material with vertex colours, the base colour texel (when
+// given) and the maps' texels applied. Lit one pixel at a time by the one-lane equation, which
+// gives the same bits as the SIMD batches.
+struct MappedSurface {
+  Vec3 position, normal;
+  Material material;
+};
+MappedSurface mappedSurface(const FrameContext& frame, const Object& object, const DrawRecord& r,
+                            const AttributeLayout& l, Real l0, Real l1, Real l2, const Vec4* baseTexel);
+Color4 shadeMappedFragment(const FrameContext& frame, const MappedSurface& surface);
 
 // Gouraud: the vertex colours (lit for the side shown), interpolated.
 inline Color4 gouraudColor(const DrawRecord& r, const AttributeLayout& l, const std::array<Real, 3>& w) {

@@ -23,11 +23,11 @@ VisiblePixel visiblePixel(const TriangleSetup& t, const PixelRect& rect, int ind
 // Writes a coloured pixel: GL_MODULATE by the texel (unless the texel was the base colour), then
 // the framebuffer, then the probe.
 void writePixel(const DrawTarget& target, const DrawRecord& r, const VisiblePixel& p, const Color4& lit,
-                const Vec4* texel, bool texelIsBaseColor = false) {
+                const Vec4* texel, bool texelIsBaseColor = false, const MappedSurface* mapped = nullptr) {
   const Color4 c = texel && !texelIsBaseColor ? lit * *texel : lit;
   target.fb.writeColor(p.x, p.y, c);
   if (target.probe && p.x == target.probe->x && p.y == target.frame.height - 1 - target.probe->y)
-    recordProbe(target, r, perspectiveWeights(r.setup, p.l0, p.l1, p.l2), lit, texel, c, texelIsBaseColor);
+    recordProbe(target, r, perspectiveWeights(r.setup, p.l0, p.l1, p.l2), lit, texel, c, texelIsBaseColor, mapped);
 }
 
 // Flat and Gouraud: the colours were lit at the vertices.
@@ -60,10 +60,11 @@ class PhongBatch {
 
   void add(int index, std::uint32_t slot) {
     const DrawRecord& r = *records_[slot];
-    if (n_ == TileScratch::kBatch || (n_ > 0 && r.object != object_)) flush();
-    object_ = r.object;
     const Object& object = target_.scene.objects[r.object];
     const VisiblePixel p = visiblePixel(r.setup, rect_, index);
+    if (mapsDrawn(target_.frame, object)) return shadeMapped(object, r, p);
+    if (n_ == TileScratch::kBatch || (n_ > 0 && r.object != object_)) flush();
+    object_ = r.object;
     const PhongSurface surface =
         phongSurface(target_.frame, !object.mesh->colors.empty(), r, target_.layout(r),
                      perspectiveWeights(r.setup, p.l0, p.l1, p.l2));
@@ -109,6 +110,18 @@ class PhongBatch {
   }
 
  private:
+  // A pixel whose material or normal comes from glTF's maps: lit on its own (fragment.h).
+  void shadeMapped(const Object& object, const DrawRecord& r, const VisiblePixel& p) {
+    const Texture* texture = drawnTexture(object);
+    const bool baseTexture = texturesBaseColor(target_.frame, object);
+    Vec4 texel(1);
+    if (texture) texel = sampleDiffuseTexture(*texture, r, target_.layout(r), p.l0, p.l1, p.l2);
+    const MappedSurface surface =
+        mappedSurface(target_.frame, object, r, target_.layout(r), p.l0, p.l1, p.l2, baseTexture ? &texel : nullptr);
+    writePixel(target_, r, p, shadeMappedFragment(target_.frame, surface), texture ? &texel : nullptr, baseTexture,
+               &surface);
+  }
+
   const DrawTarget& target_;
   std::span<const DrawRecord* const> records_;
   const PixelRect& rect_;

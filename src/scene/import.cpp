@@ -6,6 +6,7 @@
 #include "scene/texture_lookup.h"
 
 #include <assimp/DefaultLogger.hpp>
+#include <assimp/GltfMaterial.h>
 #include <assimp/Importer.hpp>
 #include <assimp/LogStream.hpp>
 #include <assimp/material.h>
@@ -385,7 +386,11 @@ ImportedModel importModelInProcess(const fs::path& path, const ImportOptions& op
     meshes[i] = std::make_shared<const Mesh>(convertMesh(m, path, options, stl));
   }
   std::vector<Material> materials;
-  std::vector<std::shared_ptr<const Texture>> textures;
+  struct MaterialTextures {
+    std::shared_ptr<const Texture> diffuse;
+    MaterialMaps maps;
+  };
+  std::vector<MaterialTextures> textures;
   std::map<std::string, std::shared_ptr<const Texture>> textureByName;
   // PLY and STL carry no materials, and an OBJ without MTL neither: assimp fills in placeholders
   // (white diffuse, specular and ambient) that would wash the picture out; use illum's neutral one.
@@ -395,15 +400,30 @@ ImportedModel importModelInProcess(const fs::path& path, const ImportOptions& op
     const aiMaterial& am = *scene->mMaterials[i];
     const bool placeholder = !formatHasMaterials || am.GetName() == aiString(AI_DEFAULT_MATERIAL_NAME);
     materials.push_back(placeholder ? defaultModelMaterial() : materialFromFile(readMaterial(am)));
-    aiString name;
-    std::shared_ptr<const Texture> tex;
-    if (am.GetTexture(aiTextureType_BASE_COLOR, 0, &name) == AI_SUCCESS ||
-        am.GetTexture(aiTextureType_DIFFUSE, 0, &name) == AI_SUCCESS) {
-      auto [it, inserted] = textureByName.try_emplace(name.C_Str(), nullptr);
-      if (inserted) it->second = loadTexture(*scene, name.C_Str(), path.parent_path(), model.warnings, path, options.limits);
-      tex = it->second;
+    // The first texture of the first of `types` the material has, each file loaded once.
+    const auto texture = [&](std::initializer_list<aiTextureType> types) -> std::shared_ptr<const Texture> {
+      aiString name;
+      for (aiTextureType type : types) {
+        if (am.GetTexture(type, 0, &name) != AI_SUCCESS) continue;
+        auto [it, inserted] = textureByName.try_emplace(name.C_Str(), nullptr);
+        if (inserted) it->second = loadTexture(*scene, name.C_Str(), path.parent_path(), model.warnings, path, options.limits);
+        return it->second;
+      }
+      return nullptr;
+    };
+    MaterialTextures t;
+    t.diffuse = texture({aiTextureType_BASE_COLOR, aiTextureType_DIFFUSE});
+    if (!placeholder && materials.back().physicallyBased) {
+      // glTF: assimp 5.2 files the metallic-roughness texture under UNKNOWN (GltfMaterial.h).
+      t.maps.metallicRoughness = texture({aiTextureType_UNKNOWN, aiTextureType_METALNESS, aiTextureType_DIFFUSE_ROUGHNESS});
+      t.maps.normal = texture({aiTextureType_NORMALS});
+      float scale = 1;
+      if (t.maps.normal && am.Get(AI_MATKEY_GLTF_TEXTURE_SCALE(aiTextureType_NORMALS, 0), scale) == AI_SUCCESS &&
+          std::isfinite(scale))
+        t.maps.normalScale = std::clamp(Real(scale), Real(-100), Real(100));
+      t.maps.emissive = texture({aiTextureType_EMISSIVE});
     }
-    textures.push_back(tex);
+    textures.push_back(std::move(t));
   }
   model.materialCount = materials.size();
   model.textureCount = std::size_t(std::count_if(textureByName.begin(), textureByName.end(),
@@ -428,7 +448,8 @@ ImportedModel importModelInProcess(const fs::path& path, const ImportOptions& op
       const unsigned mat = scene->mMeshes[mi]->mMaterialIndex;
       if (mat < materials.size()) {
         o.material = materials[mat];
-        o.diffuseTexture = textures[mat];
+        o.diffuseTexture = textures[mat].diffuse;
+        o.maps = textures[mat].maps;
       }
       for (const Vec3& p : o.mesh->positions) {
         const Vec3 w = Vec3(world * Vec4(p, 1));

@@ -141,3 +141,101 @@ TEST(Framing, EveryPointInsideTheView) {
 
 }  // namespace
 }  // namespace illum
+
+namespace illum {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string base64(const std::vector<std::uint8_t>& bytes) {
+  static const char* digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  for (std::size_t i = 0; i < bytes.size(); i += 3) {
+    const std::uint32_t n = std::uint32_t(bytes[i]) << 16 | (i + 1 < bytes.size() ? bytes[i + 1] << 8 : 0) |
+                            (i + 2 < bytes.size() ? bytes[i + 2] : 0);
+    for (int k = 0; k < 4; ++k)
+      out += std::size_t(k) <= (bytes.size() - i) * 4 / 3 ? digits[(n >> (18 - 6 * k)) & 63] : '=';
+  }
+  return out;
+}
+
+// A glTF quad whose material has all of glTF's maps, each a PNG of one colour beside the file.
+fs::path writeMappedQuad(const fs::path& dir) {
+  fs::create_directories(dir);
+  const auto png = [&](const char* name, std::uint8_t r, std::uint8_t g, std::uint8_t b) {
+    Image image(2, 2);
+    for (std::size_t i = 0; i < 4; ++i) image.rgba[4 * i] = r, image.rgba[4 * i + 1] = g, image.rgba[4 * i + 2] = b, image.rgba[4 * i + 3] = 255;
+    writePng(dir / name, image);
+  };
+  png("base.png", 200, 100, 50);
+  png("mr.png", 0, 64, 255);
+  png("normal.png", 128, 128, 255);
+  png("emissive.png", 10, 20, 30);
+  std::vector<std::uint8_t> buffer;
+  const auto put = [&](const auto& values) {
+    const auto* p = reinterpret_cast<const std::uint8_t*>(values.data());
+    buffer.insert(buffer.end(), p, p + values.size() * sizeof(values[0]));
+  };
+  put(std::vector<float>{-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0});   // 48 bytes of positions
+  put(std::vector<float>{0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1});       // 48 of normals
+  put(std::vector<float>{0, 1, 1, 1, 1, 0, 0, 0});                   // 32 of uvs
+  put(std::vector<std::uint16_t>{0, 1, 2, 0, 2, 3});                 // 12 of indices
+  std::ofstream(dir / "quad.gltf") << R"({
+  "asset": {"version": "2.0"},
+  "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1, "TEXCOORD_0": 2}, "indices": 3, "material": 0}]}],
+  "materials": [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}, "metallicRoughnessTexture": {"index": 1},
+                                          "metallicFactor": 1, "roughnessFactor": 0.5},
+                 "normalTexture": {"index": 2, "scale": 0.5}, "emissiveTexture": {"index": 3}, "emissiveFactor": [1, 1, 1]}],
+  "textures": [{"source": 0}, {"source": 1}, {"source": 2}, {"source": 3}],
+  "images": [{"uri": "base.png"}, {"uri": "mr.png"}, {"uri": "normal.png"}, {"uri": "emissive.png"}],
+  "buffers": [{"byteLength": 140, "uri": "data:application/octet-stream;base64,)" + base64(buffer) + R"("}],
+  "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 48}, {"buffer": 0, "byteOffset": 48, "byteLength": 48},
+                  {"buffer": 0, "byteOffset": 96, "byteLength": 32}, {"buffer": 0, "byteOffset": 128, "byteLength": 12}],
+  "accessors": [
+    {"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3", "min": [-1, -1, 0], "max": [1, 1, 0]},
+    {"bufferView": 1, "componentType": 5126, "count": 4, "type": "VEC3"},
+    {"bufferView": 2, "componentType": 5126, "count": 4, "type": "VEC2"},
+    {"bufferView": 3, "componentType": 5123, "count": 6, "type": "SCALAR"}]
+})";
+  return dir / "quad.gltf";
+}
+
+std::array<int, 3> firstTexel(const std::shared_ptr<const Texture>& t) {
+  const Image image = t->baseImage();
+  return {image.rgba[0], image.rgba[1], image.rgba[2]};
+}
+
+TEST(Import, GltfMapsReachTheObjectInProcessAndIsolated) {
+  const fs::path file = writeMappedQuad(fs::temp_directory_path() / "illum_gltf_maps_test");
+  for (bool isolated : {false, true}) {
+    const ImportedModel m = isolated ? importModel(file) : importModelInProcess(file);
+    ASSERT_EQ(m.objects.size(), 1u);
+    const Object& o = m.objects[0];
+    EXPECT_TRUE(m.warnings.empty()) << m.warnings.front();
+    EXPECT_TRUE(o.material.physicallyBased);
+    ASSERT_TRUE(o.diffuseTexture && o.maps.metallicRoughness && o.maps.normal && o.maps.emissive) << isolated;
+    EXPECT_EQ(firstTexel(o.diffuseTexture), (std::array<int, 3>{200, 100, 50}));
+    EXPECT_EQ(firstTexel(o.maps.metallicRoughness), (std::array<int, 3>{0, 64, 255}));
+    EXPECT_EQ(firstTexel(o.maps.normal), (std::array<int, 3>{128, 128, 255}));
+    EXPECT_EQ(firstTexel(o.maps.emissive), (std::array<int, 3>{10, 20, 30}));
+    EXPECT_FLOAT_EQ(o.maps.normalScale, 0.5f);
+    EXPECT_EQ(m.textureCount, 4u);
+  }
+  fs::remove_all(file.parent_path());
+}
+
+// Khronos' clear-coat test asset (assimp-testmodels) names every kind of map: its normal-mapped
+// rows, its roughness-striped coating and its emissive labels all arrive.
+TEST(Import, ClearCoatTestAssetHasItsMaps) {
+  const ImportedModel m = importModel("/usr/share/assimp/models/glTF2/ClearCoat-glTF/ClearCoatTest.gltf");
+  std::size_t normal = 0, mr = 0, emissive = 0;
+  for (const Object& o : m.objects) normal += o.maps.normal != nullptr, mr += o.maps.metallicRoughness != nullptr,
+                                    emissive += o.maps.emissive != nullptr;
+  EXPECT_GE(normal, 4u);
+  EXPECT_GE(mr, 1u);
+  EXPECT_GE(emissive, 1u);
+}
+
+}  // namespace
+}  // namespace illum

@@ -87,9 +87,13 @@ void writeModel(const ImportedModel& model, IsolatedWriter& out) {
   std::vector<const Texture*> textures;
   for (const Object& o : model.objects) {
     if (meshIndex.try_emplace(o.mesh.get(), meshes.size()).second) meshes.push_back(o.mesh.get());
-    if (o.diffuseTexture && textureIndex.try_emplace(o.diffuseTexture.get(), textures.size()).second)
-      textures.push_back(o.diffuseTexture.get());
+    for (const Texture* t : {o.diffuseTexture.get(), o.maps.metallicRoughness.get(), o.maps.normal.get(),
+                             o.maps.emissive.get()})
+      if (t && textureIndex.try_emplace(t, textures.size()).second) textures.push_back(t);
   }
+  const auto textureRef = [&](const std::shared_ptr<const Texture>& t) {
+    return t ? textureIndex.at(t.get()) + 1 : std::uint64_t(0);
+  };
   w.value(std::uint64_t(meshes.size()));
   for (const Mesh* m : meshes) {
     w.vector(m->positions);
@@ -108,7 +112,9 @@ void writeModel(const ImportedModel& model, IsolatedWriter& out) {
   w.value(std::uint64_t(model.objects.size()));
   for (const Object& o : model.objects) {
     w.value(meshIndex.at(o.mesh.get()));
-    w.value(o.diffuseTexture ? textureIndex.at(o.diffuseTexture.get()) + 1 : std::uint64_t(0));
+    for (const auto* t : {&o.diffuseTexture, &o.maps.metallicRoughness, &o.maps.normal, &o.maps.emissive})
+      w.value(textureRef(*t));
+    w.value(o.maps.normalScale);
     w.value(o.worldFromObject);
     w.value(o.material);
   }
@@ -152,10 +158,14 @@ ImportedModel readModel(std::span<const std::uint8_t> bytes) {
   model.objects.resize(r.count(bytes.size()));
   for (Object& o : model.objects) {
     const auto mesh = r.value<std::uint64_t>();
-    const auto texture = r.value<std::uint64_t>();
-    if (mesh >= meshes.size() || texture > textures.size()) Reader::broken();
+    if (mesh >= meshes.size()) Reader::broken();
     o.mesh = meshes[mesh];
-    if (texture) o.diffuseTexture = textures[texture - 1];
+    for (auto* t : {&o.diffuseTexture, &o.maps.metallicRoughness, &o.maps.normal, &o.maps.emissive}) {
+      const auto texture = r.value<std::uint64_t>();
+      if (texture > textures.size()) Reader::broken();
+      if (texture) *t = textures[texture - 1];
+    }
+    o.maps.normalScale = r.value<Real>();
     o.worldFromObject = r.value<Mat4>();
     o.material = r.value<Material>();
   }

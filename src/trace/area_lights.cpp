@@ -6,7 +6,6 @@
 
 namespace illum {
 namespace {
-Real luminance(const Color3& c) { return Real(0.2126) * c.r + Real(0.7152) * c.g + Real(0.0722) * c.b; }
 }  // namespace
 
 AreaLights::AreaLights(const Scene& scene, const RayScene& rays) : rays_(rays) {
@@ -44,6 +43,14 @@ AreaLightSample AreaLights::sample(Real u0, Real u1, Real u2) const {
   out.position = b.x * p0 + b.y * p1 + (1 - b.x - b.y) * p2;
   out.normal = glm::normalize(glm::cross(p1 - p0, p2 - p0));
   out.radiance = Color3(mesh.object->material.emission);
+  // An emissive map scales the emission where the point falls on it (its finest level: a light's
+  // texels are seen from afar only through this one point).
+  const Object& object = *mesh.object;
+  if (object.maps.emissive && !object.mesh->uvs.empty()) {
+    const auto& uvs = object.mesh->uvs;
+    const Vec2 uv = b.x * uvs[indices[3 * t]] + b.y * uvs[indices[3 * t + 1]] + (1 - b.x - b.y) * uvs[indices[3 * t + 2]];
+    out.radiance *= Color3(object.maps.emissive->sampleLevel(uv, 0));
+  }
   out.pdfArea = objectLuminance_[o] / total_;
   return out;
 }

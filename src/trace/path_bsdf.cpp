@@ -8,7 +8,6 @@
 namespace illum {
 namespace {
 
-Real luminance(const Color3& c) { return Real(0.2126) * c.r + Real(0.7152) * c.g + Real(0.0722) * c.b; }
 
 Vec3 reflect(const Vec3& v, const Vec3& n) { return 2 * glm::dot(v, n) * n - v; }  // v about n, both away
 

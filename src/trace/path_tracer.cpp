@@ -17,7 +17,6 @@ constexpr int kRouletteDepth = 3;       // bounces before Russian roulette may e
 constexpr std::size_t kAllLights = 16;  // lights sampled all at once at every bounce
 
 Real maxComponent(const Color3& c) { return std::max({c.r, c.g, c.b}); }
-Real luminance(const Color3& c) { return Real(0.2126) * c.r + Real(0.7152) * c.g + Real(0.0722) * c.b; }
 
 // A point light's direction, distance and the factor att·spot (GL's, brdf.h) at P.
 struct PointLightAt {
@@ -48,6 +47,10 @@ PathTracer::PathTracer(const Scene& scene, const RayScene& rays) : scene_(scene)
   const Mat4 viewFromWorld = scene.camera.viewFromWorld();
   worldFromView_ = glm::transpose(Mat3(viewFromWorld));  // a rotation: its inverse is its transpose
   for (const Light& l : scene.lights) lights_.push_back(toEyeSpace(l, viewFromWorld));
+  if (scene.rayTracing.environmentMap && luminance(scene.rayTracing.environment) > 0) {
+    environmentLight_.emplace(*scene.rayTracing.environmentMap);
+    if (environmentLight_->empty()) environmentLight_.reset();
+  }
 }
 
 Color3 PathTracer::environment(const Vec3& eyeDirection) const {
@@ -69,7 +72,7 @@ Color4 PathTracer::primary(const Ray& primaryRay, const RayHit* primaryHit, cons
   bool lightHitWhole = true;  // after a camera ray or an ideal mirror or refraction, no light sampling competed
   const int maxDepth = scene_.rayTracing.maxDepth;
   for (int depth = 0;; ++depth) {
-    const HitPoint h = hitPoint(rays_, ray, hit);
+    HitPoint h = hitPoint(rays_, ray, hit);
     const Object& object = *h.object;
     const EyeMesh& mesh = rays_.mesh(hit.object);
     const Real length = hit.t * glm::length(ray.direction);
@@ -88,6 +91,7 @@ Color4 PathTracer::primary(const Ray& primaryRay, const RayHit* primaryHit, cons
       if (model == LightingModel::CookTorrance) material = withBaseTexel(material, texel);
       else material.diffuse *= texel;
     }
+    applyMaps(mesh, h, ray, cone, cone.width + cone.spread * length, material);
 
     // Emission: what the camera (or a mirror-like bounce) sees whole, else weighed against the
     // chance that next-event estimation found the same light.
@@ -119,7 +123,12 @@ Color4 PathTracer::primary(const Ray& primaryRay, const RayHit* primaryHit, cons
       ray.direction = direction;
       ++counts.secondary;
       if (!rays_.intersect(ray, hit)) {
-        radiance += beta * environment(ray.direction);  // nothing samples the environment but BSDFs
+        // An environment map is sampled as a light too: weighed against that chance, unless
+        // nothing but this ray could have found it (camera, mirror and glass paths).
+        Real weight = 1;
+        if (environmentLight_ && !lightHitWhole)
+          weight = powerHeuristic(bsdfPdf, environmentLight_->pdf(glm::normalize(worldFromView_ * ray.direction)));
+        radiance += beta * environment(ray.direction) * weight;
         return false;
       }
       return true;
@@ -211,6 +220,26 @@ Color4 PathTracer::primary(const Ray& primaryRay, const RayHit* primaryHit, cons
             const Real lightPdf = s.pdfArea * distance * distance / cosLight;
             const Real weight = powerHeuristic(lightPdf, bsdf.pdf(wo, wi));
             radiance += beta * f.sum() * s.radiance * (glm::dot(N, wi) * weight / lightPdf);
+          }
+        }
+      }
+    }
+
+    if (environmentLight_) {
+      // One direction towards the environment map's bright texels; it counts where nothing is in
+      // the way (the environment lies beyond everything).
+      const EnvironmentSample e = environmentLight_->sample(rng.uniform(), rng.uniform());
+      const Vec3 wi = glm::transpose(worldFromView_) * e.direction;
+      if (e.pdf > 0 && leaves(wi)) {
+        const BsdfValue f = bsdf.eval(wo, wi);
+        if (f.sum() != Color3(0)) {
+          Ray shadow;
+          shadow.origin = offsetOrigin(h.position, Ng, wi);
+          shadow.direction = wi;
+          ++counts.shadow;
+          if (!rays_.occluded(shadow)) {
+            const Real weight = powerHeuristic(e.pdf, bsdf.pdf(wo, wi));
+            radiance += beta * f.sum() * environment(wi) * (glm::dot(N, wi) * weight / e.pdf);
           }
         }
       }

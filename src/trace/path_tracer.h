@@ -1,6 +1,7 @@
 // Kajiya's rendering equation (1986), L_o = L_e + ∫ f L_i cos θ dω, solved by Monte Carlo path
 // tracing on the ray tracers' scene: next-event estimation towards the scene's point, spot and
-// directional lights and its emissive surfaces (multiple importance sampling with the BSDF, Veach's
+// directional lights, its emissive surfaces and an environment map's bright texels (multiple
+// importance sampling with the BSDF, Veach's
 // power heuristic), BSDF importance sampling (GGX visible normals, the classic lobes, cosine),
 // Russian roulette after three bounces, and `environment` radiance where rays escape — what the
 // classic models' ambient term stood for.
@@ -9,10 +10,12 @@
 #include <illum/scene.h>
 
 #include "trace/area_lights.h"
+#include "trace/environment_light.h"
 #include "trace/ray_scene.h"
 #include "trace/surface_hit.h"
 #include "trace/whitted.h"
 
+#include <optional>
 #include <vector>
 
 namespace illum {
@@ -33,6 +36,7 @@ class PathTracer {
   const RayScene& rays_;
   std::vector<EyeLight> lights_;
   AreaLights area_;
+  std::optional<EnvironmentLight> environmentLight_;  // an environment map, sampled as a light
   Mat3 worldFromView_{1};
 };
 

@@ -283,3 +283,53 @@ TEST(PathTracer, TheSameBytesOnEveryThreadCount) {
 
 }  // namespace
 }  // namespace illum
+
+namespace illum {
+namespace {
+
+// A sun of one texel in a black sky lights a plane with little noise at 16 samples, because the
+// environment map is sampled as a light: the mean is the integral of radiance × cos over the sky
+// (by quadrature of the map's own lookups) × albedo/π, and the pixels agree with each other.
+TEST(PathTracer, ASmallSunInTheEnvironmentMapIsSampledAsALight) {
+  const int w = 64, h = 32;
+  std::vector<Vec3> texels(std::size_t(w * h), Vec3(0));
+  texels[std::size_t(6 * w + 40)] = Vec3(400);  // 34° from the zenith
+  const auto map = std::make_shared<const EnvironmentMap>(w, h, texels);
+  double irradiance = 0;  // ∫ L cos θ dω over the upper hemisphere, dω = 2π² sin θ du dv
+  const int nu = 2048, nv = 1024;
+  for (int j = 0; j < nv; ++j) {
+    const double v = 0.5 * (j + 0.5) / nv, theta = v * M_PI;
+    for (int i = 0; i < nu; ++i) {
+      const double phi = ((i + 0.5) / nu - 0.5) * 2 * M_PI;
+      const Vec3 d(Real(std::sin(theta) * std::sin(phi)), Real(std::cos(theta)), Real(-std::sin(theta) * std::cos(phi)));
+      irradiance += double(map->radiance(d).r) * std::cos(theta) * 2 * M_PI * M_PI * std::sin(theta) * (1.0 / nu) * (0.5 / nv);
+    }
+  }
+  const double expected = 0.5 / M_PI * irradiance;
+  ASSERT_GT(expected, 0.1);
+  Scene s = pathScene(8);
+  s.camera.projection = Projection::Orthographic;
+  s.camera.eye = {0, 5, 0};
+  s.camera.up = {0, 0, -1};
+  s.rayTracing.samples = 16;
+  s.rayTracing.maxDepth = 1;
+  s.rayTracing.environmentMap = map;
+  s.rayTracing.environment = Color3(1);
+  Object plane;
+  plane.mesh = quad({-50, 0, 50}, {50, 0, 50}, {50, 0, -50}, {-50, 0, -50});
+  plane.material = lambertian(0.5f);
+  s.objects.push_back(plane);
+  FloatImage linear;
+  renderScene(s, nullptr, nullptr, &linear);
+  double mean = 0, squares = 0;
+  const double n = double(linear.rgba.size() / 4);
+  for (std::size_t i = 0; i < linear.rgba.size(); i += 4) mean += linear.rgba[i], squares += double(linear.rgba[i]) * linear.rgba[i];
+  mean /= n;
+  const double deviation = std::sqrt(std::max(0.0, squares / n - mean * mean));
+  // Measured: 23 % between pixels; BSDF sampling alone gives 220 % and a mean 70 % off.
+  EXPECT_NEAR(mean, expected, 0.05 * expected);
+  EXPECT_LT(deviation, 0.35 * expected);
+}
+
+}  // namespace
+}  // namespace illum

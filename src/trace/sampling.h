@@ -47,6 +47,9 @@ struct Frame {
 
 constexpr Real kPiReal = Real(3.14159265358979323846);
 
+// Relative luminance of linear Rec. 709 RGB: how bright a colour is, for choosing among lights.
+inline Real luminance(const Vec3& c) { return Real(0.2126) * c.r + Real(0.7152) * c.g + Real(0.0722) * c.b; }
+
 // Cosine-weighted direction about +z: pdf = cos θ / π (Malley's method).
 inline Vec3 sampleCosineHemisphere(Real u1, Real u2) {
   const Real r = std::sqrt(u1), phi = 2 * kPiReal * u2;

@@ -1,5 +1,7 @@
 #include "trace/surface_hit.h"
 
+#include "shading/material_maps.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -66,5 +68,20 @@ Vec4 texelAt(const Texture& texture, const EyeMesh& mesh, const HitPoint& h, con
   return texture.sample(uv, coneWidth * std::sqrt(texelArea / worldArea) / cosine);
 }
 
+void applyMaps(const EyeMesh& mesh, HitPoint& h, const Ray& ray, const RayCone& cone, Real coneWidth,
+               Material& material) {
+  const MaterialMaps& maps = mesh.object->maps;
+  if (!maps.any() || mesh.object->mesh->uvs.empty()) return;
+  MapTexels texels;
+  if (maps.metallicRoughness) texels.metallicRoughness = texelAt(*maps.metallicRoughness, mesh, h, ray, cone, coneWidth);
+  if (maps.emissive) texels.emissive = texelAt(*maps.emissive, mesh, h, ray, cone, coneWidth);
+  material = withMapTexels(material, texels);
+  if (!maps.normal) return;
+  const auto& uvs = mesh.object->mesh->uvs;
+  const TangentFrame frame =
+      triangleTangents({mesh.positions[h.index[0]], mesh.positions[h.index[1]], mesh.positions[h.index[2]]},
+                       {uvs[h.index[0]], uvs[h.index[1]], uvs[h.index[2]]});
+  h.normal = normalFromMap(h.normal, frame, texelAt(*maps.normal, mesh, h, ray, cone, coneWidth), maps.normalScale);
+}
 
 }  // namespace illum

@@ -46,4 +46,10 @@ Vec3 offsetOrigin(const Vec3& P, const Vec3& geometricNormal, const Vec3& direct
 Vec4 texelAt(const Texture& texture, const EyeMesh& mesh, const HitPoint& h, const Ray& ray, const RayCone& cone,
              Real coneWidth);
 
+// glTF's maps at a hit (material_maps.h), each texel filtered as texelAt filters: the material's
+// roughness, metallic and emission, and the shading normal `h.normal` bent by the normal map in the
+// triangle's tangent frame. Nothing changes where the object has no maps or its mesh no uvs.
+void applyMaps(const EyeMesh& mesh, HitPoint& h, const Ray& ray, const RayCone& cone, Real coneWidth,
+               Material& material);
+
 }  // namespace illum

@@ -110,7 +110,7 @@ Color4 WhittedTracer::trace(const Ray& ray, const Path& path, RayCounts& counts)
 
 Color4 WhittedTracer::shade(const Ray& ray, const RayHit& rayHit, const Path& path, RayCounts& counts,
                             PixelProbe* probe) const {
-  const HitPoint h = hitPoint(rays_, ray, rayHit);
+  HitPoint h = hitPoint(rays_, ray, rayHit);
   const EyeMesh& mesh = rays_.mesh(rayHit.object);
   const Object& object = *h.object;
   const SurfaceOptics& optics = object.optics;
@@ -131,6 +131,7 @@ Color4 WhittedTracer::shade(const Ray& ray, const RayHit& rayHit, const Path& pa
   Vec4 texel(1);
   if (texture) texel = texelAt(*texture, mesh, h, ray, path.cone, path.cone.width + path.cone.spread * length);
   if (baseTexture) material = withBaseTexel(material, texel);
+  applyMaps(mesh, h, ray, path.cone, path.cone.width + path.cone.spread * length, material);
   LocalSurface local;
   local.material = material;
   local.geometry.position = h.position;
