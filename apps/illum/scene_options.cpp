@@ -217,6 +217,8 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o) {
       ->check(CLI::Range(1, kMaxSamples));
   cmd.add_option("--max-depth", o.maxDepth, "Ray tracers: reflected and refracted bounces followed [5]")
       ->check(CLI::Range(0, kMaxRayDepth));
+  cmd.add_option("--tone-map", o.toneMap, "Radiance above 1: none (clamp; default), reinhard or aces");
+  cmd.add_option("--encoding", o.encoding, "Bytes of the picture: linear (GL's; default) or srgb");
   cmd.add_option("--background-color,--background", o.background, "Background colour R,G,B or #rrggbb");
   cmd.add_flag("--no-background", o.noBackground, "Transparent background (alpha 0)");
   cmd.add_option("--up", o.up, "Model files: the up axis, +Y (default), -Y, +Z, -Z, +X or -X");
@@ -259,6 +261,12 @@ Scene prepareScene(SceneOptions o, double* loadMs) {
     renderer = parseRendererKind(o.renderer);
     if (!renderer) throw InputError("--renderer: expected raster, whitted, hall or path, got \"" + o.renderer + "\"");
   }
+  std::optional<ToneMap> toneMap;
+  std::optional<Encoding> encoding;
+  if (!o.toneMap.empty() && !(toneMap = parseToneMap(o.toneMap)))
+    throw InputError("--tone-map: expected none, reinhard or aces, got \"" + o.toneMap + "\"");
+  if (!o.encoding.empty() && !(encoding = parseEncoding(o.encoding)))
+    throw InputError("--encoding: expected linear or srgb, got \"" + o.encoding + "\"");
   if (!o.shading.empty()) {
     shading = parseShading(o.shading);
     if (!shading) throw InputError("--shading: expected flat, gouraud or phong, got \"" + o.shading + "\"");
@@ -310,6 +318,8 @@ Scene prepareScene(SceneOptions o, double* loadMs) {
   }
   if (shading) scene.shading = *shading;
   if (renderer) scene.renderer = *renderer;
+  if (toneMap) scene.display.toneMap = *toneMap;
+  if (encoding) scene.display.encoding = *encoding;
   if (o.noShadows) scene.rayTracing.shadows = false;
   if (o.samples) scene.rayTracing.samples = *o.samples;
   if (o.maxDepth) scene.rayTracing.maxDepth = *o.maxDepth;

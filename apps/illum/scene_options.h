@@ -20,6 +20,7 @@ struct SceneOptions {
   std::optional<int> width, height;
   std::string resolution;
   std::string model, shading, background;
+  std::string toneMap, encoding;
   std::string renderer;  // raster, whitted or hall
   bool noShadows = false;
   std::optional<int> samples, maxDepth;

@@ -2,6 +2,7 @@
 // Its JSON form, version 1, is documented in docs/scene-format.md.
 #pragma once
 
+#include <illum/display.h>
 #include <illum/lighting.h>
 #include <illum/environment.h>
 #include <illum/limits.h>
@@ -131,6 +132,8 @@ struct Scene {
   // GL_BLEND with glBlendFuncSeparate(SRC_ALPHA, ONE_MINUS_SRC_ALPHA, ONE, ONE_MINUS_SRC_ALPHA):
   // translucent objects are drawn after the opaque ones, farthest first. Off, like GL, by default.
   bool blend = false;
+  // How linear values become bytes (display.h): linear and unmapped by default, as GL writes them.
+  Display display;
 };
 
 // Reads a scene file; relative mesh paths are resolved against the file's folder.

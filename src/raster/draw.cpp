@@ -137,8 +137,13 @@ void drawRecord(const DrawTarget& target, const DrawRecord& record, const PixelR
   }
 }
 
-void finishFrame(const Framebuffer& fb, const Scene& scene, RenderStats& stats, Image& image) {
+void finishFrame(const Framebuffer& fb, const Scene& scene, RenderStats& stats, Image& image, FloatImage* linear) {
   stats.pixelsDrawn = fb.toImage(image, scene.background);
+  if (linear) {
+    *linear = FloatImage{image.width, image.height, std::vector<float>(image.rgba.size())};
+    for (std::size_t i = 0; i < image.rgba.size(); ++i) linear->rgba[i] = float(image.rgba[i]) / 255;
+  }
+  applyDisplay(image, scene.display);
   stats.labelsSkipped = !drawLabels(image, scene);
 }
 

@@ -50,8 +50,10 @@ void recordProbe(const DrawTarget& target, const DrawRecord& record, const std::
 // farthest to the nearest. Ties keep scene order.
 std::vector<const Object*> drawingOrder(const Scene& scene, const FrameContext& frame);
 
-// The finished picture: the framebuffer as an image, the pixels drawn counted (labels aside),
-// then the scene's labels drawn over it.
-void finishFrame(const Framebuffer& fb, const Scene& scene, RenderStats& stats, Image& image);
+// The finished picture: the framebuffer as an image, the pixels drawn counted (labels aside), its
+// linear values copied to `linear` if asked, the scene's display encoding applied, then the
+// scene's labels drawn over it.
+void finishFrame(const Framebuffer& fb, const Scene& scene, RenderStats& stats, Image& image,
+                 FloatImage* linear = nullptr);
 
 }  // namespace illum

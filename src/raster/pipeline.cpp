@@ -160,11 +160,7 @@ void Renderer::render(const Scene& scene, Image& image, RenderStats* statsOut, P
     pass.drawObject(*object, std::uint32_t(object - scene.objects.data()));
   pass.flush();
   RenderStats stats = pass.stats();
-  finishFrame(state_->fb, scene, stats, image);
-  if (linear) {
-    *linear = FloatImage{image.width, image.height, std::vector<float>(image.rgba.size())};
-    for (std::size_t i = 0; i < image.rgba.size(); ++i) linear->rgba[i] = float(image.rgba[i]) / 255;
-  }
+  finishFrame(state_->fb, scene, stats, image, linear);
   if (statsOut) *statsOut = stats;
 }
 

@@ -357,7 +357,7 @@ Scene parseScene(const std::string& text, const std::string& name, const std::fi
   const JsonReader j(root, name);
   j.expectObject({"version", "width", "height", "background", "model", "shading", "camera",
                   "light_model", "lights", "objects", "labels", "blend", "renderer", "max_depth", "shadows",
-                  "samples", "environment", "environment_map"});
+                  "samples", "environment", "environment_map", "tone_map", "encoding"});
   Scene s;
   if (j.has("version") && j.at("version").integer(0, std::numeric_limits<int>::max()) != 1)
     j.at("version").fail("expected version 1");
@@ -385,6 +385,18 @@ Scene parseScene(const std::string& text, const std::string& name, const std::fi
     const auto renderer = parseRendererKind(r);
     if (!renderer) j.at("renderer").fail("expected \"raster\", \"whitted\", \"hall\" or \"path\", got \"" + r + "\"");
     s.renderer = *renderer;
+  }
+  if (j.has("tone_map")) {
+    const std::string t = j.at("tone_map").string();
+    const auto toneMap = parseToneMap(t);
+    if (!toneMap) j.at("tone_map").fail("expected \"none\", \"reinhard\" or \"aces\", got \"" + t + "\"");
+    s.display.toneMap = *toneMap;
+  }
+  if (j.has("encoding")) {
+    const std::string e = j.at("encoding").string();
+    const auto encoding = parseEncoding(e);
+    if (!encoding) j.at("encoding").fail("expected \"linear\" or \"srgb\", got \"" + e + "\"");
+    s.display.encoding = *encoding;
   }
   if (j.has("max_depth")) s.rayTracing.maxDepth = j.at("max_depth").integer(0, kMaxRayDepth);
   if (j.has("shadows")) s.rayTracing.shadows = j.at("shadows").boolean();

@@ -304,3 +304,27 @@ TEST(SceneFile, MissingFileIsAnInputError) {
 
 }  // namespace
 }  // namespace illum
+
+namespace illum {
+namespace {
+
+TEST(SceneFile, ReadsTheDisplayKeys) {
+  EXPECT_TRUE(parseScene("{}", "scene.json", ".").display.identity());  // linear, as GL writes
+  const Scene s = parseScene(R"({"tone_map": "aces", "encoding": "srgb"})", "scene.json", ".");
+  EXPECT_EQ(s.display.toneMap, ToneMap::Aces);
+  EXPECT_EQ(s.display.encoding, Encoding::Srgb);
+  const auto error = [](const std::string& text) -> std::string {
+    try {
+      parseScene(text, "scene.json", ".");
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "(no error)";
+  };
+  EXPECT_EQ(error(R"({"tone_map": "filmic"})"),
+            "scene.json: /tone_map: expected \"none\", \"reinhard\" or \"aces\", got \"filmic\"");
+  EXPECT_EQ(error(R"({"encoding": "gamma"})"), "scene.json: /encoding: expected \"linear\" or \"srgb\", got \"gamma\"");
+}
+
+}  // namespace
+}  // namespace illum

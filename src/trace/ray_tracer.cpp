@@ -67,7 +67,8 @@ class TracedFrame {
       for (int x = x0; x < x1; ++x) {
         const Color4 c = sum[std::size_t((y - y0) * kTile + (x - x0))] / Real(samples);
         std::uint8_t* p = image_.pixel(x, y);
-        for (int k = 0; k < 4; ++k) p[k] = toUnorm8(c[k]);
+        for (int k = 0; k < 3; ++k) p[k] = toUnorm8(displayValue(c[k], scene_.display));
+        p[3] = toUnorm8(c[3]);
         if (linear_)
           for (int k = 0; k < 4; ++k) linear_->pixel(x, y)[k] = float(c[k]);
       }
@@ -168,7 +169,7 @@ void traceScene(const Scene& scene, Image& image, RenderStats& stats, PixelProbe
   // Pixels unlike the background, as the rasterizer counts them.
   Color4 background = glm::clamp(scene.background, Color4(0), Color4(1));
   std::uint8_t bg[4];
-  for (int k = 0; k < 4; ++k) bg[k] = toUnorm8(background[k]);
+  for (int k = 0; k < 4; ++k) bg[k] = toUnorm8(k < 3 ? displayValue(background[k], scene.display) : background[k]);
   for (std::size_t i = 0; i < image.rgba.size(); i += 4)
     if (std::memcmp(&image.rgba[i], bg, 4) != 0) ++stats.pixelsDrawn;
   stats.labelsSkipped = !drawLabels(image, scene);

@@ -1,0 +1,40 @@
+// How linear values become the bytes of a picture: an optional tone map for radiance above 1
+// (Reinhard's x/(1+x), or Narkowicz's fit of the ACES filmic curve), then an encoding, linear (what
+// OpenGL writes without GL_FRAMEBUFFER_SRGB, and what the seeds compute) or sRGB (IEC 61966-2-1, what
+// screens expect). Alpha is never changed.
+#pragma once
+
+#include <illum/image.h>
+#include <illum/real.h>
+
+#include <optional>
+#include <string_view>
+
+namespace illum {
+
+enum class ToneMap { None, Reinhard, Aces };
+enum class Encoding { Linear, Srgb };
+
+std::string_view toString(ToneMap toneMap);
+std::string_view toString(Encoding encoding);
+std::optional<ToneMap> parseToneMap(std::string_view name);
+std::optional<Encoding> parseEncoding(std::string_view name);
+
+struct Display {
+  ToneMap toneMap = ToneMap::None;
+  Encoding encoding = Encoding::Linear;
+  bool identity() const { return toneMap == ToneMap::None && encoding == Encoding::Linear; }
+};
+
+// The tone map alone: none leaves x as it is (clamped later), the others map [0, ∞) into [0, 1).
+Real toneMapped(Real x, ToneMap toneMap);
+// sRGB's transfer function for x in [0, 1]: 12.92·x up to 0.0031308, else 1.055·x^(1/2.4) − 0.055.
+Real srgbEncoded(Real x);
+// The displayed value of a linear colour channel, in [0, 1].
+Real displayValue(Real x, const Display& display);
+
+// Re-encodes an 8-bit image whose RGB bytes are linear values (the rasterizer's framebuffer, which
+// is 8-bit as GL's is) through a table of the 256 displayed values.
+void applyDisplay(Image& image, const Display& display);
+
+}  // namespace illum

@@ -1,0 +1,67 @@
+#include <illum/display.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+
+namespace illum {
+
+std::string_view toString(ToneMap toneMap) {
+  switch (toneMap) {
+    case ToneMap::None: return "none";
+    case ToneMap::Reinhard: return "reinhard";
+    case ToneMap::Aces: return "aces";
+  }
+  return "none";
+}
+
+std::string_view toString(Encoding encoding) { return encoding == Encoding::Srgb ? "srgb" : "linear"; }
+
+std::optional<ToneMap> parseToneMap(std::string_view name) {
+  for (ToneMap t : {ToneMap::None, ToneMap::Reinhard, ToneMap::Aces})
+    if (name == toString(t)) return t;
+  return std::nullopt;
+}
+
+std::optional<Encoding> parseEncoding(std::string_view name) {
+  for (Encoding e : {Encoding::Linear, Encoding::Srgb})
+    if (name == toString(e)) return e;
+  return std::nullopt;
+}
+
+Real toneMapped(Real x, ToneMap toneMap) {
+  if (!(x > 0)) return 0;  // negative and NaN: black
+  switch (toneMap) {
+    case ToneMap::None: return x;
+    case ToneMap::Reinhard: return std::isinf(x) ? Real(1) : x / (1 + x);
+    case ToneMap::Aces: {
+      // Narkowicz (2015), "ACES Filmic Tone Mapping Curve": a rational fit of the RRT + ODT.
+      if (std::isinf(x)) return 1;
+      const Real y = (x * (Real(2.51) * x + Real(0.03))) / (x * (Real(2.43) * x + Real(0.59)) + Real(0.14));
+      return std::clamp(y, Real(0), Real(1));
+    }
+  }
+  return x;
+}
+
+Real srgbEncoded(Real x) {
+  x = std::clamp(x, Real(0), Real(1));
+  return x <= Real(0.0031308) ? Real(12.92) * x : Real(1.055) * std::pow(x, Real(1) / Real(2.4)) - Real(0.055);
+}
+
+Real displayValue(Real x, const Display& display) {
+  const Real mapped = std::clamp(toneMapped(x, display.toneMap), Real(0), Real(1));
+  return display.encoding == Encoding::Srgb ? srgbEncoded(mapped) : mapped;
+}
+
+void applyDisplay(Image& image, const Display& display) {
+  if (display.identity()) return;
+  std::array<std::uint8_t, 256> table;
+  for (int i = 0; i < 256; ++i)
+    table[std::size_t(i)] = std::uint8_t(std::lround(displayValue(Real(i) / 255, display) * 255));
+  for (std::size_t i = 0; i < image.rgba.size(); i += 4)
+    for (std::size_t c = 0; c < 3; ++c) image.rgba[i + c] = table[image.rgba[i + c]];
+}
+
+}  // namespace illum
