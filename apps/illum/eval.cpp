@@ -131,7 +131,7 @@ std::string triple(const Color3& c) { return "[" + number(c.r) + "," + number(c.
 
 int runEval(const EvalOptions& o) {
   const auto model = parseLightingModel(o.model);
-  if (!model) throw InputError("--model: expected blinn-phong, phong, lambert or cook-torrance, got \"" + o.model + "\"");
+  if (!model) throw InputError("--model: expected " + lightingModelNames() + ", got \"" + o.model + "\"");
 
   // Light and material: the scene format's defaults for whatever is not given.
   const Light defaults;
@@ -254,7 +254,7 @@ Command addEvalCommand(CLI::App& app) {
       "    --light-ambient 0.4,0.9,0.2 --light-diffuse 0.3,1,1 --light-specular 1,1,1 \\\n"
       "    --material-ambient 0.9,0.9,0.1 --material-diffuse 0.8,1,0.8 --material-specular 0,1,0.6 --shininess 2\n"
       "Colours are R,G,B or #rrggbb (bytes / 255): material colours in [0,1], light colours ≥ 0.");
-  cmd->add_option("--model", o->model, "Lighting model: blinn-phong, phong, lambert or cook-torrance")->capture_default_str();
+  cmd->add_option("--model", o->model, "Lighting model: " + lightingModelNames())->capture_default_str();
   cmd->add_option("--light-ambient", o->lightAmbient, "Light ambient colour R,G,B [0,0,0]");
   cmd->add_option("--light-diffuse", o->lightDiffuse, "Light diffuse colour R,G,B [1,1,1]");
   cmd->add_option("--light-specular", o->lightSpecular, "Light specular colour R,G,B [1,1,1]");

@@ -67,7 +67,8 @@ Color4 printEquation(const Scene& scene, const Material& material, const Vec3& P
     std::printf("\n");
     row(name + " ambient", d.terms.ambient);
     row(name + " diffuse", d.terms.diffuse);
-    if (model != LightingModel::Lambert) row(name + " specular", d.terms.specular);
+    if (model == LightingModel::BlinnPhong || model == LightingModel::Phong || model == LightingModel::CookTorrance)
+      row(name + " specular", d.terms.specular);
   }
   const Color4 lit = clampedColor(total, material);
   row("total (clamped)", Color3(lit));

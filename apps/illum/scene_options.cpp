@@ -209,7 +209,7 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o) {
   cmd.add_option("--width", o.width, "Image width in pixels")->check(CLI::Range(1, 16384));
   cmd.add_option("--height", o.height, "Image height in pixels")->check(CLI::Range(1, 16384));
   cmd.add_option("--resolution", o.resolution, "Image size W,H (models: 1000,600)");
-  cmd.add_option("--model", o.model, "Lighting model: blinn-phong, phong, lambert or cook-torrance");
+  cmd.add_option("--model", o.model, "Lighting model: " + lightingModelNames());
   cmd.add_option("--shading", o.shading, "Shading frequency: flat, gouraud or phong");
   cmd.add_option("--renderer", o.renderer, "raster (default), whitted (ray tracing, 1980), hall (1983) or path (path tracing, 1986)");
   cmd.add_flag("--no-shadows", o.noShadows, "Ray tracers: no shadow rays");
@@ -254,7 +254,7 @@ Scene prepareScene(SceneOptions o, double* loadMs) {
   std::optional<Shading> shading;
   if (!o.model.empty()) {
     lightingModel = parseLightingModel(o.model);
-    if (!lightingModel) throw InputError("--model: expected blinn-phong, phong, lambert or cook-torrance, got \"" + o.model + "\"");
+    if (!lightingModel) throw InputError("--model: expected " + lightingModelNames() + ", got \"" + o.model + "\"");
   }
   std::optional<RendererKind> renderer;
   if (!o.renderer.empty()) {

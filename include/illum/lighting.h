@@ -5,6 +5,7 @@
 #include <illum/real.h>
 
 #include <span>
+#include <string>
 #include <string_view>
 #include <optional>
 
@@ -14,14 +15,22 @@ using Color3 = Vec3;
 using Color4 = Vec4;
 
 // The specular lobe: blinn-phong (N·H)^n, phong (R·V)^n, none (lambert), or Cook and Torrance's
-// microfacet reflectance D·F·G / (4 N·L N·V) (cook-torrance, physically based).
-enum class LightingModel { BlinnPhong, Phong, Lambert, CookTorrance };
+// microfacet reflectance D·F·G / (4 N·L N·V) (cook-torrance, physically based). And the two
+// models the seeds' history starts with: wylie (Wylie et al. 1967, intensity ∝ 1/d from the light,
+// no angle) and bouknight (Bouknight 1970, ambient + Lambert's cosine law, no attenuation).
+enum class LightingModel { BlinnPhong, Phong, Lambert, CookTorrance, Wylie, Bouknight };
+// Every model, in the order their names are listed.
+inline constexpr LightingModel kLightingModels[] = {LightingModel::BlinnPhong, LightingModel::Phong,
+                                                     LightingModel::Lambert,    LightingModel::CookTorrance,
+                                                     LightingModel::Wylie,      LightingModel::Bouknight};
 // Where the equation is evaluated: once per triangle, per vertex, or per pixel.
 enum class Shading { Flat, Gouraud, Phong };
 
 std::string_view toString(LightingModel model);
 std::string_view toString(Shading shading);
 std::optional<LightingModel> parseLightingModel(std::string_view name);
+// "blinn-phong, phong, ... or bouknight" (each in double quotes with `quoted`), for messages.
+std::string lightingModelNames(bool quoted = false);
 std::optional<Shading> parseShading(std::string_view name);
 
 // glLight parameters with GL's defaults (every light, not only GL_LIGHT0, gets diffuse and

@@ -29,6 +29,8 @@ std::string describe(LightingModel model) {
     case LightingModel::Phong: return "Phong: ambient + diffuse (N·L) + specular (R·V)ⁿ";
     case LightingModel::Lambert: return "Lambert: ambient + diffuse (N·L), no specular";
     case LightingModel::CookTorrance: return "Cook-Torrance: diffuse + D·F·G / (4 (N·L)(N·V))";
+    case LightingModel::Wylie: return "Wylie (1967): intensity ∝ 1/d, no angle";
+    case LightingModel::Bouknight: return "Bouknight (1970): ambient + diffuse (N·L)";
   }
   return "";
 }

@@ -98,7 +98,7 @@ Material readMaterial(const JsonReader& j) {
     const std::string name = j.at("model").string();
     m.model = parseLightingModel(name);
     if (!m.model)
-      j.at("model").fail("expected \"blinn-phong\", \"phong\", \"lambert\" or \"cook-torrance\", got \"" + name + "\"");
+      j.at("model").fail("expected " + lightingModelNames(true) + ", got \"" + name + "\"");
   }
   const bool physical = j.has("base_color") || j.has("metallic") || j.has("roughness") || j.has("f0") ||
                         j.has("distribution");
@@ -371,7 +371,7 @@ Scene parseScene(const std::string& text, const std::string& name, const std::fi
   if (j.has("model")) {
     const std::string m = j.at("model").string();
     const auto model = parseLightingModel(m);
-    if (!model) j.at("model").fail("expected \"blinn-phong\", \"phong\", \"lambert\" or \"cook-torrance\", got \"" + m + "\"");
+    if (!model) j.at("model").fail("expected " + lightingModelNames(true) + ", got \"" + m + "\"");
     s.model = *model;
   }
   if (j.has("shading")) {

@@ -133,7 +133,7 @@ TEST(SceneRejects, WrongTypes) {
   EXPECT_EQ(errorOf(R"({"lights": {}})"), "scene.json: /lights: expected an array, got an object");
   EXPECT_EQ(errorOf(R"([])"), "scene.json: /: expected an object, got an array of 0");
   EXPECT_EQ(errorOf(R"({"model": "gouraud"})"),
-            "scene.json: /model: expected \"blinn-phong\", \"phong\", \"lambert\" or \"cook-torrance\", got \"gouraud\"");
+            "scene.json: /model: expected \"blinn-phong\", \"phong\", \"lambert\", \"cook-torrance\", \"wylie\" or \"bouknight\", got \"gouraud\"");
   EXPECT_EQ(errorOf(R"({"shading": "smooth"})"),
             "scene.json: /shading: expected \"flat\", \"gouraud\" or \"phong\", got \"smooth\"");
 }

@@ -63,12 +63,42 @@ HWY_INLINE Vec3L<V> ToViewer(D d, const Vec3L<V>& P, bool localViewer) {
   return Select(away, -P / hn::IfThenElse(away, len, hn::Set(d, Real(1))), infinite);
 }
 
-// Emission and the light model's global ambient: the terms before any light.
+// Emission and the light model's global ambient: the terms before any light (Wylie's 1967 model
+// has no ambient light).
 template <class D, class V = hn::VFromD<D>>
 HWY_INLINE TermsL<V> TermsWithoutLights(D d, const LightModel& lightModel, const Material& material,
-                                        const MaterialColorsL<V>& colors) {
+                                        const MaterialColorsL<V>& colors, LightingModel model) {
   const Vec3L<V> zero = Broadcast(d, Vec3(0));
-  return {Broadcast(d, Vec3(material.emission)), Mul(Broadcast(d, lightModel.ambient), colors.ambient), zero, zero};
+  const Vec3L<V> ambient = model == LightingModel::Wylie ? zero : Mul(Broadcast(d, lightModel.ambient), colors.ambient);
+  return {Broadcast(d, Vec3(material.emission)), ambient, zero, zero};
+}
+
+// The two models before Gouraud's, one light at a time:
+//   wylie (Wylie, Romney, Evans and Erdahl 1967): d_cm·d_cli / d, the intensity falling as the
+//     inverse of the distance d from a positional light, with no angle (a directional light: d_cm·d_cli);
+//   bouknight (Bouknight 1970): d_cm·d_cli·max(N·L, 0), Lambert's law from a light at infinity
+//     (no attenuation, no spot, no light ambient); the ambient term is the light model's.
+template <bool kRecord, class D, class V = hn::VFromD<D>>
+HWY_INLINE void AccumulateEarlyLight(D d, TermsL<V>& terms, const EyeLight& light, const MaterialColorsL<V>& colors,
+                                     LightingModel model, const SurfaceL<V>& s, LightDetail* record) {
+  const LightSample<V> ls = SampleLight(d, light, s.P, s.N);
+  const V NoL = Dot(s.N, ls.L);
+  if constexpr (kRecord) {
+    RecordLightSample(record, light, ls, NoL);
+    record->attenuation = 1;
+    record->spot = 1;
+  }
+  V factor;
+  if (model == LightingModel::Wylie) {
+    const V one = hn::Set(d, Real(1));
+    factor = light.isPositional() ? one / hn::Max(ls.distance, hn::Set(d, Real(1e-6))) : one;
+    if constexpr (kRecord) record->attenuation = hn::GetLane(factor);
+  } else {
+    factor = Fd_LambertCosine(NoL);
+  }
+  const Vec3L<V> diffuse = Mul(factor * colors.diffuse, Broadcast(d, light.diffuse));
+  if constexpr (kRecord) record->terms = {Vec3(0), Vec3(0), Lane0(diffuse), Vec3(0)};
+  terms.diffuse = terms.diffuse + diffuse;
 }
 
 // One light's bracket, attenuation and spot applied, added to `terms`.
@@ -129,6 +159,8 @@ HWY_INLINE void AccumulateLight(D d, TermsL<V>& terms, const EyeLight& light, co
   if (model == LightingModel::CookTorrance)
     AccumulateCookTorrance<kRecord>(d, terms.ambient, terms.diffuse, terms.specular, light, physical, colors.diffuse,
                                     s.P, s.N, s.toViewer, record);
+  else if (model == LightingModel::Wylie || model == LightingModel::Bouknight)
+    AccumulateEarlyLight<kRecord>(d, terms, light, colors, model, s, record);
   else
     AccumulateGlLight<kRecord>(d, terms, light, material, colors, model, s, record);
 }
@@ -138,7 +170,7 @@ template <class D, class V = hn::VFromD<D>>
 HWY_INLINE TermsL<V> ShadeEquation(D d, std::span<const EyeLight> lights, const LightModel& lightModel,
                                    const Material& material, const MaterialColorsL<V>& colors, LightingModel model,
                                    const SurfaceL<V>& s) {
-  TermsL<V> terms = TermsWithoutLights(d, lightModel, material, colors);
+  TermsL<V> terms = TermsWithoutLights(d, lightModel, material, colors, model);
   const PhysicalMaterial physical = model == LightingModel::CookTorrance ? physicalOf(material) : PhysicalMaterial{};
   for (const EyeLight& light : lights)
     AccumulateLight<false>(d, terms, light, material, physical, colors, model, s, nullptr);

@@ -12,8 +12,21 @@ std::string_view toString(LightingModel model) {
     case LightingModel::Phong: return "phong";
     case LightingModel::Lambert: return "lambert";
     case LightingModel::CookTorrance: return "cook-torrance";
+    case LightingModel::Wylie: return "wylie";
+    case LightingModel::Bouknight: return "bouknight";
   }
   return "?";
+}
+
+std::string lightingModelNames(bool quoted) {
+  std::string list;
+  const std::size_t n = std::size(kLightingModels);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (i > 0) list += i + 1 == n ? " or " : ", ";
+    const std::string name(toString(kLightingModels[i]));
+    list += quoted ? "\"" + name + "\"" : name;
+  }
+  return list;
 }
 
 std::string_view toString(Shading shading) {
@@ -26,10 +39,8 @@ std::string_view toString(Shading shading) {
 }
 
 std::optional<LightingModel> parseLightingModel(std::string_view name) {
-  if (name == "blinn-phong") return LightingModel::BlinnPhong;
-  if (name == "phong") return LightingModel::Phong;
-  if (name == "lambert") return LightingModel::Lambert;
-  if (name == "cook-torrance") return LightingModel::CookTorrance;
+  for (LightingModel m : kLightingModels)
+    if (name == toString(m)) return m;
   return std::nullopt;
 }
 

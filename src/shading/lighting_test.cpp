@@ -279,3 +279,64 @@ TEST(Models, ParseAndName) {
 
 }  // namespace
 }  // namespace illum
+
+namespace illum {
+namespace {
+
+// Wylie et al. (1967): intensity inversely proportional to the distance from the light, whatever
+// the angle; no ambient light, no highlight.
+TEST(Wylie, IntensityFallsAsOneOverDistanceWithNoAngle) {
+  EyeLight light;
+  light.position = {0, 0, 4, 1};  // 4 units in front of the point
+  light.diffuse = Color3(2);
+  light.attenuation = {0, 0, 1};  // GL's attenuation is not Wylie's: ignored
+  Material m;
+  m.diffuse = {0.5f, 0.25f, 1, 1};
+  m.specular = {1, 1, 1, 1};
+  m.shininess = 10;
+  LightModel lm;  // its ambient (0.2) is not Wylie's either
+  for (const Vec3& N : {Vec3(0, 0, 1), glm::normalize(Vec3(1, 0, 1)), Vec3(1, 0, 0)}) {
+    const LightingTerms t = evaluateTerms({&light, 1}, lm, m, LightingModel::Wylie, {Vec3(0), N, Vec3(0, 0, 1)});
+    EXPECT_NEAR(t.diffuse.r, 2 * 0.5 / 4, kTol);
+    EXPECT_NEAR(t.diffuse.g, 2 * 0.25 / 4, kTol);
+    EXPECT_EQ(t.ambient, Color3(0));
+    EXPECT_EQ(t.specular, Color3(0));
+  }
+  // Twice as far, half as bright; a directional light has no distance: full intensity.
+  light.position = {0, 0, 8, 1};
+  EXPECT_NEAR(evaluateTerms({&light, 1}, lm, m, LightingModel::Wylie, {}).diffuse.r, 2 * 0.5 / 8, kTol);
+  light.position = {0, 0, 1, 0};
+  EXPECT_NEAR(evaluateTerms({&light, 1}, lm, m, LightingModel::Wylie, {}).diffuse.r, 1, kTol);
+}
+
+// Bouknight (1970): I = I_a·k_a + I_l·k_d·cos θ, no distance, no spot, no highlight.
+TEST(Bouknight, AmbientPlusLambertWithoutAttenuation) {
+  EyeLight light;
+  light.position = {0, 0, 2, 1};
+  light.attenuation = {0, 0, 1};  // 1/d² under GL; not in 1970
+  light.ambient = Color3(1);      // GL's per-light ambient is not Bouknight's either
+  Material m;
+  m.ambient = {0.4f, 0.4f, 0.4f, 1};
+  m.diffuse = {0.5f, 0.5f, 0.5f, 1};
+  m.specular = {1, 1, 1, 1};
+  m.shininess = 1;
+  LightModel lm;
+  lm.ambient = Color3(0.25f);
+  const LightingTerms t =
+      evaluateTerms({&light, 1}, lm, m, LightingModel::Bouknight, {Vec3(0), dirAt(60), Vec3(0, 0, 1)});
+  EXPECT_NEAR(t.ambient.r, 0.25 * 0.4, kTol);
+  EXPECT_NEAR(t.diffuse.r, 0.5 * 0.5, kTol);  // cos 60°
+  EXPECT_EQ(t.specular, Color3(0));
+  // Facing away: the ambient alone.
+  const LightingTerms away =
+      evaluateTerms({&light, 1}, lm, m, LightingModel::Bouknight, {Vec3(0), Vec3(0, 0, -1), Vec3(0, 0, 1)});
+  EXPECT_EQ(away.diffuse, Color3(0));
+}
+
+TEST(Models, EveryNameParsesBack) {
+  for (LightingModel m : kLightingModels) EXPECT_EQ(parseLightingModel(toString(m)), m);
+  EXPECT_EQ(lightingModelNames(), "blinn-phong, phong, lambert, cook-torrance, wylie or bouknight");
+}
+
+}  // namespace
+}  // namespace illum

@@ -116,8 +116,7 @@ TEST_P(EveryModelAndLight, SimdEqualsOneLaneBitForBit) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Shading, EveryModelAndLight,
-                         testing::Combine(testing::Values(LightingModel::BlinnPhong, LightingModel::Phong,
-                                                          LightingModel::Lambert, LightingModel::CookTorrance),
+                         testing::Combine(testing::ValuesIn(kLightingModels),
                                           testing::Values(0, 1, 2, 3), testing::Bool(), testing::Bool()));
 
 TEST(ShadePoints, EverySimdTargetGivesTheSameBits) {

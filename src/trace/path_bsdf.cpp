@@ -30,7 +30,9 @@ PathBsdf::PathBsdf(const Material& material, LightingModel model, const Vec3& no
     return;
   }
   kd_ = Color3(material.diffuse);
-  if (model != LightingModel::Lambert) ks_ = Color3(material.specular), shininess_ = material.shininess;
+  // Lambert, Wylie and Bouknight have no highlight (the path tracer draws the early two as Lambertian).
+  if (model == LightingModel::BlinnPhong || model == LightingModel::Phong)
+    ks_ = Color3(material.specular), shininess_ = material.shininess;
   const Real d = luminance(kd_), s = luminance(ks_);
   specularChance_ = d + s > 0 ? s / (d + s) : 0;
 }
