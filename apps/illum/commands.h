@@ -12,5 +12,6 @@ using Command = std::function<int()>;
 Command addEvalCommand(CLI::App& app);
 Command addRenderCommand(CLI::App& app);
 Command addBenchCommand(CLI::App& app);
+Command addCompareCommand(CLI::App& app);
 
 }  // namespace illum::cli

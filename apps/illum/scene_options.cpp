@@ -246,7 +246,7 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o) {
   cmd.add_flag("-v,--verbose", o.verbose, "Print model statistics, bounds, times and peak memory on stderr");
 }
 
-Scene prepareScene(SceneOptions o, double* loadMs) {
+Scene prepareScene(SceneOptions o, double* loadMs, ModelCache* cache) {
   const auto start = std::chrono::steady_clock::now();
   rejectConflicts(o);
   if (!o.resolution.empty()) parseResolution(o.resolution, o);
@@ -282,9 +282,9 @@ Scene prepareScene(SceneOptions o, double* loadMs) {
     const int designedWidth = scene.width, designedHeight = scene.height;
     if (o.width) scene.width = *o.width;
     if (o.height) scene.height = *o.height;
-    // The built-in scene's captions are made for its own size: they move and scale with the
-    // picture, and a picture too small to read them (a thumbnail) goes without.
-    if (o.input.empty()) {
+    // Captions are made for the scene's own size: they move and scale with the picture, and a
+    // picture too small to read them (a thumbnail, a comparison sheet's panel) goes without.
+    if (scene.width != designedWidth || scene.height != designedHeight) {
       const Vec2 scale(Real(scene.width) / Real(designedWidth), Real(scene.height) / Real(designedHeight));
       for (Label& label : scene.labels) {
         if (label.pixel) *label.pixel *= scale;
@@ -295,9 +295,16 @@ Scene prepareScene(SceneOptions o, double* loadMs) {
     applyExplicitCamera(o, scene.camera);
     validateCamera(o, scene.camera, Real(scene.width) / Real(scene.height));
   } else {
-    model = importModel(o.input, importOptions(o));
-    for (const std::string& w : model->warnings) std::fprintf(stderr, "illum: warning: %s\n", w.c_str());
-    if (o.verbose) {
+    const std::string key = o.input + "\n" + o.normals + "\n" + (o.creaseAngle ? std::to_string(*o.creaseAngle) : "");
+    const bool cached = cache && cache->count(key);
+    if (cached) {
+      model = *cache->at(key);
+    } else {
+      model = importModel(o.input, importOptions(o));
+      if (cache) cache->emplace(key, std::make_shared<const ImportedModel>(*model));
+      for (const std::string& w : model->warnings) std::fprintf(stderr, "illum: warning: %s\n", w.c_str());
+    }
+    if (o.verbose && !cached) {
       std::fprintf(stderr, "illum: %s: %s vertices, %s triangles, %zu materials, %zu textures\n", o.input.c_str(),
                    withThousands(model->vertexCount).c_str(), withThousands(model->triangleCount).c_str(),
                    model->materialCount, model->textureCount);

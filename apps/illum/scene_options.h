@@ -2,12 +2,14 @@
 // size, lighting model and shading, camera, model-file options, limits), and the scene they make.
 #pragma once
 
+#include <illum/import.h>
 #include <illum/limits.h>
 #include <illum/scene.h>
 
 #include <CLI/CLI.hpp>
 #include <tbb/global_control.h>
 
+#include <map>
 #include <memory>
 
 #include <optional>
@@ -49,9 +51,14 @@ class ThreadLimit {
 
 void addSceneOptions(CLI::App& cmd, SceneOptions& o);
 
+// Model files already imported, by path and import options (normals, crease angle), so that many
+// scenes of one model (a comparison sheet's panels) read it once.
+using ModelCache = std::map<std::string, std::shared_ptr<const ImportedModel>>;
+
 // Loads or builds the scene the options describe, validated (exit-2 errors name the option);
 // warnings go to stderr, and with --verbose the model's statistics. `loadMs` is the time it took.
-Scene prepareScene(SceneOptions o, double* loadMs = nullptr);
+// With a cache, a model file already in it is not read again (nor its warnings printed).
+Scene prepareScene(SceneOptions o, double* loadMs = nullptr, ModelCache* cache = nullptr);
 
 // Peak resident memory of this process, MiB.
 double peakMemoryMiB();

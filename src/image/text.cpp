@@ -78,9 +78,9 @@ void drawRun(Image& img, const Font& f, const std::vector<int>& cps, Real scale,
 
 bool labelFontAvailable() { return labelFont().ok; }
 
-void drawText(Image& image, Real centreX, Real baselineY, const std::string& text, Real pixelHeight, const Vec3& color) {
+Real textWidth(const std::string& text, Real pixelHeight) {
   const Font& f = labelFont();
-  if (!f.ok) return;
+  if (!f.ok) return 0;
   const Real scale = stbtt_ScaleForPixelHeight(&f.info, float(pixelHeight));
   const std::vector<int> cps = decodeUtf8(text);
   Real width = 0;
@@ -90,6 +90,15 @@ void drawText(Image& image, Real centreX, Real baselineY, const std::string& tex
     width += Real(advance) * scale;
     if (i + 1 < cps.size()) width += Real(stbtt_GetCodepointKernAdvance(&f.info, cps[i], cps[i + 1])) * scale;
   }
+  return width;
+}
+
+void drawText(Image& image, Real centreX, Real baselineY, const std::string& text, Real pixelHeight, const Vec3& color) {
+  const Font& f = labelFont();
+  if (!f.ok) return;
+  const Real scale = stbtt_ScaleForPixelHeight(&f.info, float(pixelHeight));
+  const std::vector<int> cps = decodeUtf8(text);
+  const Real width = textWidth(text, pixelHeight);
   const Real x = std::round(centreX - width / 2);
   const int baseline = int(std::lround(double(baselineY)));
   drawRun(image, f, cps, scale, x + 1, baseline + 1, Vec3(0));  // shadow, for legibility on any background

@@ -1,0 +1,152 @@
+// `illum compare [SCENE.json | MODEL] --rows AXIS --cols AXIS [--diff A,B] -o sheet.png`: one
+// picture of a scene under every combination of two settings, labelled; by default lighting
+// models against shading frequencies. With --diff, a panel per row (or column) shows where two of
+// the settings differ, with the figures.
+#include <illum/error.h>
+#include <illum/image.h>
+#include <illum/output_file.h>
+#include <illum/render.h>
+#include <illum/sheet.h>
+
+#include "commands.h"
+#include "scene_options.h"
+#include "sheet_axes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+namespace illum::cli {
+namespace {
+
+struct CompareOptions {
+  SceneOptions scene;
+  std::string rows = "model", cols = "shading", diff;
+  std::string output = "compare.png";
+  bool force = false, quiet = false;
+};
+
+constexpr int kDefaultPanelWidth = 400;
+
+std::string inputName(const SceneOptions& o) {
+  return o.input.empty() ? "the built-in scene" : std::filesystem::path(o.input).filename().string();
+}
+
+std::string figures(const DifferencePanel& d) {
+  char text[96];
+  if (std::isinf(d.psnr)) std::snprintf(text, sizeof text, "identical");
+  else std::snprintf(text, sizeof text, "max %d/255 · PSNR %.1f dB", d.maxError, d.psnr);
+  return text;
+}
+
+int runCompare(const CompareOptions& o) {
+  const ThreadLimit limit(o.scene);
+  ModelCache cache;
+  SceneOptions base = o.scene;
+  // The panels' size: as asked, else the scene's (a model's 1000×600) scaled to 400 pixels wide.
+  const bool sized = base.width || base.height || !base.resolution.empty();
+  const Scene first = prepareScene(base, nullptr, &cache);
+  if (!sized) {
+    const int w = std::min(first.width, kDefaultPanelWidth);
+    base.width = w;
+    base.height = std::max(1, int(std::lround(double(first.height) * w / first.width)));
+  }
+  const SheetAxis rows = parseSheetAxis("--rows", o.rows, first.lights.size());
+  const SheetAxis cols = parseSheetAxis("--cols", o.cols, first.lights.size());
+  if (rows.name == cols.name) throw InputError("--rows and --cols: expected two different axes, got " + rows.name + " twice");
+  if (rows.values.size() * cols.values.size() > 64)
+    throw InputError("--rows and --cols: at most 64 panels, got " + std::to_string(rows.values.size()) + " × " +
+                     std::to_string(cols.values.size()));
+
+  // --diff A,B: two values of one axis, compared in a panel per row (or column).
+  std::optional<std::pair<std::size_t, std::size_t>> diffCols, diffRows;
+  if (!o.diff.empty()) {
+    const auto comma = o.diff.find(',');
+    const std::string a = o.diff.substr(0, comma), b = comma == std::string::npos ? "" : o.diff.substr(comma + 1);
+    const auto find = [](const SheetAxis& axis, const std::string& v) {
+      return std::size_t(std::find(axis.values.begin(), axis.values.end(), v) - axis.values.begin());
+    };
+    if (find(cols, a) < cols.values.size() && find(cols, b) < cols.values.size() && a != b)
+      diffCols = {find(cols, a), find(cols, b)};
+    else if (find(rows, a) < rows.values.size() && find(rows, b) < rows.values.size() && a != b)
+      diffRows = {find(rows, a), find(rows, b)};
+    else
+      throw InputError("--diff: expected two different values of the rows' or the columns' axis, A,B, got \"" + o.diff + "\"");
+  }
+
+  Sheet sheet;
+  sheet.title = inputName(o.scene) + " · rows: " + rows.name + " · columns: " + cols.name;
+  sheet.corner = rows.name + " \\ " + cols.name;
+  sheet.rowLabels = rows.values;
+  sheet.columnLabels = cols.values;
+  Renderer renderer;
+  std::vector<std::vector<Image>> images(rows.values.size());
+  for (std::size_t r = 0; r < rows.values.size(); ++r)
+    for (std::size_t c = 0; c < cols.values.size(); ++c) {
+      SceneOptions cell = base;
+      applyToOptions(rows, rows.values[r], cell);
+      applyToOptions(cols, cols.values[c], cell);
+      cell.verbose = false;
+      Scene scene = prepareScene(cell, nullptr, &cache);
+      applyToScene(rows, rows.values[r], scene);
+      applyToScene(cols, cols.values[c], scene);
+      Image image;
+      renderer.render(scene, image);
+      images[r].push_back(std::move(image));
+    }
+  for (std::size_t r = 0; r < rows.values.size(); ++r) {
+    sheet.panels.emplace_back();
+    for (std::size_t c = 0; c < cols.values.size(); ++c) sheet.panels.back().push_back({images[r][c], ""});
+    if (diffCols) {
+      const DifferencePanel d = differencePanel(images[r][diffCols->first], images[r][diffCols->second]);
+      sheet.panels.back().push_back({d.image, figures(d)});
+    }
+  }
+  if (diffCols) sheet.columnLabels.push_back(cols.values[diffCols->first] + " vs " + cols.values[diffCols->second]);
+  if (diffRows) {
+    sheet.panels.emplace_back();
+    for (std::size_t c = 0; c < cols.values.size(); ++c) {
+      const DifferencePanel d = differencePanel(images[diffRows->first][c], images[diffRows->second][c]);
+      sheet.panels.back().push_back({d.image, figures(d)});
+    }
+    sheet.rowLabels.push_back(rows.values[diffRows->first] + " vs " + rows.values[diffRows->second]);
+  }
+
+  const Image out = composeSheet(sheet);
+  if (o.scene.verbose) {
+    const SheetLayout layout = layoutSheet(sheet);
+    for (std::size_t r = 0; r < sheet.panels.size(); ++r)
+      for (std::size_t c = 0; c < sheet.panels[r].size(); ++c)
+        std::fprintf(stderr, "illum: panel %zu,%zu (%s / %s) at %d,%d, %dx%d\n", r, c, sheet.rowLabels[r].c_str(),
+                     sheet.columnLabels[c].c_str(), layout.panelOrigin[r][c].first, layout.panelOrigin[r][c].second,
+                     sheet.panels[r][c].image.width, sheet.panels[r][c].image.height);
+  }
+  writeOutputFile(o.output, encodePng(out), OutputOptions{o.force});
+  if (!o.quiet) std::printf("%s\n", o.output.c_str());
+  return 0;
+}
+
+}  // namespace
+
+Command addCompareCommand(CLI::App& app) {
+  auto o = std::make_shared<CompareOptions>();
+  CLI::App* cmd = app.add_subcommand("compare", "Render a scene under two axes of settings into one labelled sheet");
+  cmd->footer(
+      "An axis is NAME or NAME=v1,v2,... (';' between values that hold commas):\n"
+      "  model, shading, renderer, samples, max-depth, tone-map, encoding, normals, crease-angle,\n"
+      "  azimuth, elevation, zoom, light-intensity, view-angle (as render's options),\n"
+      "  shininess, light-count, material.KEY, light.N.KEY (as the scene file's keys).\n"
+      "Example: illum compare --rows model=phong,blinn-phong --cols shininess=1,8,32,128 -o s.png");
+  addSceneOptions(*cmd, o->scene);
+  cmd->add_option("--rows", o->rows, "The axis down the sheet")->capture_default_str();
+  cmd->add_option("--cols", o->cols, "The axis across the sheet")->capture_default_str();
+  cmd->add_option("--diff", o->diff, "A,B: add panels showing where values A and B of one axis differ (max, PSNR)");
+  cmd->add_option("-o,--output", o->output, "Output PNG, written atomically")->capture_default_str();
+  cmd->add_flag("-q,--quiet", o->quiet, "Do not print the output's path on standard output");
+  cmd->add_flag("--force", o->force, "Replace a read-only output file (its permissions are kept)");
+  return [o] { return runCompare(*o); };
+}
+
+}  // namespace illum::cli

@@ -1,0 +1,154 @@
+// Comparison sheets as a user makes them: `illum compare` and `illum history`. Every panel is the
+// picture `illum render` makes with the same settings, byte for byte; every row and column is
+// labelled; bad axes are refused before anything is rendered.
+#include "cli_support.h"
+
+#include <illum/image.h>
+
+#include <gtest/gtest.h>
+
+#include <regex>
+#include <sstream>
+
+namespace {
+
+namespace fs = std::filesystem;
+using illum::Image;
+using illum::test::RunResult;
+using illum::test::TempDir;
+
+RunResult run(const std::string& args) { return illum::test::runIllum(args); }
+
+struct Panel {
+  int row, col, x, y, width, height;
+  std::string rowLabel, colLabel;
+};
+
+// The panels `-v` lists: "illum: panel R,C (ROW / COL) at X,Y, WxH".
+std::vector<Panel> panels(const std::string& err) {
+  std::vector<Panel> out;
+  const std::regex line(R"(illum: panel (\d+),(\d+) \((.*) / (.*)\) at (\d+),(\d+), (\d+)x(\d+))");
+  std::istringstream in(err);
+  for (std::string s; std::getline(in, s);) {
+    std::smatch m;
+    if (std::regex_match(s, m, line))
+      out.push_back({std::stoi(m[1]), std::stoi(m[2]), std::stoi(m[5]), std::stoi(m[6]), std::stoi(m[7]), std::stoi(m[8]),
+                     m[3], m[4]});
+  }
+  return out;
+}
+
+Image crop(const Image& sheet, const Panel& p) {
+  Image out(p.width, p.height);
+  for (int y = 0; y < p.height; ++y)
+    std::copy_n(sheet.pixel(p.x, p.y + y), std::size_t(p.width) * 4, out.pixel(0, y));
+  return out;
+}
+
+// Pixels unlike the sheet's paper in a rectangle: text was drawn there.
+int inkIn(const Image& sheet, int x0, int y0, int x1, int y1) {
+  int ink = 0;
+  for (int y = std::max(0, y0); y < std::min(sheet.height, y1); ++y)
+    for (int x = std::max(0, x0); x < std::min(sheet.width, x1); ++x) ink += sheet.pixel(x, y)[0] > 120;
+  return ink;
+}
+
+TEST(CliCompare, DefaultSheetIsModelsByShadingAndEveryPanelIsTheSingleRender) {
+  TempDir dir;
+  const RunResult r = run("compare --resolution 160,90 -v -o " + (dir / "sheet.png").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const Image sheet = illum::readPng(dir / "sheet.png");
+  const std::vector<Panel> ps = panels(r.err);
+  ASSERT_EQ(ps.size(), 12u);  // lambert, phong, blinn-phong, cook-torrance × flat, gouraud, phong
+  EXPECT_EQ(ps[0].rowLabel, "lambert");
+  EXPECT_EQ(ps[11].rowLabel, "cook-torrance");
+  EXPECT_EQ(ps[11].colLabel, "phong");
+  for (const Panel& p : ps) {
+    ASSERT_EQ(p.width, 160);
+    ASSERT_EQ(p.height, 90);
+    const fs::path single = dir / "single.png";
+    const RunResult one = run("render --resolution 160,90 --model " + p.rowLabel + " --shading " + p.colLabel + " -o " +
+                              single.string());
+    ASSERT_EQ(one.exitCode, 0) << one.err;
+    EXPECT_EQ(crop(sheet, p).rgba, illum::readPng(single).rgba) << p.rowLabel << " / " << p.colLabel;
+    // A label left of every row and over every column.
+    if (p.col == 0) EXPECT_GT(inkIn(sheet, 0, p.y, p.x, p.y + p.height), 20) << p.rowLabel;
+    if (p.row == 0) EXPECT_GT(inkIn(sheet, p.x, p.y - 26, p.x + p.width, p.y), 20) << p.colLabel;
+  }
+  // The grid's size: the panels and their gaps inside the margins, the labels' column and row.
+  EXPECT_GE(sheet.width, 3 * 160 + 2 * 10);
+  EXPECT_GE(sheet.height, 4 * 90 + 3 * 10);
+  EXPECT_LT(sheet.width, 3 * 160 + 2 * 10 + 250);
+}
+
+TEST(CliCompare, SceneKeyAxesEqualTheEditedSceneFile) {
+  TempDir dir;
+  const auto scene = [&](const std::string& diffuse, int shininess) {
+    const fs::path p = dir / ("scene_" + std::to_string(shininess) + "_" + std::to_string(std::hash<std::string>()(diffuse)) + ".json");
+    std::ofstream(p) << R"({"width": 96, "height": 64, "lights": [{"position": [1, 2, 3, 1]}, {"position": [-2, 0, 1, 0], "diffuse": [0, 0.5, 0]}],
+      "objects": [{"mesh": {"type": "sphere"}, "material": {"diffuse": [)" << diffuse << R"(], "specular": [1, 1, 1], "shininess": )"
+                    << shininess << "}}]}";
+    return p;
+  };
+  const fs::path base = scene("1, 0, 0", 10);
+  const RunResult r = run("compare " + base.string() + " --rows 'material.diffuse=1,0,0;0,0,1' --cols shininess=10,80 -v -o " +
+                          (dir / "sheet.png").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const Image sheet = illum::readPng(dir / "sheet.png");
+  const std::vector<Panel> ps = panels(r.err);
+  ASSERT_EQ(ps.size(), 4u);
+  for (const Panel& p : ps) {
+    const fs::path edited = scene(p.row == 0 ? "1, 0, 0" : "0, 0, 1", p.col == 0 ? 10 : 80);
+    ASSERT_EQ(run("render " + edited.string() + " -o " + (dir / "one.png").string()).exitCode, 0);
+    EXPECT_EQ(crop(sheet, p).rgba, illum::readPng(dir / "one.png").rgba) << p.rowLabel << " / " << p.colLabel;
+  }
+  // Fewer lights: light-count keeps the first N.
+  const RunResult lights = run("compare " + base.string() + " --rows light-count --cols shading=phong -v -o " +
+                               (dir / "lights.png").string());
+  ASSERT_EQ(lights.exitCode, 0) << lights.err;
+  EXPECT_EQ(panels(lights.err).size(), 2u);
+}
+
+TEST(CliCompare, DiffAddsAPanelWithTheFigures) {
+  TempDir dir;
+  const RunResult r = run("compare --resolution 120,80 --rows model=phong,blinn-phong --cols shading=gouraud,phong "
+                          "--diff gouraud,phong -v -o " + (dir / "sheet.png").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const std::vector<Panel> ps = panels(r.err);
+  ASSERT_EQ(ps.size(), 6u);
+  EXPECT_EQ(ps[2].colLabel, "gouraud vs phong");
+  const Image sheet = illum::readPng(dir / "sheet.png");
+  // The two shadings differ somewhere, so the panel is not all black; the figures are under it.
+  const Image diff = crop(sheet, ps[2]);
+  int lit = 0;
+  for (std::size_t i = 0; i < diff.rgba.size(); i += 4) lit += diff.rgba[i] + diff.rgba[i + 1] + diff.rgba[i + 2] > 0;
+  EXPECT_GT(lit, 20);
+  EXPECT_GT(inkIn(sheet, ps[2].x, ps[2].y + ps[2].height, ps[2].x + ps[2].width, ps[2].y + ps[2].height + 22), 20);
+  // The same setting twice differs nowhere: a row's diff across identical values is refused as
+  // meaningless, and values not on an axis are named.
+  const RunResult bad = run("compare --rows model=phong --cols shading=gouraud,phong --diff flat,phong -o " +
+                            (dir / "x.png").string());
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_NE(bad.err.find("--diff: expected two different values"), std::string::npos) << bad.err;
+}
+
+TEST(CliCompare, BadAxesAreRefusedBeforeRendering) {
+  TempDir dir;
+  const fs::path out = dir / "sheet.png";
+  for (const auto& [args, message] : std::vector<std::pair<std::string, std::string>>{
+           {"--rows colour", "--rows: expected an axis"},
+           {"--rows model=phong,gooch", "--rows model: expected blinn-phong"},
+           {"--cols shininess=-1", "--cols shininess"},
+           {"--rows shading --cols shading", "two different axes"},
+           {"--rows material.glow=1", "expected material."},
+           {"--rows light.7.diffuse=1", "the scene has 3 lights"},
+           {"--rows 'material.diffuse=1,0;0,0,1'", "material.diffuse"},
+       }) {
+    const RunResult r = run("compare " + args + " -o " + out.string());
+    EXPECT_EQ(r.exitCode, 2) << args;
+    EXPECT_NE(r.err.find(message), std::string::npos) << args << ": " << r.err;
+    EXPECT_FALSE(fs::exists(out)) << args;
+  }
+}
+
+}  // namespace
