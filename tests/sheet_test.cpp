@@ -152,3 +152,37 @@ TEST(CliCompare, BadAxesAreRefusedBeforeRendering) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(CliHistory, NinePanelsInTheSeedsOrderEachTheModelsOwnRender) {
+  TempDir dir;
+  const RunResult r = run("history --resolution 120,68 --samples 4 -v -o " + (dir / "history.png").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const Image sheet = illum::readPng(dir / "history.png");
+  const std::vector<Panel> ps = panels(r.err);
+  ASSERT_EQ(ps.size(), 9u);
+  const char* years[] = {"1967", "1970", "1971", "1975", "1977", "1980", "1982", "1983", "1986"};
+  for (std::size_t i = 0; i < ps.size(); ++i) {
+    const Panel& p = ps[i];
+    EXPECT_EQ(p.rowLabel, years[i]);
+    // Every panel shows something, and is captioned (two lines under it).
+    const Image panel = crop(sheet, p);
+    EXPECT_GT(inkIn(panel, 0, 0, panel.width, panel.height), 200) << years[i];
+    EXPECT_GT(inkIn(sheet, p.x, p.y + p.height, p.x + p.width, p.y + p.height + 20), 20) << years[i];
+    EXPECT_GT(inkIn(sheet, p.x, p.y + p.height + 20, p.x + p.width, p.y + p.height + 40), 20) << years[i];
+    // "wylie phong raster": after Wylie's own light, every panel is `illum render` with its settings.
+    std::istringstream settings(p.colLabel);
+    std::string model, shading, renderer;
+    settings >> model >> shading >> renderer;
+    if (model == "wylie") continue;
+    const fs::path single = dir / "single.png";
+    ASSERT_EQ(run("render --resolution 120,68 --samples 4 --model " + model + " --shading " + shading + " --renderer " +
+                  renderer + " -o " + single.string()).exitCode, 0);
+    EXPECT_EQ(panel.rgba, illum::readPng(single).rgba) << years[i];
+  }
+  // The settings the sheet chooses are not the user's to override.
+  EXPECT_EQ(run("history --model phong -o " + (dir / "x.png").string()).exitCode, 2);
+}
+
+}  // namespace

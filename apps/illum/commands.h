@@ -13,5 +13,6 @@ Command addEvalCommand(CLI::App& app);
 Command addRenderCommand(CLI::App& app);
 Command addBenchCommand(CLI::App& app);
 Command addCompareCommand(CLI::App& app);
+Command addHistoryCommand(CLI::App& app);
 
 }  // namespace illum::cli

@@ -1,0 +1,122 @@
+// `illum history [SCENE.json | MODEL] -o history.png`: the seeds' history of lighting in one
+// picture: the same scene as each model from Wylie (1967) to Kajiya (1986) drew it, in order, each
+// panel captioned with its year, its authors and its formula.
+#include <illum/error.h>
+#include <illum/image.h>
+#include <illum/output_file.h>
+#include <illum/render.h>
+#include <illum/sheet.h>
+
+#include "commands.h"
+#include "scene_options.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+namespace illum::cli {
+namespace {
+
+struct HistoryOptions {
+  SceneOptions scene;
+  std::string output = "history.png";
+  bool force = false, quiet = false;
+};
+
+// One step of the history: who, when, what, and how illum draws it.
+struct Step {
+  const char* year;
+  const char* authors;
+  const char* formula;
+  const char* model;
+  const char* shading;
+  const char* renderer;
+};
+
+constexpr Step kSteps[] = {
+    {"1967", "Wylie, Romney, Evans, Erdahl", "I ∝ 1/d from a light at the eye", "wylie", "phong", "raster"},
+    {"1970", "Bouknight", "I = Ia ka + Il kd cos θ, per polygon", "bouknight", "flat", "raster"},
+    {"1971", "Gouraud", "intensities interpolated from the vertices", "lambert", "gouraud", "raster"},
+    {"1975", "Phong", "+ ks (R·V)ⁿ, normals interpolated", "phong", "phong", "raster"},
+    {"1977", "Blinn", "+ ks (N·H)ⁿ, H = (L+V)/|L+V|", "blinn-phong", "phong", "raster"},
+    {"1980", "Whitted", "I = local + kr R + kt T, ray traced", "blinn-phong", "phong", "whitted"},
+    {"1982", "Cook, Torrance", "D·F·G / (4 (N·L)(N·V))", "cook-torrance", "phong", "raster"},
+    {"1983", "Hall, Greenberg", "kr F and kt (1−F): Fresnel-weighted, filtered", "blinn-phong", "phong", "hall"},
+    {"1986", "Kajiya", "L = Lₑ + ∫ f Lᵢ cos θ dω, path traced", "cook-torrance", "phong", "path"},
+};
+constexpr int kColumns = 3, kDefaultPanelWidth = 400;
+
+// Wylie et al. lit their half-tone pictures from the observer: one light at the eye, as bright as
+// the distance to what is looked at, so that the middle of the picture has its full colour.
+void lightFromTheEye(Scene& scene) {
+  Light light;
+  light.position = Vec4(scene.camera.eye, 1);
+  light.diffuse = Color3(glm::length(scene.camera.center - scene.camera.eye));
+  light.specular = Color3(0);
+  scene.lights = {light};
+}
+
+int runHistory(const HistoryOptions& o) {
+  const ThreadLimit limit(o.scene);
+  if (!o.scene.model.empty() || !o.scene.shading.empty() || !o.scene.renderer.empty())
+    throw InputError("--model, --shading and --renderer: the history sets them panel by panel; use `illum render` for one");
+  ModelCache cache;
+  SceneOptions base = o.scene;
+  if (!base.width && !base.height && base.resolution.empty()) {
+    const Scene first = prepareScene(base, nullptr, &cache);
+    base.width = std::min(first.width, kDefaultPanelWidth);
+    base.height = std::max(1, int(std::lround(double(first.height) * *base.width / first.width)));
+  }
+  Sheet sheet;
+  sheet.title = "Lighting from Wylie (1967) to Kajiya (1986): " +
+                (o.scene.input.empty() ? std::string("the built-in scene") : std::filesystem::path(o.scene.input).filename().string());
+  Renderer renderer;
+  int index = 0;
+  for (const Step& step : kSteps) {
+    SceneOptions cell = base;
+    cell.model = step.model;
+    cell.shading = step.shading;
+    cell.renderer = step.renderer;
+    cell.verbose = false;
+    Scene scene = prepareScene(cell, nullptr, &cache);
+    if (std::string(step.model) == "wylie") lightFromTheEye(scene);
+    Image image;
+    renderer.render(scene, image);
+    if (index % kColumns == 0) sheet.panels.emplace_back();
+    sheet.panels.back().push_back({std::move(image), std::string(step.year) + " · " + step.authors + "\n" + step.formula});
+    ++index;
+  }
+  const Image out = composeSheet(sheet);
+  if (o.scene.verbose) {
+    const SheetLayout layout = layoutSheet(sheet);
+    for (std::size_t r = 0; r < sheet.panels.size(); ++r)
+      for (std::size_t c = 0; c < sheet.panels[r].size(); ++c) {
+        const Step& step = kSteps[r * kColumns + c];
+        std::fprintf(stderr, "illum: panel %zu,%zu (%s / %s %s %s) at %d,%d, %dx%d\n", r, c, step.year, step.model,
+                     step.shading, step.renderer, layout.panelOrigin[r][c].first, layout.panelOrigin[r][c].second,
+                     sheet.panels[r][c].image.width, sheet.panels[r][c].image.height);
+      }
+  }
+  writeOutputFile(o.output, encodePng(out), OutputOptions{o.force});
+  if (!o.quiet) std::printf("%s\n", o.output.c_str());
+  return 0;
+}
+
+}  // namespace
+
+Command addHistoryCommand(CLI::App& app) {
+  auto o = std::make_shared<HistoryOptions>();
+  CLI::App* cmd = app.add_subcommand("history", "Render a scene by every model from Wylie (1967) to Kajiya (1986) on one sheet");
+  cmd->footer(
+      "Panels, in order: wylie (1967), bouknight (1970, flat), Gouraud (1971, lambert), Phong (1975),\n"
+      "Blinn (1977), Whitted (1980), Cook-Torrance (1982), Hall (1983), Kajiya's path tracing (1986).");
+  addSceneOptions(*cmd, o->scene);
+  cmd->add_option("-o,--output", o->output, "Output PNG, written atomically")->capture_default_str();
+  cmd->add_flag("-q,--quiet", o->quiet, "Do not print the output's path on standard output");
+  cmd->add_flag("--force", o->force, "Replace a read-only output file (its permissions are kept)");
+  return [o] { return runHistory(*o); };
+}
+
+}  // namespace illum::cli
