@@ -150,6 +150,20 @@ void rejectConflicts(const SceneOptions& o) {
     throw InputError("--camera-view-angle: an orthographic camera has no view angle; drop it or --orthographic");
 }
 
+void decodeColourTextures(std::vector<Object>& objects) {
+  std::map<const Texture*, std::shared_ptr<const Texture>> decoded;
+  const auto srgb = [&](std::shared_ptr<const Texture>& t) {
+    if (!t || t->encoding() == TexelEncoding::Srgb) return;
+    auto [it, inserted] = decoded.try_emplace(t.get(), nullptr);
+    if (inserted) it->second = std::make_shared<const Texture>(t->baseImage(), TexelEncoding::Srgb);
+    t = it->second;
+  };
+  for (Object& o : objects) {
+    srgb(o.diffuseTexture);
+    srgb(o.maps.emissive);
+  }
+}
+
 Scene modelScene(const SceneOptions& o, ImportedModel& model) {
   Scene s;
   s.width = o.width.value_or(1000);
@@ -325,12 +339,34 @@ Scene prepareScene(SceneOptions o, double* loadMs, ModelCache* cache) {
   }
   if (shading) scene.shading = *shading;
   if (renderer) scene.renderer = *renderer;
+  if (model) {
+    // Previews of model files are for screens: sRGB, unless --encoding says otherwise; the path
+    // tracer's radiance, which has no upper bound, through ACES. (Scene files stay as GL writes.)
+    scene.display.encoding = encoding.value_or(Encoding::Srgb);
+    if (scene.renderer == RendererKind::Path) scene.display.toneMap = ToneMap::Aces;
+    if (scene.display.encoding == Encoding::Srgb) {
+      // The rig in linear light, and the grey of the background as it should appear.
+      const Real intensity = o.lightIntensity ? Real(*o.lightIntensity) : Real(1);
+      scene.lights = cameraLightRig(scene.camera, intensity, Encoding::Srgb);
+      scene.lightModel.ambient = cameraRigAmbient(intensity, Encoding::Srgb);
+      for (int c = 0; c < 3; ++c) scene.background[c] = srgbDecoded(scene.background[c]);
+    }
+  }
   if (toneMap) scene.display.toneMap = *toneMap;
   if (encoding) scene.display.encoding = *encoding;
+  // Colour textures are stored sRGB-encoded (glTF says so of base colour and emissive textures;
+  // image files in general are): an sRGB picture decodes them to the linear values it lights.
+  if (model && scene.display.encoding == Encoding::Srgb) decodeColourTextures(scene.objects);
   if (o.noShadows) scene.rayTracing.shadows = false;
   if (o.samples) scene.rayTracing.samples = *o.samples;
   if (o.maxDepth) scene.rayTracing.maxDepth = *o.maxDepth;
-  if (!o.background.empty()) scene.background = Color4(parseColor("--background-color", o.background, true), 1);
+  if (!o.background.empty()) {
+    // The background is the colour the picture shows: in an sRGB picture, the linear value that
+    // encodes to it.
+    scene.background = Color4(parseColor("--background-color", o.background, true), 1);
+    if (scene.display.encoding == Encoding::Srgb)
+      for (int c = 0; c < 3; ++c) scene.background[c] = srgbDecoded(scene.background[c]);
+  }
   if (o.noBackground) scene.background.a = 0;
 
   if (o.verbose && !scene.objects.empty()) {

@@ -30,11 +30,15 @@ struct Display {
 Real toneMapped(Real x, ToneMap toneMap);
 // sRGB's transfer function for x in [0, 1]: 12.92·x up to 0.0031308, else 1.055·x^(1/2.4) − 0.055.
 Real srgbEncoded(Real x);
+// Its inverse, for colour textures stored sRGB-encoded: x/12.92 up to 0.04045, else ((x+0.055)/1.055)^2.4.
+Real srgbDecoded(Real x);
 // The displayed value of a linear colour channel, in [0, 1].
 Real displayValue(Real x, const Display& display);
 
 // Re-encodes an 8-bit image whose RGB bytes are linear values (the rasterizer's framebuffer, which
-// is 8-bit as GL's is) through a table of the 256 displayed values.
-void applyDisplay(Image& image, const Display& display);
+// is 8-bit as GL's is) through a table of the 256 displayed values. Pixels that hold exactly the
+// `background` colour's bytes get its displayed value computed from the colour itself, so that a
+// background comes out the same from every renderer.
+void applyDisplay(Image& image, const Display& display, const Vec4* background = nullptr);
 
 }  // namespace illum

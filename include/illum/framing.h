@@ -2,6 +2,7 @@
 // follows the camera (key, fill and rim lights plus ambient), in f3d's spirit.
 #pragma once
 
+#include <illum/display.h>
 #include <illum/scene.h>
 
 #include <optional>
@@ -31,9 +32,11 @@ Camera framePoints(std::span<const Vec3> points, const ViewOptions& options, Rea
 std::vector<Vec3> worldPoints(const std::vector<Object>& objects);
 
 // The default light rig, fixed to the camera: a warm key light from the upper left, a cool fill
-// from the right, a rim light from behind. `intensity` scales every light.
-std::vector<Light> cameraLightRig(const Camera& camera, Real intensity);
+// from the right, a rim light from behind. `intensity` scales every light. For a picture encoded
+// sRGB the lights are set in linear light (a stronger key, much weaker fill, rim and ambient), so
+// that the encoding's lift of dark values does not wash the picture out.
+std::vector<Light> cameraLightRig(const Camera& camera, Real intensity, Encoding encoding = Encoding::Linear);
 // The light-model ambient that goes with the rig.
-Color3 cameraRigAmbient(Real intensity);
+Color3 cameraRigAmbient(Real intensity, Encoding encoding = Encoding::Linear);
 
 }  // namespace illum

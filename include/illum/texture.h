@@ -9,15 +9,22 @@
 
 namespace illum {
 
+// How a texture's bytes encode its values: as they are (GL without sRGB textures, and data such as
+// normal and metallic-roughness maps), or sRGB-encoded colour (GL_SRGB8_ALPHA8, glTF's colour
+// textures), decoded to linear before filtering. Alpha is always linear.
+enum class TexelEncoding { Linear, Srgb };
+
 class Texture {
  public:
-  explicit Texture(const Image& image);
+  explicit Texture(const Image& image, TexelEncoding encoding = TexelEncoding::Linear);
+  TexelEncoding encoding() const { return encoding_; }
 
   int width() const { return levels_.front().width; }
   int height() const { return levels_.front().height; }
   int levelCount() const { return int(levels_.size()); }
   bool hasTransparency() const { return hasTransparency_; }  // any texel with alpha < 1
-  // The 8-bit image this texture was made from (its base level, rows top to bottom), exactly.
+  // The 8-bit image this texture was made from (its base level, rows top to bottom, re-encoded as
+  // it was stored), exactly.
   Image baseImage() const;
 
   // Trilinear sample at `uv` (GL convention: v = 0 is the image's bottom row) for a footprint of
@@ -33,6 +40,7 @@ class Texture {
   };
   std::vector<Level> levels_;
   bool hasTransparency_ = false;
+  TexelEncoding encoding_ = TexelEncoding::Linear;
 };
 
 }  // namespace illum

@@ -50,18 +50,34 @@ Real srgbEncoded(Real x) {
   return x <= Real(0.0031308) ? Real(12.92) * x : Real(1.055) * std::pow(x, Real(1) / Real(2.4)) - Real(0.055);
 }
 
+Real srgbDecoded(Real x) {
+  x = std::clamp(x, Real(0), Real(1));
+  return x <= Real(0.04045) ? x / Real(12.92) : std::pow((x + Real(0.055)) / Real(1.055), Real(2.4));
+}
+
 Real displayValue(Real x, const Display& display) {
   const Real mapped = std::clamp(toneMapped(x, display.toneMap), Real(0), Real(1));
   return display.encoding == Encoding::Srgb ? srgbEncoded(mapped) : mapped;
 }
 
-void applyDisplay(Image& image, const Display& display) {
+void applyDisplay(Image& image, const Display& display, const Vec4* background) {
   if (display.identity()) return;
+  const auto byte = [](Real v) { return std::uint8_t(std::lround(std::clamp(v, Real(0), Real(1)) * 255)); };
   std::array<std::uint8_t, 256> table;
-  for (int i = 0; i < 256; ++i)
-    table[std::size_t(i)] = std::uint8_t(std::lround(displayValue(Real(i) / 255, display) * 255));
-  for (std::size_t i = 0; i < image.rgba.size(); i += 4)
+  for (int i = 0; i < 256; ++i) table[std::size_t(i)] = byte(displayValue(Real(i) / 255, display));
+  std::array<std::uint8_t, 4> stored{}, shown{};
+  if (background)
+    for (int c = 0; c < 4; ++c) {
+      stored[std::size_t(c)] = byte((*background)[c]);
+      shown[std::size_t(c)] = c < 3 ? byte(displayValue((*background)[c], display)) : stored[std::size_t(c)];
+    }
+  for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
+    if (background && std::equal(stored.begin(), stored.end(), image.rgba.begin() + long(i))) {
+      std::copy(shown.begin(), shown.end(), image.rgba.begin() + long(i));
+      continue;
+    }
     for (std::size_t c = 0; c < 3; ++c) image.rgba[i + c] = table[image.rgba[i + c]];
+  }
 }
 
 }  // namespace illum

@@ -1,11 +1,19 @@
 #include <illum/texture.h>
 
+#include <illum/display.h>
+
+#include <array>
+
 #include <algorithm>
 #include <cmath>
 
 namespace illum {
 
-Texture::Texture(const Image& image) {
+Texture::Texture(const Image& image, TexelEncoding encoding) : encoding_(encoding) {
+  // Decoding by table: 256 values, each exactly as srgbDecoded gives it.
+  std::array<Real, 256> decode;
+  for (int i = 0; i < 256; ++i)
+    decode[std::size_t(i)] = encoding == TexelEncoding::Srgb ? srgbDecoded(Real(i) / 255) : Real(i) / Real(255);
   Level base{std::max(image.width, 1), std::max(image.height, 1), {}};
   base.texels.resize(std::size_t(base.width) * std::size_t(base.height), Vec4(1));
   for (int y = 0; y < image.height; ++y)
@@ -13,7 +21,7 @@ Texture::Texture(const Image& image) {
       const std::uint8_t* p = image.pixel(x, image.height - 1 - y);
       hasTransparency_ = hasTransparency_ || p[3] < 255;
       base.texels[std::size_t(y) * std::size_t(base.width) + std::size_t(x)] =
-          Vec4(p[0], p[1], p[2], p[3]) / Real(255);
+          Vec4(decode[p[0]], decode[p[1]], decode[p[2]], Real(p[3]) / Real(255));
     }
   levels_.push_back(std::move(base));
   // The mipmap chain by 2×2 box filtering (a single row or column halves in one direction).
@@ -42,7 +50,10 @@ Image Texture::baseImage() const {
     for (int x = 0; x < base.width; ++x) {
       const Vec4 t = base.texels[std::size_t(y) * std::size_t(base.width) + std::size_t(x)];
       std::uint8_t* p = image.pixel(x, base.height - 1 - y);
-      for (int c = 0; c < 4; ++c) p[c] = std::uint8_t(std::lround(t[c] * Real(255)));
+      for (int c = 0; c < 4; ++c) {
+        const Real v = c < 3 && encoding_ == TexelEncoding::Srgb ? srgbEncoded(t[c]) : t[c];
+        p[c] = std::uint8_t(std::lround(v * Real(255)));
+      }
     }
   return image;
 }

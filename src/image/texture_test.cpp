@@ -51,3 +51,30 @@ TEST(Texture, MipmapsAverageAndTrilinearPicksByFootprint) {
 
 }  // namespace
 }  // namespace illum
+
+namespace illum {
+namespace {
+
+// A colour texture stored sRGB is decoded to linear before filtering (GL_SRGB8_ALPHA8): the mean of
+// black and white is linear grey 0.5 (the sRGB byte 188), not the byte 128; alpha stays linear;
+// the stored bytes come back exactly.
+TEST(Texture, SrgbTexelsAreDecodedBeforeFiltering) {
+  Image img(2, 1);
+  img.rgba = {0, 0, 0, 255, 255, 255, 255, 0};
+  const Texture t(img, TexelEncoding::Srgb);
+  EXPECT_NEAR(t.sampleLevel({0.5f, 0.5f}, 0).r, 0.5, 1e-6);
+  EXPECT_NEAR(t.sampleLevel({0.5f, 0.5f}, 0).a, 0.5, 1e-6);
+  EXPECT_NEAR(t.sampleLevel({0.5f, 0.5f}, 1).r, 0.5, 1e-6);  // the mipmap averages linear values too
+  Image grey(1, 1);
+  grey.rgba = {188, 128, 0, 255};
+  const Texture g(grey, TexelEncoding::Srgb);
+  EXPECT_NEAR(g.sampleLevel({0.5f, 0.5f}, 0).r, 0.5029, 1e-3);  // ((188/255 + 0.055)/1.055)^2.4
+  EXPECT_NEAR(g.sampleLevel({0.5f, 0.5f}, 0).g, 0.2158, 1e-3);
+  EXPECT_EQ(g.baseImage().rgba, grey.rgba);
+  Image every(256, 1);
+  for (int i = 0; i < 256; ++i) every.rgba[std::size_t(4 * i)] = std::uint8_t(i), every.rgba[std::size_t(4 * i + 3)] = 255;
+  EXPECT_EQ(Texture(every, TexelEncoding::Srgb).baseImage().rgba, every.rgba);
+}
+
+}  // namespace
+}  // namespace illum

@@ -143,7 +143,7 @@ void finishFrame(const Framebuffer& fb, const Scene& scene, RenderStats& stats, 
     *linear = FloatImage{image.width, image.height, std::vector<float>(image.rgba.size())};
     for (std::size_t i = 0; i < image.rgba.size(); ++i) linear->rgba[i] = float(image.rgba[i]) / 255;
   }
-  applyDisplay(image, scene.display);
+  applyDisplay(image, scene.display, &scene.background);
   stats.labelsSkipped = !drawLabels(image, scene);
 }
 

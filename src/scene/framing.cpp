@@ -86,7 +86,7 @@ Camera framePoints(std::span<const Vec3> points, const ViewOptions& o, Real aspe
   return cam;
 }
 
-std::vector<Light> cameraLightRig(const Camera& cam, Real intensity) {
+std::vector<Light> cameraLightRig(const Camera& cam, Real intensity, Encoding encoding) {
   const Vec3 back = glm::normalize(cam.eye - cam.center);  // towards the viewer
   const Vec3 right = glm::normalize(glm::cross(cam.up, back));
   const Vec3 up = glm::cross(back, right);
@@ -97,6 +97,12 @@ std::vector<Light> cameraLightRig(const Camera& cam, Real intensity) {
     l.specular = glm::clamp(specular * intensity, Color3(0), Color3(1));
     return l;
   };
+  if (encoding == Encoding::Srgb)
+    return {
+        directional(-0.5f, 0.6f, 1.0f, {0.86, 0.83, 0.77}, {0.6, 0.6, 0.6}),    // key: upper left, in front
+        directional(0.8f, -0.2f, 0.6f, {0.15, 0.17, 0.21}, {0, 0, 0}),          // fill: right, a little below
+        directional(0.2f, 0.7f, -1.0f, {0.12, 0.12, 0.12}, {0.25, 0.25, 0.25}), // rim: above, from behind
+    };
   return {
       directional(-0.5f, 0.6f, 1.0f, {0.68, 0.66, 0.62}, {0.55, 0.55, 0.55}),  // key: upper left, in front
       directional(0.8f, -0.2f, 0.6f, {0.36, 0.38, 0.42}, {0, 0, 0}),            // fill: right, a little below
@@ -104,6 +110,8 @@ std::vector<Light> cameraLightRig(const Camera& cam, Real intensity) {
   };
 }
 
-Color3 cameraRigAmbient(Real intensity) { return glm::clamp(Color3(0.2) * intensity, Color3(0), Color3(1)); }
+Color3 cameraRigAmbient(Real intensity, Encoding encoding) {
+  return glm::clamp(Color3(encoding == Encoding::Srgb ? Real(0.035) : Real(0.2)) * intensity, Color3(0), Color3(1));
+}
 
 }  // namespace illum
