@@ -20,8 +20,9 @@ TEST(Examples, EveryExampleRenders) {
     if (entry.path().extension() != ".json") continue;
     ++count;
     const fs::path out = dir / (entry.path().stem().string() + ".png");
-    // Few rays per pixel: the path-traced examples ask for hundreds, which only cost time here.
-    const auto r = runIllum("render " + entry.path().string() + " --samples 2 -o " + out.string());
+    // Few rays per pixel: the path-traced examples ask for hundreds, which only cost time here (and
+    // 4 is a multisample count too, for the rasterized ones).
+    const auto r = runIllum("render " + entry.path().string() + " --samples 4 -o " + out.string());
     EXPECT_EQ(r.exitCode, 0) << entry.path() << ": " << r.err;
     EXPECT_EQ(r.err, "") << entry.path();  // no warnings either
     EXPECT_TRUE(fs::exists(out)) << entry.path();

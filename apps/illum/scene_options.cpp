@@ -227,7 +227,8 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o) {
   cmd.add_option("--shading", o.shading, "Shading frequency: flat, gouraud or phong");
   cmd.add_option("--renderer", o.renderer, "raster (default), whitted (ray tracing, 1980), hall (1983) or path (path tracing, 1986)");
   cmd.add_flag("--no-shadows", o.noShadows, "Ray tracers: no shadow rays");
-  cmd.add_option("--samples", o.samples, "Ray tracers: rays per pixel (1: through the centre) [1; path: 64]")
+  cmd.add_option("--samples", o.samples,
+                 "Rasterizer: multisamples per pixel, 1, 4, 8 or 16 [scenes 1, models 8]; ray tracers: rays per pixel [1; path: 64]")
       ->check(CLI::Range(1, kMaxSamples));
   cmd.add_option("--max-depth", o.maxDepth, "Ray tracers: reflected and refracted bounces followed [5]")
       ->check(CLI::Range(0, kMaxRayDepth));
@@ -358,7 +359,17 @@ Scene prepareScene(SceneOptions o, double* loadMs, ModelCache* cache) {
   // image files in general are): an sRGB picture decodes them to the linear values it lights.
   if (model && scene.display.encoding == Encoding::Srgb) decodeColourTextures(scene.objects);
   if (o.noShadows) scene.rayTracing.shadows = false;
-  if (o.samples) scene.rayTracing.samples = *o.samples;
+  if (o.samples) {
+    // Rays per pixel for the ray tracers; the rasterizer's multisample count.
+    scene.rayTracing.samples = *o.samples;
+    int count = 16;
+    while (count > *o.samples) count /= count == 4 ? 4 : 2;  // the largest of 16, 8, 4, 1 at most asked
+    scene.multisample = count;
+    if (count != *o.samples && scene.renderer == RendererKind::Raster)
+      std::fprintf(stderr, "illum: warning: --samples: the rasterizer takes 1, 4, 8 or 16 samples per pixel; using %d\n", count);
+  } else if (model && scene.renderer == RendererKind::Raster) {
+    scene.multisample = 8;  // previews are anti-aliased
+  }
   if (o.maxDepth) scene.rayTracing.maxDepth = *o.maxDepth;
   if (!o.background.empty()) {
     // The background is the colour the picture shows: in an sRGB picture, the linear value that

@@ -112,6 +112,9 @@ struct RayTracing {
   std::shared_ptr<const EnvironmentMap> environmentMap;
 };
 
+// The multisample counts the rasterizer takes.
+constexpr bool isMultisampleCount(int n) { return n == 1 || n == 4 || n == 8 || n == 16; }
+
 struct Scene;
 // Rays per pixel: as the scene says, else 1 (64 for the path tracer, which needs many).
 int samplesPerPixel(const Scene& scene);
@@ -134,6 +137,10 @@ struct Scene {
   bool blend = false;
   // How linear values become bytes (display.h): linear and unmapped by default, as GL writes them.
   Display display;
+  // The rasterizer's samples per pixel: 1 (GL's single sample), or 4, 8 or 16 for multisampling
+  // (coverage and depth per sample, each pixel shaded once per triangle at its centre, resolved
+  // with premultiplied alpha). The ray tracers take rayTracing.samples instead.
+  int multisample = 1;
 };
 
 // Reads a scene file; relative mesh paths are resolved against the file's folder.

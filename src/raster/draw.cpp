@@ -11,7 +11,8 @@ namespace illum {
 
 DrawTarget::DrawTarget(const FrameContext& frame, const Scene& scene, Framebuffer& fb, PixelProbe* probe)
     : frame(frame), scene(scene), fb(fb), probe(probe) {
-  litFromSurface = sizeof(Real) == 4 && !probe && frame.shading == Shading::Phong;
+  // (Multisample passes shade at the pixel centre, not where the surface is sampled.)
+  litFromSurface = sizeof(Real) == 4 && !probe && frame.shading == Shading::Phong && !frame.multisampled;
   for (const Object& o : scene.objects) {
     layouts.push_back(AttributeLayout::forObject(frame, o, probe != nullptr));
     setups.push_back({frame.lights, frame.lightModel, modelOf(o.material, frame.model), o.material});
@@ -80,9 +81,15 @@ void drawPixels(const DrawTarget& target, const DrawRecord& record, const PixelR
   const bool mapped = mapsDrawn(frame, object);
   MappedSurface surface;
   const int probeRow = kProbe ? frame.height - 1 - target.probe->y : -1;  // GL rows run bottom up
+  // A multisample pass tests coverage and depth at the sample, and shades at the pixel centre.
+  const SubpixelOffset sample = frame.sample;
+  const Real toCentre[3] = {-Real(t.edge[0].a * sample.x + t.edge[0].b * sample.y) * t.invArea,
+                            -Real(t.edge[1].a * sample.x + t.edge[1].b * sample.y) * t.invArea,
+                            -Real(t.edge[2].a * sample.x + t.edge[2].b * sample.y) * t.invArea};
   rasterizeTriangle(t, rect, [&](int x, int y, Real l0, Real l1, Real l2) {
     const Real z = l0 * t.z[0] + l1 * t.z[1] + l2 * t.z[2];
     if (!target.fb.depthTest(x, y, z)) return;
+    if (frame.multisampled) l0 += toCentre[0], l1 += toCentre[1], l2 += toCentre[2];
     ++fragments;
     Color4 c;
     Vec4 texel(1);
@@ -137,14 +144,32 @@ void drawRecord(const DrawTarget& target, const DrawRecord& record, const PixelR
   }
 }
 
-void finishFrame(const Framebuffer& fb, const Scene& scene, RenderStats& stats, Image& image, FloatImage* linear) {
-  stats.pixelsDrawn = fb.toImage(image, scene.background);
+namespace {
+
+// The linear values, the display encoding and the labels: the last steps of every picture.
+void encodeAndLabel(const Scene& scene, RenderStats& stats, Image& image, FloatImage* linear) {
   if (linear) {
     *linear = FloatImage{image.width, image.height, std::vector<float>(image.rgba.size())};
     for (std::size_t i = 0; i < image.rgba.size(); ++i) linear->rgba[i] = float(image.rgba[i]) / 255;
   }
   applyDisplay(image, scene.display, &scene.background);
   stats.labelsSkipped = !drawLabels(image, scene);
+}
+
+}  // namespace
+
+void finishFrame(const Framebuffer& fb, const Scene& scene, RenderStats& stats, Image& image, FloatImage* linear) {
+  stats.pixelsDrawn = fb.toImage(image, scene.background);
+  encodeAndLabel(scene, stats, image, linear);
+}
+
+void finishImage(const Scene& scene, RenderStats& stats, Image& image, FloatImage* linear) {
+  std::uint8_t background[4];
+  for (int c = 0; c < 4; ++c) background[c] = toUnorm8(scene.background[c]);
+  stats.pixelsDrawn = 0;
+  for (std::size_t i = 0; i < image.rgba.size(); i += 4)
+    stats.pixelsDrawn += std::memcmp(&image.rgba[i], background, 4) != 0;
+  encodeAndLabel(scene, stats, image, linear);
 }
 
 namespace {

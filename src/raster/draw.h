@@ -55,5 +55,8 @@ std::vector<const Object*> drawingOrder(const Scene& scene, const FrameContext& 
 // scene's labels drawn over it.
 void finishFrame(const Framebuffer& fb, const Scene& scene, RenderStats& stats, Image& image,
                  FloatImage* linear = nullptr);
+// The same for a picture already made (a multisampled one, resolved): pixels unlike the background
+// counted, linear values, display encoding, labels.
+void finishImage(const Scene& scene, RenderStats& stats, Image& image, FloatImage* linear = nullptr);
 
 }  // namespace illum

@@ -75,7 +75,7 @@ std::size_t setupTriangles(const FrameContext& frame, const Object& object, std:
     // c is the provoking vertex: flat shading shows its colour on every piece.
     const auto emit = [&](const ShadedVertex& v0, const ShadedVertex& v1, const ShadedVertex& v2) {
       DrawRecord& r = out.append();
-      if (!setupTriangle(v0, v1, v2, frame.width, frame.height, r.setup)) {
+      if (!setupTriangle(v0, v1, v2, frame.width, frame.height, r.setup, frame.sample)) {
         out.drop();
         return;
       }

@@ -8,6 +8,7 @@
 
 #include "raster/bin.h"
 #include "raster/draw.h"
+#include "raster/multisample.h"
 #include "raster/shade_tile.h"
 #include "shading/shade_points.h"
 #include "trace/ray_tracer.h"
@@ -153,14 +154,37 @@ void Renderer::render(const Scene& scene, Image& image, RenderStats* statsOut, P
     if (statsOut) *statsOut = stats;
     return;
   }
-  const FrameContext frame = FrameContext::fromScene(scene);
+  FrameContext frame = FrameContext::fromScene(scene);
   if (probe) probe->hit = false;
-  BinnedFrame pass(*state_, scene, frame, probe);
-  for (const Object* object : drawingOrder(scene, frame))
-    pass.drawObject(*object, std::uint32_t(object - scene.objects.data()));
-  pass.flush();
-  RenderStats stats = pass.stats();
-  finishFrame(state_->fb, scene, stats, image, linear);
+  const std::span<const SubpixelOffset> samples = multisamplePattern(scene.multisample);
+  RenderStats stats;
+  if (samples.size() <= 1) {
+    BinnedFrame pass(*state_, scene, frame, probe);
+    for (const Object* object : drawingOrder(scene, frame))
+      pass.drawObject(*object, std::uint32_t(object - scene.objects.data()));
+    pass.flush();
+    stats = pass.stats();
+    finishFrame(state_->fb, scene, stats, image, linear);
+  } else {
+    // One pass per sample position, each through the whole pipeline into the framebuffer, summed
+    // premultiplied; the watched pixel reports the first sample's fragment.
+    frame.multisampled = true;
+    MultisampleResolve resolve(scene.width, scene.height);
+    for (std::size_t s = 0; s < samples.size(); ++s) {
+      frame.sample = samples[s];
+      BinnedFrame pass(*state_, scene, frame, s == 0 ? probe : nullptr);
+      for (const Object* object : drawingOrder(scene, frame))
+        pass.drawObject(*object, std::uint32_t(object - scene.objects.data()));
+      pass.flush();
+      const RenderStats passStats = pass.stats();
+      if (s == 0) stats = passStats;
+      else stats.fragmentsShaded += passStats.fragmentsShaded;
+      state_->fb.toImage(image, scene.background);
+      resolve.add(image);
+    }
+    resolve.finish(image);
+    finishImage(scene, stats, image, linear);
+  }
   if (statsOut) *statsOut = stats;
 }
 

@@ -40,8 +40,13 @@ WindowPosition toWindow(const Vec4& clip, int width, int height) {
 }
 
 bool setupTriangle(const ShadedVertex& v0, const ShadedVertex& v1, const ShadedVertex& v2, int width, int height,
-                   TriangleSetup& out) {
-  const auto windowOf = [&](const ShadedVertex& v) { return v.hasWindow ? v.window : toWindow(v.clip, width, height); };
+                   TriangleSetup& out, SubpixelOffset sample) {
+  const auto windowOf = [&](const ShadedVertex& v) {
+    WindowPosition p = v.hasWindow ? v.window : toWindow(v.clip, width, height);
+    p.x -= sample.x;
+    p.y -= sample.y;
+    return p;
+  };
   std::array<WindowVertex, 3> w = {windowOf(v0), windowOf(v1), windowOf(v2)};
   std::int64_t area2 = (w[1].x - w[0].x) * (w[2].y - w[0].y) - (w[2].x - w[0].x) * (w[1].y - w[0].y);
   if (area2 == 0) return false;

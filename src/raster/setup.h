@@ -43,8 +43,10 @@ struct TriangleSetup {
 WindowPosition toWindow(const Vec4& clip, int width, int height);
 
 // Returns false for triangles that cover no pixel centre's neighbourhood (zero area or off-screen).
-// Window coordinates are GL's: origin at the bottom-left, pixel centres at +0.5.
+// Window coordinates are GL's: origin at the bottom-left, pixel centres at +0.5. A multisample
+// pass moves the triangle by −`sample` (sub-pixel units), so that the rasterizer's pixel centres
+// test coverage and depth at centre + sample.
 bool setupTriangle(const ShadedVertex& v0, const ShadedVertex& v1, const ShadedVertex& v2, int width, int height,
-                   TriangleSetup& out);
+                   TriangleSetup& out, SubpixelOffset sample = {});
 
 }  // namespace illum

@@ -11,10 +11,11 @@ struct VisiblePixel {
   Real l0, l1, l2;  // screen-space barycentrics, exactly as the rasterizer computes them
 };
 
-VisiblePixel visiblePixel(const TriangleSetup& t, const PixelRect& rect, int index) {
+// A multisample pass moved the triangle by −sample: its pixel centre is at centre − sample there.
+VisiblePixel visiblePixel(const TriangleSetup& t, const PixelRect& rect, int index, SubpixelOffset sample) {
   const int x = rect.minX + index % kTileSize, y = rect.minY + index / kTileSize;
-  const std::int64_t fx = std::int64_t(x) * kSubpixelOne + kSubpixelOne / 2;
-  const std::int64_t fy = std::int64_t(y) * kSubpixelOne + kSubpixelOne / 2;
+  const std::int64_t fx = std::int64_t(x) * kSubpixelOne + kSubpixelOne / 2 - sample.x;
+  const std::int64_t fy = std::int64_t(y) * kSubpixelOne + kSubpixelOne / 2 - sample.y;
   const Real invArea = t.invArea;
   return {x, y, Real(t.edge[0].at(fx, fy)) * invArea, Real(t.edge[1].at(fx, fy)) * invArea,
           Real(t.edge[2].at(fx, fy)) * invArea};
@@ -37,7 +38,7 @@ void colorVertexLit(const DrawTarget& target, std::span<const DrawRecord* const>
     const std::uint32_t slot = scratch.winners[std::size_t(i)];
     if (slot == kNoWinner) continue;
     const DrawRecord& r = *records[slot];
-    const VisiblePixel p = visiblePixel(r.setup, rect, i);
+    const VisiblePixel p = visiblePixel(r.setup, rect, i, target.frame.sample);
     const Color4 lit = target.frame.shading == Shading::Flat
                            ? r.flat
                            : gouraudColor(r, target.layout(r), perspectiveWeights(r.setup, p.l0, p.l1, p.l2));
@@ -61,7 +62,7 @@ class PhongBatch {
   void add(int index, std::uint32_t slot) {
     const DrawRecord& r = *records_[slot];
     const Object& object = target_.scene.objects[r.object];
-    const VisiblePixel p = visiblePixel(r.setup, rect_, index);
+    const VisiblePixel p = visiblePixel(r.setup, rect_, index, target_.frame.sample);
     if (mapsDrawn(target_.frame, object)) return shadeMapped(object, r, p);
     if (n_ == TileScratch::kBatch || (n_ > 0 && r.object != object_)) flush();
     object_ = r.object;
@@ -101,7 +102,7 @@ class PhongBatch {
     shadePoints(setup, points, lit);
     for (std::size_t k = 0; k < n_; ++k) {
       const DrawRecord& r = *records_[s_.slot[k]];
-      const VisiblePixel p = visiblePixel(r.setup, rect_, s_.pixel[k]);
+      const VisiblePixel p = visiblePixel(r.setup, rect_, s_.pixel[k], target_.frame.sample);
       const Color4 color(lit[0][k], lit[1][k], lit[2][k], lit[3][k]);
       const Vec4 texel(s_.soa[10][k], s_.soa[11][k], s_.soa[12][k], s_.soa[13][k]);
       writePixel(target_, r, p, color, textured ? &texel : nullptr, baseTexture);
@@ -192,7 +193,7 @@ std::size_t drawOpaqueTile(const DrawTarget& target, std::span<const DrawRecord*
   const Shading shading = target.frame.shading;
   // Flat and Gouraud colour their pixels in the depth pass itself, unless a texel or the probe
   // needs the second pass (or the channels are double, which the SIMD conversion does not take).
-  const bool direct = sizeof(Real) == 4 && !target.probe && shading != Shading::Phong;
+  const bool direct = sizeof(Real) == 4 && !target.probe && shading != Shading::Phong && !target.frame.multisampled;
   std::uint32_t* winners = scratch.winners.data();
   bool anyWinner = false;
   std::size_t fragments = 0;

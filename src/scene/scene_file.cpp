@@ -357,7 +357,7 @@ Scene parseScene(const std::string& text, const std::string& name, const std::fi
   const JsonReader j(root, name);
   j.expectObject({"version", "width", "height", "background", "model", "shading", "camera",
                   "light_model", "lights", "objects", "labels", "blend", "renderer", "max_depth", "shadows",
-                  "samples", "environment", "environment_map", "tone_map", "encoding"});
+                  "samples", "environment", "environment_map", "tone_map", "encoding", "multisample"});
   Scene s;
   if (j.has("version") && j.at("version").integer(0, std::numeric_limits<int>::max()) != 1)
     j.at("version").fail("expected version 1");
@@ -397,6 +397,11 @@ Scene parseScene(const std::string& text, const std::string& name, const std::fi
     const auto encoding = parseEncoding(e);
     if (!encoding) j.at("encoding").fail("expected \"linear\" or \"srgb\", got \"" + e + "\"");
     s.display.encoding = *encoding;
+  }
+  if (j.has("multisample")) {
+    s.multisample = j.at("multisample").integer(1, 16);
+    if (!isMultisampleCount(s.multisample))
+      j.at("multisample").fail("expected 1, 4, 8 or 16 samples per pixel, got " + std::to_string(s.multisample));
   }
   if (j.has("max_depth")) s.rayTracing.maxDepth = j.at("max_depth").integer(0, kMaxRayDepth);
   if (j.has("shadows")) s.rayTracing.shadows = j.at("shadows").boolean();

@@ -324,6 +324,9 @@ TEST(SceneFile, ReadsTheDisplayKeys) {
   EXPECT_EQ(error(R"({"tone_map": "filmic"})"),
             "scene.json: /tone_map: expected \"none\", \"reinhard\" or \"aces\", got \"filmic\"");
   EXPECT_EQ(error(R"({"encoding": "gamma"})"), "scene.json: /encoding: expected \"linear\" or \"srgb\", got \"gamma\"");
+  EXPECT_EQ(parseScene("{}", "scene.json", ".").multisample, 1);  // GL's single sample
+  EXPECT_EQ(parseScene(R"({"multisample": 8})", "scene.json", ".").multisample, 8);
+  EXPECT_EQ(error(R"({"multisample": 2})"), "scene.json: /multisample: expected 1, 4, 8 or 16 samples per pixel, got 2");
 }
 
 }  // namespace
