@@ -34,6 +34,7 @@ struct RenderOptions {
   std::string debugPixel;
   bool force = false;
   bool quiet = false;
+  int bitDepth = 8;
 };
 
 // Whether `path` names the file standard output already goes to (/dev/stdout, /proc/self/fd/1, or
@@ -91,6 +92,9 @@ int runRender(const RenderOptions& o) {
   }
   // A .exr output gets the linear values, unclamped (OpenEXR); anything else a PNG.
   const bool exr = isExrPath(o.output);
+  if (o.bitDepth != 8 && o.bitDepth != 16) throw InputError("--bit-depth: expected 8 or 16, got " + std::to_string(o.bitDepth));
+  if (o.bitDepth == 16 && exr) throw InputError("--bit-depth: OpenEXR output is 32-bit float already; drop --bit-depth 16");
+  const bool deep = o.bitDepth == 16;
   FloatImage linear;
   Renderer renderer;
   // A path tracer's picture takes a while: on a terminal, a line on stderr says how far it is.
@@ -98,7 +102,7 @@ int runRender(const RenderOptions& o) {
   if (scene.renderer == RendererKind::Path && !o.quiet && ::isatty(STDERR_FILENO))
     renderer.onProgress([&](double fraction) { progressLine.update(fraction); });
   Image image;
-  renderer.render(scene, image, &stats, probe ? &*probe : nullptr, exr ? &linear : nullptr);
+  renderer.render(scene, image, &stats, probe ? &*probe : nullptr, exr || deep ? &linear : nullptr);
   progressLine.finish();
   const auto rendered = Clock::now();
   auto encoded = rendered;
@@ -111,12 +115,15 @@ int runRender(const RenderOptions& o) {
   const bool toStdout = o.output == "-";
   if (toStdout) {
     // `-o -` streams the PNG, for pipelines that make thumbnails.
-    const std::vector<std::uint8_t> png = encodePng(image);
+    const std::vector<std::uint8_t> png = deep ? encodePng16(image.width, image.height, picture16(scene, linear))
+                                               : encodePng(image);
     encoded = Clock::now();
     if (std::fwrite(png.data(), 1, png.size(), stdout) != png.size() || std::fflush(stdout) != 0)
       throw Error("cannot write the PNG to standard output");
   } else {
-    const std::vector<std::uint8_t> bytes = exr ? encodeExr(linear) : encodePng(image);
+    const std::vector<std::uint8_t> bytes = exr    ? encodeExr(linear)
+                                            : deep ? encodePng16(image.width, image.height, picture16(scene, linear))
+                                                   : encodePng(image);
     encoded = Clock::now();
     writeOutputFile(o.output, bytes, OutputOptions{o.force});
   }
@@ -160,6 +167,8 @@ Command addRenderCommand(CLI::App& app) {
                   "Output PNG, or OpenEXR (linear, unclamped) when it ends in .exr; written atomically; - for standard "
                   "output (PNG)")->capture_default_str();
   cmd->add_flag("-q,--quiet", o->quiet, "Do not print the output's path on standard output");
+  cmd->add_option("--bit-depth", o->bitDepth, "PNG bits per channel: 8, or 16 (the display encoding at full precision)")
+      ->capture_default_str();
   cmd->add_flag("--force", o->force, "Replace a read-only output file (its permissions are kept)");
   cmd->add_option("--debug-pixel", o->debugPixel, "Print every term of the lighting equation at pixel x,y (0,0 top-left)");
   return [o] { return runRender(*o); };

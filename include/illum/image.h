@@ -38,6 +38,8 @@ FloatImage readExr(const std::filesystem::path& path);
 
 // Encodes the image as PNG in memory.
 std::vector<std::uint8_t> encodePng(const Image& image);
+// Encodes 16-bit RGBA PNG samples (big-endian, as PNG stores them), `rgba` holding four per pixel.
+std::vector<std::uint8_t> encodePng16(int width, int height, const std::vector<std::uint16_t>& rgba);
 // Writes a PNG with writeOutputFile (output_file.h): never a partial or clobbered file.
 void writePng(const std::filesystem::path& path, const Image& image);
 // Reads a PNG (any 8-bit format, expanded to RGBA). Throws InputError on failure.

@@ -86,6 +86,11 @@ class Renderer {
   std::function<void(double)> progress_;
 };
 
+// The picture at 16 bits per channel, for a 16-bit PNG: `linear` (the values render() gives) through
+// the scene's display encoding at full precision, with the scene's labels over it; RGBA, rows top
+// to bottom.
+std::vector<std::uint16_t> picture16(const Scene& scene, const FloatImage& linear);
+
 // The SIMD instruction set the renderer's kernels run with on this CPU, chosen at run time
 // ("AVX3" is AVX-512, then "AVX2", "SSE4", ...).
 const char* simdTarget();

@@ -105,3 +105,39 @@ TEST(Display, TheRayTracerEncodesItsColours) {
 
 }  // namespace
 }  // namespace illum
+
+namespace illum {
+namespace {
+
+// 16 bits: the display encoding of the linear values at full precision, alpha linear, labels over.
+TEST(Display, SixteenBitPictureKeepsThePrecision) {
+  Scene s = glowing(RendererKind::Path, {3, 0.5f, 0});
+  s.display = {ToneMap::Reinhard, Encoding::Linear};
+  FloatImage linear;
+  renderScene(s, nullptr, nullptr, &linear);
+  const std::vector<std::uint16_t> deep = picture16(s, linear);
+  const std::size_t centre = (8 * 16 + 8) * 4;
+  EXPECT_EQ(deep[centre], 49151);      // 3/4 of 65535
+  EXPECT_EQ(deep[centre + 1], 21845);  // 1/3
+  EXPECT_EQ(deep[centre + 3], 65535);
+  s.display.encoding = Encoding::Srgb;
+  EXPECT_EQ(picture16(s, linear)[centre + 1], std::lround(srgbEncoded(Real(0.5) / Real(1.5)) * 65535));
+  // A label is laid over it.
+  s.labels.push_back({"HELLO", std::nullopt, Vec2(8, 12), Color3(0, 0, 1), 14});
+  const std::vector<std::uint16_t> labelled = picture16(s, linear);
+  int changed = 0;
+  const std::vector<std::uint16_t> plain = [&] {
+    Scene t = s;
+    t.labels.clear();
+    return picture16(t, linear);
+  }();
+  for (std::size_t i = 0; i < plain.size(); ++i) changed += plain[i] != labelled[i];
+  EXPECT_GT(changed, 10);
+  // The PNG says 16 bits, RGBA (IHDR: bit depth at byte 24, colour type at 25).
+  const std::vector<std::uint8_t> png = encodePng16(16, 16, plain);
+  EXPECT_EQ(png[24], 16);
+  EXPECT_EQ(png[25], 6);
+}
+
+}  // namespace
+}  // namespace illum

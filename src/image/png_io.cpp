@@ -35,32 +35,48 @@ void putChunk(std::vector<std::uint8_t>& out, const char type[4], const std::uin
 // compressed by libdeflate at its fastest level: several times faster than stb_image_write or
 // zlib, a few percent larger than zlib's default. The PNG framing is the format's own (signature,
 // IHDR, one IDAT, IEND); the compression is libdeflate's. The same bytes on every run.
-std::vector<std::uint8_t> encodePng(const Image& image) {
-  const std::size_t stride = std::size_t(image.width) * 4;
-  std::vector<std::uint8_t> filtered((stride + 1) * std::size_t(image.height));
-  for (int y = 0; y < image.height; ++y) {
+namespace {
+
+// Sub-filtered rows (`bytesPerPixel` apart) compressed into a PNG of the given bit depth, RGBA.
+std::vector<std::uint8_t> encodeRows(int width, int height, const std::uint8_t* pixels, std::size_t bytesPerPixel,
+                                     std::uint8_t bitDepth) {
+  const std::size_t stride = std::size_t(width) * bytesPerPixel;
+  std::vector<std::uint8_t> filtered((stride + 1) * std::size_t(height));
+  for (int y = 0; y < height; ++y) {
     std::uint8_t* out = &filtered[std::size_t(y) * (stride + 1)];
-    const std::uint8_t* row = image.pixel(0, y);
+    const std::uint8_t* row = pixels + std::size_t(y) * stride;
     out[0] = 1;  // filter type 1: sub
-    std::memcpy(out + 1, row, std::min<std::size_t>(4, stride));
-    for (std::size_t i = 4; i < stride; ++i) out[1 + i] = std::uint8_t(row[i] - row[i - 4]);
+    std::memcpy(out + 1, row, std::min(bytesPerPixel, stride));
+    for (std::size_t i = bytesPerPixel; i < stride; ++i) out[1 + i] = std::uint8_t(row[i] - row[i - bytesPerPixel]);
   }
   const std::unique_ptr<libdeflate_compressor, Compressor> compressor(libdeflate_alloc_compressor(1));
   if (!compressor) throw Error("cannot encode a PNG: out of memory");
   std::vector<std::uint8_t> idat(libdeflate_zlib_compress_bound(compressor.get(), filtered.size()));
   const std::size_t size = libdeflate_zlib_compress(compressor.get(), filtered.data(), filtered.size(), idat.data(), idat.size());
-  if (size == 0) throw Error("cannot encode a " + std::to_string(image.width) + "x" + std::to_string(image.height) + " PNG");
+  if (size == 0) throw Error("cannot encode a " + std::to_string(width) + "x" + std::to_string(height) + " PNG");
 
   std::vector<std::uint8_t> png = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
   png.reserve(size + 64);
   std::vector<std::uint8_t> header;
-  putBigEndian(header, std::uint32_t(image.width));
-  putBigEndian(header, std::uint32_t(image.height));
-  header.insert(header.end(), {8, 6, 0, 0, 0});  // 8 bits, RGBA, deflate, adaptive filtering, no interlace
+  putBigEndian(header, std::uint32_t(width));
+  putBigEndian(header, std::uint32_t(height));
+  header.insert(header.end(), {bitDepth, 6, 0, 0, 0});  // RGBA, deflate, adaptive filtering, no interlace
   putChunk(png, "IHDR", header.data(), header.size());
   putChunk(png, "IDAT", idat.data(), size);
   putChunk(png, "IEND", nullptr, 0);
   return png;
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> encodePng(const Image& image) {
+  return encodeRows(image.width, image.height, image.rgba.data(), 4, 8);
+}
+
+std::vector<std::uint8_t> encodePng16(int width, int height, const std::vector<std::uint16_t>& rgba) {
+  std::vector<std::uint8_t> bytes(rgba.size() * 2);
+  for (std::size_t i = 0; i < rgba.size(); ++i) bytes[2 * i] = std::uint8_t(rgba[i] >> 8), bytes[2 * i + 1] = std::uint8_t(rgba[i]);
+  return encodeRows(width, height, bytes.data(), 8, 16);
 }
 
 void writePng(const std::filesystem::path& path, const Image& image) {
