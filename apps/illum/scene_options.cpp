@@ -236,6 +236,9 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o) {
   cmd.add_option("--encoding", o.encoding, "Bytes of the picture: linear (GL's; default) or srgb");
   cmd.add_option("--background-color,--background", o.background, "Background colour R,G,B or #rrggbb");
   cmd.add_flag("--no-background", o.noBackground, "Transparent background (alpha 0)");
+  cmd.add_flag("--edges", o.edges, "Draw every triangle's edges over the surfaces (rasterizer)");
+  cmd.add_flag("--grid", o.grid, "Draw a ground grid under the scene (rasterizer)");
+  cmd.add_flag("--axes", o.axes, "Draw the world's axes in the lower left corner");
   cmd.add_option("--up", o.up, "Model files: the up axis, +Y (default), -Y, +Z, -Z, +X or -X");
   cmd.add_option("--camera-position", o.cameraPosition, "Camera position x,y,z");
   cmd.add_option("--camera-focal-point", o.cameraFocalPoint, "Point the camera looks at x,y,z (models: the bounds' centre)");
@@ -379,6 +382,12 @@ Scene prepareScene(SceneOptions o, double* loadMs, ModelCache* cache) {
       for (int c = 0; c < 3; ++c) scene.background[c] = srgbDecoded(scene.background[c]);
   }
   if (o.noBackground) scene.background.a = 0;
+  scene.overlays.edges = scene.overlays.edges || o.edges;
+  scene.overlays.grid = scene.overlays.grid || o.grid;
+  scene.overlays.axes = scene.overlays.axes || o.axes;
+  if ((scene.overlays.edges || scene.overlays.grid) && scene.renderer != RendererKind::Raster)
+    throw InputError(std::string(scene.overlays.edges ? "--edges" : "--grid") +
+                     ": the rasterizer draws edges and grids; the ray tracers have no depth buffer to hide them with");
 
   if (o.verbose && !scene.objects.empty()) {
     // Which model lights what: a material's own model (glTF's physically based ones) or the scene's.

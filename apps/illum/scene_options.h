@@ -27,6 +27,7 @@ struct SceneOptions {
   bool noShadows = false;
   std::optional<int> samples, maxDepth;
   bool noBackground = false;
+  bool edges = false, grid = false, axes = false;
   // Model files (f3d's names).
   std::string up, cameraPosition, cameraFocalPoint, cameraViewUp;
   std::optional<double> viewAngle, azimuth, elevation, zoom, lightIntensity, creaseAngle;

@@ -92,6 +92,16 @@ struct Label {
   Real size = 16;  // pixel height
 };
 
+// Drawings over the picture that viewers of CAD models and scans expect: every triangle's edges,
+// a ground grid under the scene (both hidden where the surfaces hide them, rasterizer only), and
+// a gizmo of the world's axes in the lower left corner (every renderer).
+struct Overlays {
+  bool edges = false;
+  bool grid = false;
+  bool axes = false;
+  bool any() const { return edges || grid || axes; }
+};
+
 // Which renderer draws the scene: the rasterizer (OpenGL's pipeline), a ray tracer, Whitted's
 // (1980) or Hall and Greenberg's (1983), on the same scene, lights and local equation, or a path
 // tracer solving Kajiya's rendering equation (1986) for the same lights and materials.
@@ -141,6 +151,7 @@ struct Scene {
   // (coverage and depth per sample, each pixel shaded once per triangle at its centre, resolved
   // with premultiplied alpha). The ray tracers take rayTracing.samples instead.
   int multisample = 1;
+  Overlays overlays;
 };
 
 // Reads a scene file; relative mesh paths are resolved against the file's folder.

@@ -56,6 +56,7 @@ class Framebuffer {
     stored = z;
     return true;
   }
+  Real depth(int x, int y) const { return depth_[index(x, y)]; }
   void writeColor(int x, int y, const Color4& c) {
     std::uint8_t* p = &color_[index(x, y) * 4];
     for (int i = 0; i < 4; ++i) p[i] = toUnorm8(c[i]);

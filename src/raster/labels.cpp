@@ -1,10 +1,12 @@
 #include "raster/labels.h"
 
 #include "image/text.h"
+#include "raster/overlay.h"
 
 namespace illum {
 
 bool drawLabels(Image& image, const Scene& scene) {
+  if (scene.overlays.axes) drawAxesGizmo(image, scene);
   if (scene.labels.empty()) return true;
   if (!labelFontAvailable()) return false;
   const Mat4 clipFromWorld =

@@ -6,7 +6,8 @@
 
 namespace illum {
 
-// Returns false when the scene has labels but the label font cannot be loaded.
+// The axes gizmo too, when the scene asks for it. Returns false when the scene has labels but the
+// label font cannot be loaded.
 bool drawLabels(Image& image, const Scene& scene);
 
 }  // namespace illum

@@ -9,6 +9,7 @@
 #include "raster/bin.h"
 #include "raster/draw.h"
 #include "raster/multisample.h"
+#include "raster/overlay.h"
 #include "raster/shade_tile.h"
 #include "shading/shade_points.h"
 #include "trace/ray_tracer.h"
@@ -157,12 +158,14 @@ void Renderer::render(const Scene& scene, Image& image, RenderStats* statsOut, P
   FrameContext frame = FrameContext::fromScene(scene);
   if (probe) probe->hit = false;
   const std::span<const SubpixelOffset> samples = multisamplePattern(scene.multisample);
+  const std::vector<OverlayLine> overlay = overlayLines(scene);
   RenderStats stats;
   if (samples.size() <= 1) {
     BinnedFrame pass(*state_, scene, frame, probe);
     for (const Object* object : drawingOrder(scene, frame))
       pass.drawObject(*object, std::uint32_t(object - scene.objects.data()));
     pass.flush();
+    drawOverlayLines(state_->fb, frame, overlay, 1);
     stats = pass.stats();
     finishFrame(state_->fb, scene, stats, image, linear);
   } else {
@@ -176,6 +179,7 @@ void Renderer::render(const Scene& scene, Image& image, RenderStats* statsOut, P
       for (const Object* object : drawingOrder(scene, frame))
         pass.drawObject(*object, std::uint32_t(object - scene.objects.data()));
       pass.flush();
+      drawOverlayLines(state_->fb, frame, overlay, 1);
       const RenderStats passStats = pass.stats();
       if (s == 0) stats = passStats;
       else stats.fragmentsShaded += passStats.fragmentsShaded;

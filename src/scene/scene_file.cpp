@@ -357,7 +357,7 @@ Scene parseScene(const std::string& text, const std::string& name, const std::fi
   const JsonReader j(root, name);
   j.expectObject({"version", "width", "height", "background", "model", "shading", "camera",
                   "light_model", "lights", "objects", "labels", "blend", "renderer", "max_depth", "shadows",
-                  "samples", "environment", "environment_map", "tone_map", "encoding", "multisample"});
+                  "samples", "environment", "environment_map", "tone_map", "encoding", "multisample", "overlays"});
   Scene s;
   if (j.has("version") && j.at("version").integer(0, std::numeric_limits<int>::max()) != 1)
     j.at("version").fail("expected version 1");
@@ -397,6 +397,13 @@ Scene parseScene(const std::string& text, const std::string& name, const std::fi
     const auto encoding = parseEncoding(e);
     if (!encoding) j.at("encoding").fail("expected \"linear\" or \"srgb\", got \"" + e + "\"");
     s.display.encoding = *encoding;
+  }
+  if (j.has("overlays")) {
+    const JsonReader o = j.at("overlays");
+    o.expectObject({"edges", "grid", "axes"});
+    if (o.has("edges")) s.overlays.edges = o.at("edges").boolean();
+    if (o.has("grid")) s.overlays.grid = o.at("grid").boolean();
+    if (o.has("axes")) s.overlays.axes = o.at("axes").boolean();
   }
   if (j.has("multisample")) {
     s.multisample = j.at("multisample").integer(1, 16);

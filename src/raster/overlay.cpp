@@ -1,0 +1,161 @@
+#include "raster/overlay.h"
+
+#include "image/text.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <unordered_set>
+
+namespace illum {
+namespace {
+
+constexpr Real kLineBias = Real(2e-5);  // window depth a line may lie behind the surface it is on
+
+// 1, 2 or 5 times a power of ten, the nearest at or above x.
+Real roundSpacing(Real x) {
+  const Real p = std::pow(Real(10), std::floor(std::log10(x)));
+  for (Real m : {Real(1), Real(2), Real(5), Real(10)})
+    if (m * p >= x) return m * p;
+  return 10 * p;
+}
+
+void addEdges(const Object& o, std::vector<OverlayLine>& out) {
+  const Color3 ink(0.04f, 0.04f, 0.05f);
+  const auto& idx = o.mesh->indices;
+  std::unordered_set<std::uint64_t> seen;
+  seen.reserve(idx.size());
+  for (std::size_t t = 0; t + 2 < idx.size(); t += 3)
+    for (int k = 0; k < 3; ++k) {
+      std::uint32_t a = idx[t + std::size_t(k)], b = idx[t + std::size_t((k + 1) % 3)];
+      // Vertices split for normals or uvs share positions: an edge is its two positions.
+      const Vec3 pa = o.mesh->positions[a], pb = o.mesh->positions[b];
+      if (pa == pb) continue;
+      if (b < a) std::swap(a, b);
+      if (!seen.insert(std::uint64_t(a) << 32 | b).second) continue;
+      out.push_back({Vec3(o.worldFromObject * Vec4(pa, 1)), Vec3(o.worldFromObject * Vec4(pb, 1)), ink});
+    }
+}
+
+void addGrid(const Scene& scene, std::vector<OverlayLine>& out) {
+  const Vec3 up = glm::normalize(scene.camera.up);
+  // Two directions across the up axis.
+  const Vec3 u = glm::normalize(std::abs(up.x) < Real(0.9) ? glm::cross(up, Vec3(1, 0, 0)) : glm::cross(up, Vec3(0, 0, 1)));
+  const Vec3 v = glm::cross(up, u);
+  Real lowest = std::numeric_limits<Real>::max();
+  Vec2 lo(std::numeric_limits<Real>::max()), hi(-std::numeric_limits<Real>::max());
+  for (const Object& o : scene.objects)
+    for (const Vec3& p : o.mesh->positions) {
+      const Vec3 w(o.worldFromObject * Vec4(p, 1));
+      lowest = std::min(lowest, glm::dot(w, up));
+      const Vec2 q(glm::dot(w, u), glm::dot(w, v));
+      lo = glm::min(lo, q), hi = glm::max(hi, q);
+    }
+  if (!(lowest < std::numeric_limits<Real>::max())) return;
+  // Half as wide again as the scene on every side, in about 20 cells.
+  const Vec2 centre = (lo + hi) * Real(0.5);
+  const Real half = std::max(Real(1e-3), std::max(hi.x - lo.x, hi.y - lo.y)) * Real(1.25);
+  const Real spacing = roundSpacing(2 * half / 20);
+  const int n = int(std::ceil(half / spacing));
+  const Vec2 origin(std::round(centre.x / spacing) * spacing, std::round(centre.y / spacing) * spacing);
+  const Color3 grey(0.45f, 0.46f, 0.48f);
+  const auto at = [&](Real a, Real b) { return a * u + b * v + lowest * up; };
+  for (int i = -n; i <= n; ++i) {
+    const Real a = origin.x + Real(i) * spacing, b = origin.y + Real(i) * spacing;
+    out.push_back({at(a, origin.y - Real(n) * spacing), at(a, origin.y + Real(n) * spacing), grey});
+    out.push_back({at(origin.x - Real(n) * spacing, b), at(origin.x + Real(n) * spacing, b), grey});
+  }
+}
+
+// Distance from p to the segment ab, and where along it (0..1) the nearest point is.
+std::pair<Real, Real> toSegment(const Vec2& p, const Vec2& a, const Vec2& b) {
+  const Vec2 d = b - a;
+  const Real len2 = glm::dot(d, d);
+  const Real t = len2 > 0 ? std::clamp(glm::dot(p - a, d) / len2, Real(0), Real(1)) : Real(0);
+  return {glm::length(a + t * d - p), t};
+}
+
+}  // namespace
+
+std::vector<OverlayLine> overlayLines(const Scene& scene) {
+  std::vector<OverlayLine> lines;
+  if (scene.overlays.grid) addGrid(scene, lines);
+  if (scene.overlays.edges)
+    for (const Object& o : scene.objects) addEdges(o, lines);
+  return lines;
+}
+
+void drawOverlayLines(Framebuffer& fb, const FrameContext& frame, std::span<const OverlayLine> lines, Real width) {
+  const Mat4 clipFromWorld = frame.clipFromView * frame.viewFromWorld;
+  const Vec2 sample(Real(frame.sample.x) / 256, Real(frame.sample.y) / 256);
+  const Real radius = width / 2;
+  for (const OverlayLine& line : lines) {
+    Vec4 a = clipFromWorld * Vec4(line.a, 1), b = clipFromWorld * Vec4(line.b, 1);
+    // Clip against the near plane (z ≥ −w).
+    const Real da = a.z + a.w, db = b.z + b.w;
+    if (da < 0 && db < 0) continue;
+    if (da < 0) a = a + (da / (da - db)) * (b - a);
+    if (db < 0) b = b + (db / (db - da)) * (a - b);
+    if (!(a.w > 0) || !(b.w > 0)) continue;
+    const auto window = [&](const Vec4& c) {
+      return Vec3((c.x / c.w + 1) * Real(0.5) * Real(frame.width), (c.y / c.w + 1) * Real(0.5) * Real(frame.height),
+                  (c.z / c.w + 1) * Real(0.5));
+    };
+    const Vec3 wa = window(a), wb = window(b);
+    const Real length = glm::length(Vec2(wb - wa));
+    if (!std::isfinite(length) || length > Real(1e5)) continue;
+    // In pieces of at most 16 pixels, each tested over its own small box.
+    const int pieces = std::max(1, int(std::ceil(length / 16)));
+    for (int k = 0; k < pieces; ++k) {
+      const Vec3 pa = wa + (Real(k) / Real(pieces)) * (wb - wa), pb = wa + (Real(k + 1) / Real(pieces)) * (wb - wa);
+      const int x0 = std::max(0, int(std::floor(std::min(pa.x, pb.x) - radius - 1)));
+      const int x1 = std::min(frame.width - 1, int(std::ceil(std::max(pa.x, pb.x) + radius + 1)));
+      const int y0 = std::max(0, int(std::floor(std::min(pa.y, pb.y) - radius - 1)));
+      const int y1 = std::min(frame.height - 1, int(std::ceil(std::max(pa.y, pb.y) + radius + 1)));
+      for (int y = y0; y <= y1; ++y)
+        for (int x = x0; x <= x1; ++x) {
+          const Vec2 p(Real(x) + Real(0.5) + sample.x, Real(y) + Real(0.5) + sample.y);
+          const auto [d, t] = toSegment(p, Vec2(pa), Vec2(pb));
+          if (d > radius) continue;
+          fb.clearTile(x, y);  // a tile no triangle touched is cleared now
+          const Real z = pa.z + t * (pb.z - pa.z);
+          if (z < 0 || z > 1 || z > fb.depth(x, y) + kLineBias) continue;
+          fb.writeColor(x, y, Color4(line.color, 1));
+        }
+    }
+  }
+}
+
+void drawAxesGizmo(Image& image, const Scene& scene) {
+  const Real size = std::clamp(Real(std::min(image.width, image.height)) / 10, Real(14), Real(48));
+  const Vec2 origin(size * Real(1.4), Real(image.height) - size * Real(1.4));  // row 0 at the top
+  const Mat3 viewFromWorld(scene.camera.viewFromWorld());
+  const Vec3 colours[3] = {{0.95f, 0.25f, 0.25f}, {0.3f, 0.85f, 0.3f}, {0.35f, 0.5f, 1}};
+  const char* names[3] = {"X", "Y", "Z"};
+  // The axis pointing most away from the viewer first, so the nearer ones are drawn over it.
+  int order[3] = {0, 1, 2};
+  std::sort(order, order + 3, [&](int i, int j) { return (viewFromWorld * Vec3(i == 0, i == 1, i == 2)).z <
+                                                         (viewFromWorld * Vec3(j == 0, j == 1, j == 2)).z; });
+  for (int i : order) {
+    const Vec3 d = viewFromWorld * Vec3(i == 0, i == 1, i == 2);
+    const Vec2 tip = origin + size * Vec2(d.x, -d.y);
+    const int x0 = std::max(0, int(std::floor(std::min(origin.x, tip.x) - 2))),
+              x1 = std::min(image.width - 1, int(std::ceil(std::max(origin.x, tip.x) + 2)));
+    const int y0 = std::max(0, int(std::floor(std::min(origin.y, tip.y) - 2))),
+              y1 = std::min(image.height - 1, int(std::ceil(std::max(origin.y, tip.y) + 2)));
+    for (int y = y0; y <= y1; ++y)
+      for (int x = x0; x <= x1; ++x) {
+        // Coverage of a line 2 pixels wide, by the pixel centre's distance from it.
+        const Real cover = std::clamp(Real(1.5) - toSegment(Vec2(Real(x) + 0.5f, Real(y) + 0.5f), origin, tip).first,
+                                      Real(0), Real(1));
+        if (cover <= 0) continue;
+        std::uint8_t* p = image.pixel(x, y);
+        for (int c = 0; c < 3; ++c) p[c] = std::uint8_t(std::lround(p[c] * (1 - cover) + colours[i][c] * 255 * cover));
+        p[3] = std::uint8_t(std::lround(p[3] * (1 - cover) + 255 * cover));
+      }
+    const Vec2 label = origin + (size + 9) * Vec2(d.x, -d.y);
+    drawText(image, label.x, label.y + 5, names[i], 13, colours[i]);
+  }
+}
+
+}  // namespace illum
