@@ -239,6 +239,8 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o) {
   cmd.add_flag("--edges", o.edges, "Draw every triangle's edges over the surfaces (rasterizer)");
   cmd.add_flag("--grid", o.grid, "Draw a ground grid under the scene (rasterizer)");
   cmd.add_flag("--axes", o.axes, "Draw the world's axes in the lower left corner");
+  cmd.add_flag("--ambient-occlusion", o.ambientOcclusion, "Scale the ambient term by ray-traced occlusion (rasterizer)");
+  cmd.add_flag("--no-ambient-occlusion", o.noAmbientOcclusion, "No ambient occlusion, even where the scene file asks for it");
   cmd.add_option("--up", o.up, "Model files: the up axis, +Y (default), -Y, +Z, -Z, +X or -X");
   cmd.add_option("--camera-position", o.cameraPosition, "Camera position x,y,z");
   cmd.add_option("--camera-focal-point", o.cameraFocalPoint, "Point the camera looks at x,y,z (models: the bounds' centre)");
@@ -385,6 +387,15 @@ Scene prepareScene(SceneOptions o, double* loadMs, ModelCache* cache) {
   scene.overlays.edges = scene.overlays.edges || o.edges;
   scene.overlays.grid = scene.overlays.grid || o.grid;
   scene.overlays.axes = scene.overlays.axes || o.axes;
+  if (o.ambientOcclusion && o.noAmbientOcclusion)
+    throw InputError("--ambient-occlusion and --no-ambient-occlusion: expected one of them, not both");
+  // Not on by default, even for previews: 8 rays a pixel cost 70-90 % of an 8-sample preview's time
+  // (docs/models.md), more than the third that would make it free enough.
+  if (o.ambientOcclusion || o.noAmbientOcclusion) scene.ambientOcclusion.enabled = o.ambientOcclusion;
+  if (o.ambientOcclusion && scene.renderer != RendererKind::Raster)
+    throw InputError(scene.renderer == RendererKind::Path
+                         ? "--ambient-occlusion: the path tracer computes the light that ambient occlusion approximates"
+                         : "--ambient-occlusion: the rasterizer's; the ray tracers keep the classic ambient term");
   if ((scene.overlays.edges || scene.overlays.grid) && scene.renderer != RendererKind::Raster)
     throw InputError(std::string(scene.overlays.edges ? "--edges" : "--grid") +
                      ": the rasterizer draws edges and grids; the ray tracers have no depth buffer to hide them with");

@@ -28,6 +28,7 @@ struct SceneOptions {
   std::optional<int> samples, maxDepth;
   bool noBackground = false;
   bool edges = false, grid = false, axes = false;
+  bool ambientOcclusion = false, noAmbientOcclusion = false;
   // Model files (f3d's names).
   std::string up, cameraPosition, cameraFocalPoint, cameraViewUp;
   std::optional<double> viewAngle, azimuth, elevation, zoom, lightIntensity, creaseAngle;

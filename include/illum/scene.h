@@ -95,6 +95,15 @@ struct Label {
 // Drawings over the picture that viewers of CAD models and scans expect: every triangle's edges,
 // a ground grid under the scene (both hidden where the surfaces hide them, rasterizer only), and
 // a gizmo of the world's axes in the lower left corner (every renderer).
+// Ambient occlusion: the ambient term scaled, pixel by pixel, by the fraction of the hemisphere
+// (cosine-weighted) that `rays` rays find open within `distance` (unset: a fifth of the scene's
+// diagonal). The rasterizer's; deterministic.
+struct AmbientOcclusion {
+  bool enabled = false;
+  int rays = 8;
+  std::optional<Real> distance;
+};
+
 struct Overlays {
   bool edges = false;
   bool grid = false;
@@ -152,6 +161,7 @@ struct Scene {
   // with premultiplied alpha). The ray tracers take rayTracing.samples instead.
   int multisample = 1;
   Overlays overlays;
+  AmbientOcclusion ambientOcclusion;
 };
 
 // Reads a scene file; relative mesh paths are resolved against the file's folder.

@@ -2,6 +2,7 @@
 
 #include "raster/fragment.h"
 #include "raster/labels.h"
+#include "trace/ambient_occlusion.h"
 
 #include <algorithm>
 #include <cstring>
@@ -146,8 +147,10 @@ void drawRecord(const DrawTarget& target, const DrawRecord& record, const PixelR
 
 namespace {
 
-// The linear values, the display encoding and the labels: the last steps of every picture.
+// Ambient occlusion, the linear values, the display encoding and the labels: the last steps of
+// every rasterized picture.
 void encodeAndLabel(const Scene& scene, RenderStats& stats, Image& image, FloatImage* linear) {
+  applyAmbientOcclusion(scene, image);
   if (linear) {
     *linear = FloatImage{image.width, image.height, std::vector<float>(image.rgba.size())};
     for (std::size_t i = 0; i < image.rgba.size(); ++i) linear->rgba[i] = float(image.rgba[i]) / 255;

@@ -357,7 +357,7 @@ Scene parseScene(const std::string& text, const std::string& name, const std::fi
   const JsonReader j(root, name);
   j.expectObject({"version", "width", "height", "background", "model", "shading", "camera",
                   "light_model", "lights", "objects", "labels", "blend", "renderer", "max_depth", "shadows",
-                  "samples", "environment", "environment_map", "tone_map", "encoding", "multisample", "overlays"});
+                  "samples", "environment", "environment_map", "tone_map", "encoding", "multisample", "overlays", "ambient_occlusion"});
   Scene s;
   if (j.has("version") && j.at("version").integer(0, std::numeric_limits<int>::max()) != 1)
     j.at("version").fail("expected version 1");
@@ -397,6 +397,17 @@ Scene parseScene(const std::string& text, const std::string& name, const std::fi
     const auto encoding = parseEncoding(e);
     if (!encoding) j.at("encoding").fail("expected \"linear\" or \"srgb\", got \"" + e + "\"");
     s.display.encoding = *encoding;
+  }
+  if (j.has("ambient_occlusion")) {
+    const JsonReader ao = j.at("ambient_occlusion");
+    if (ao.value().is_boolean()) {
+      s.ambientOcclusion.enabled = ao.boolean();
+    } else {
+      ao.expectObject({"rays", "distance"});
+      s.ambientOcclusion.enabled = true;
+      if (ao.has("rays")) s.ambientOcclusion.rays = ao.at("rays").integer(1, 256);
+      if (ao.has("distance")) s.ambientOcclusion.distance = ao.at("distance").number(Real(1e-6), Real(1e9));
+    }
   }
   if (j.has("overlays")) {
     const JsonReader o = j.at("overlays");

@@ -6,6 +6,7 @@
 #include "trace/camera_rays.h"
 #include "trace/path_tracer.h"
 #include "trace/ray_scene.h"
+#include "trace/sampling.h"
 #include "trace/whitted.h"
 
 #include <tbb/blocked_range.h>
@@ -26,16 +27,6 @@ constexpr int kTile = 16;   // pixels on a side of a parallel task
 constexpr int kBlock = 4;   // pixels on a side of a primary ray packet
 
 using Clock = std::chrono::steady_clock;
-
-// A pixel sample's seed: a hash of (x, y, sample) alone (SplitMix64's finalizer), so that jitter
-// and a path's random numbers are the same on every run and thread count.
-std::uint64_t sampleSeed(int x, int y, int sample, std::uint64_t salt) {
-  std::uint64_t r = (std::uint64_t(std::uint32_t(x)) << 40) ^ (std::uint64_t(std::uint32_t(y)) << 20) ^
-                    std::uint64_t(std::uint32_t(sample)) ^ (salt * 0x9E3779B97F4A7C15ull);
-  r = (r ^ (r >> 30)) * 0xBF58476D1CE4E5B9ull;
-  r = (r ^ (r >> 27)) * 0x94D049BB133111EBull;
-  return r ^ (r >> 31);
-}
 
 // A sample position's offset in its pixel.
 Vec2 jitter(int x, int y, int sample) {

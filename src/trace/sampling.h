@@ -31,6 +31,16 @@ class Rng {
   std::uint64_t state_ = 0, inc_;
 };
 
+// A pixel sample's seed: a hash of (x, y, sample, salt) alone (SplitMix64's finalizer), so that
+// jitter, paths and occlusion rays are the same on every run and thread count.
+inline std::uint64_t sampleSeed(int x, int y, int sample, std::uint64_t salt) {
+  std::uint64_t r = (std::uint64_t(std::uint32_t(x)) << 40) ^ (std::uint64_t(std::uint32_t(y)) << 20) ^
+                    std::uint64_t(std::uint32_t(sample)) ^ (salt * 0x9E3779B97F4A7C15ull);
+  r = (r ^ (r >> 30)) * 0xBF58476D1CE4E5B9ull;
+  r = (r ^ (r >> 27)) * 0x94D049BB133111EBull;
+  return r ^ (r >> 31);
+}
+
 // An orthonormal basis around a unit normal (Duff et al., "Building an Orthonormal Basis,
 // Revisited", JCGT 2017).
 struct Frame {
