@@ -3,7 +3,8 @@
 # side by side: bench/compare_f3d.sh [MODEL ...]
 # Without arguments it writes two test meshes to a scratch folder: a 2-million-triangle binary PLY
 # (an indexed sphere without normals) and a 100 MB binary STL (the same sphere as a triangle soup).
-# Prints wall time, CPU time and peak memory of each, rendering at 1000×600.
+# Prints wall time, CPU time and peak memory of each, rendering at 1000×600. illum draws one sample
+# per pixel here (--samples 1), as f3d does by default; its previews take 8 (multisampling) unless told.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 illum=build/apps/illum/illum
@@ -37,7 +38,7 @@ printf '|%s|%s|%s|%s|%s|\n' ------------------ -------- ---------- ---------- --
 for model in "${models[@]}"; do
   for tool in illum f3d; do
     if [ "$tool" = illum ]; then
-      /usr/bin/time -f '%e %U %S %M' -o "$work/t" "$illum" "$model" --resolution 1000,600 -o "$work/out.png" -q
+      /usr/bin/time -f '%e %U %S %M' -o "$work/t" "$illum" "$model" --resolution 1000,600 --samples 1 -o "$work/out.png" -q
     else
       xvfb-run -a /usr/bin/time -f '%e %U %S %M' -o "$work/t" f3d "$model" --resolution 1000,600 --output "$work/f3d.png"
     fi
