@@ -9,6 +9,7 @@
 #include "cli_values.h"
 #include "commands.h"
 #include "pixel_report.h"
+#include "render_options.h"
 #include "scene_options.h"
 
 #include <sys/stat.h>
@@ -28,14 +29,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-struct RenderOptions {
-  SceneOptions scene;
-  std::string output = "illum.png";
-  std::string debugPixel;
-  bool force = false;
-  bool quiet = false;
-  int bitDepth = 8;
-};
 
 // Whether `path` names the file standard output already goes to (/dev/stdout, /proc/self/fd/1, or
 // the file the shell redirected to): then the path is not printed after the PNG.
@@ -74,7 +67,7 @@ bool isExrPath(const std::string& path) {
   return ext == ".exr";
 }
 
-int runRender(const RenderOptions& o) {
+int renderPicture(const RenderOptions& o) {
   const ThreadLimit limit(o.scene);
   double loadMs = 0;
   Scene scene = prepareScene(o.scene, &loadMs);
@@ -152,6 +145,20 @@ int runRender(const RenderOptions& o) {
   return 0;
 }
 
+// One picture, or a batch (batch.cpp).
+int runRender(RenderOptions o) {
+  std::vector<BatchJob> jobs;
+  if (!o.inputs.empty()) jobs = expandInputs(o.inputs);
+  if (std::count_if(jobs.begin(), jobs.end(), [](const BatchJob& j) { return j.input == "-"; }) > 1)
+    throw InputError("-: standard input can be read once");
+  if (isBatch(o)) return runBatch(o, jobs);
+  if (o.output.empty()) o.output = "illum.png";
+  std::optional<StdinFile> stdinFile;
+  if (!jobs.empty() && jobs[0].input == "-") stdinFile.emplace(o.format);
+  o.scene.input = jobs.empty() ? "" : stdinFile ? stdinFile->path() : jobs[0].input;
+  return renderPicture(o);
+}
+
 }  // namespace
 
 Command addRenderCommand(CLI::App& app) {
@@ -162,10 +169,21 @@ Command addRenderCommand(CLI::App& app) {
       "A .json input is a scene file (docs/scene-format.md); anything else is a model file read by\n"
       "assimp (OBJ+MTL, PLY, STL, glTF/GLB, FBX, Collada, 3DS, ...), framed and lit automatically.\n"
       "Colours are R,G,B in [0,1] or #rrggbb; both are written to the image as they are (docs/cli.md).");
-  addSceneOptions(*cmd, o->scene);
+  addSceneOptions(*cmd, o->scene, &o->inputs);
   cmd->add_option("-o,--output", o->output,
-                  "Output PNG, or OpenEXR (linear, unclamped) when it ends in .exr; written atomically; - for standard "
-                  "output (PNG)")->capture_default_str();
+                  "Output PNG [illum.png], or OpenEXR (linear, unclamped) when it ends in .exr; written atomically; - for "
+                  "standard output (PNG). Many inputs: a template [{stem}.png] of {stem} {name} {ext} {dir} {n} {frame}; "
+                  "turntables: .gif, .webp, .mp4 (ffmpeg) or PNGs named with {frame}");
+  cmd->add_option("--output-dir", o->outputDir, "Many inputs: the folder the output names are in (made if missing)");
+  cmd->add_option("--format", o->format, "What standard input (-) holds: its extension (ply, stl, obj, glb, json, ...)");
+  cmd->add_option("--turntable", o->turntable, "Render N frames with the camera orbiting the up axis");
+  cmd->add_option("--orbit-light", o->orbitLight, "Render N frames with the key light orbiting the up axis");
+  cmd->add_option("--fps", o->fps, "Frames per second of .gif, .webp and .mp4 outputs")->capture_default_str();
+  cmd->add_option("--shard", o->shard, "I/N: render only the I-th (from 0) of N equal slices of the inputs (job arrays)");
+  cmd->add_flag("--skip-existing", o->skipExisting, "Skip inputs whose outputs exist (resume a batch)");
+  cmd->add_flag("--fail-fast", o->failFast, "Stop a batch at the first input that fails");
+  cmd->add_flag("--progress", o->progress, "Show the batch's progress bar even when stderr is not a terminal");
+  cmd->add_flag("--json", o->json, "Print one JSON line per input (input, output, times, triangles, warnings, error)");
   cmd->add_flag("-q,--quiet", o->quiet, "Do not print the output's path on standard output");
   cmd->add_option("--bit-depth", o->bitDepth, "PNG bits per channel: 8, or 16 (the display encoding at full precision)")
       ->capture_default_str();

@@ -218,8 +218,13 @@ ThreadLimit::ThreadLimit(const SceneOptions& o)
       control_(std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
                                                      std::size_t(threads_))) {}
 
-void addSceneOptions(CLI::App& cmd, SceneOptions& o) {
-  cmd.add_option("input", o.input, "Scene (.json) or model file; none renders the built-in scene");
+void addSceneOptions(CLI::App& cmd, SceneOptions& o, std::vector<std::string>* inputs) {
+  if (inputs)
+    cmd.add_option("inputs", *inputs,
+                   "Scene (.json) or model files, folders, patterns ('scans/**/*.ply'), - for standard input; none "
+                   "renders the built-in scene");
+  else
+    cmd.add_option("input", o.input, "Scene (.json) or model file; none renders the built-in scene");
   cmd.add_option("--width", o.width, "Image width in pixels")->check(CLI::Range(1, 16384));
   cmd.add_option("--height", o.height, "Image height in pixels")->check(CLI::Range(1, 16384));
   cmd.add_option("--resolution", o.resolution, "Image size W,H (models: 1000,600)");
@@ -266,7 +271,7 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o) {
   cmd.add_flag("-v,--verbose", o.verbose, "Print model statistics, bounds, times and peak memory on stderr");
 }
 
-Scene prepareScene(SceneOptions o, double* loadMs, ModelCache* cache) {
+Scene prepareScene(SceneOptions o, double* loadMs, ModelCache* cache, std::vector<std::string>* warnings) {
   const auto start = std::chrono::steady_clock::now();
   rejectConflicts(o);
   if (!o.resolution.empty()) parseResolution(o.resolution, o);
@@ -322,7 +327,10 @@ Scene prepareScene(SceneOptions o, double* loadMs, ModelCache* cache) {
     } else {
       model = importModel(o.input, importOptions(o));
       if (cache) cache->emplace(key, std::make_shared<const ImportedModel>(*model));
-      for (const std::string& w : model->warnings) std::fprintf(stderr, "illum: warning: %s\n", w.c_str());
+      for (const std::string& w : model->warnings) {
+        if (warnings) warnings->push_back(w);
+        else std::fprintf(stderr, "illum: warning: %s\n", w.c_str());
+      }
     }
     if (o.verbose && !cached) {
       std::fprintf(stderr, "illum: %s: %s vertices, %s triangles, %zu materials, %zu textures\n", o.input.c_str(),

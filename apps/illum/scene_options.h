@@ -51,7 +51,8 @@ class ThreadLimit {
   std::unique_ptr<tbb::global_control> control_;
 };
 
-void addSceneOptions(CLI::App& cmd, SceneOptions& o);
+// With `inputs`, the command takes any number of inputs there instead of one in o.input.
+void addSceneOptions(CLI::App& cmd, SceneOptions& o, std::vector<std::string>* inputs = nullptr);
 
 // Model files already imported, by path and import options (normals, crease angle), so that many
 // scenes of one model (a comparison sheet's panels) read it once.
@@ -60,7 +61,9 @@ using ModelCache = std::map<std::string, std::shared_ptr<const ImportedModel>>;
 // Loads or builds the scene the options describe, validated (exit-2 errors name the option);
 // warnings go to stderr, and with --verbose the model's statistics. `loadMs` is the time it took.
 // With a cache, a model file already in it is not read again (nor its warnings printed).
-Scene prepareScene(SceneOptions o, double* loadMs = nullptr, ModelCache* cache = nullptr);
+// With `warnings`, warnings are collected there instead of printed.
+Scene prepareScene(SceneOptions o, double* loadMs = nullptr, ModelCache* cache = nullptr,
+                   std::vector<std::string>* warnings = nullptr);
 
 // Peak resident memory of this process, MiB.
 double peakMemoryMiB();

@@ -35,6 +35,10 @@ ImportedModel importModel(const std::filesystem::path& path, const ImportOptions
 // The same, in this process (for the fuzzer and for the isolated child itself).
 ImportedModel importModelInProcess(const std::filesystem::path& path, const ImportOptions& options = {});
 
+// Whether assimp has a reader for files named so (by extension, case ignored): which files of a
+// folder a batch renders.
+bool isModelFileName(const std::filesystem::path& path);
+
 // The material illum derives from a file's: see docs/models.md for the mapping.
 struct FileMaterialValues {
   bool hasAmbient = false, hasSpecular = false, isMetallicRoughness = false;

@@ -337,6 +337,13 @@ bool hasDrawableTriangle(const Mesh& mesh) {
 
 }  // namespace
 
+bool isModelFileName(const fs::path& path) {
+  const std::string ext = lowerExtension(path);
+  if (ext.size() < 2) return false;
+  static const Assimp::Importer importer;
+  return importer.IsExtensionSupported(ext);
+}
+
 ImportedModel importModelInProcess(const fs::path& path, const ImportOptions& options) {
   std::error_code ec;
   if (!fs::exists(path, ec)) throw InputError(path.string() + ": no such model file");

@@ -2,6 +2,8 @@
 #include <illum/error.h>
 #include <illum/scene.h>
 
+#include <map>
+
 #include <illum/import.h>
 #include "scene/json_reader.h"
 
@@ -210,6 +212,9 @@ struct ReadContext {
   std::filesystem::path baseDir;
   Limits limits;
   std::uint64_t triangles = 0;
+  // Model files already read, by their path: a file several objects name is read once, and its
+  // meshes and textures are shared between them.
+  std::map<std::string, std::shared_ptr<const ImportedModel>> models;
 
   void charge(const JsonReader& j, std::uint64_t count) {
     triangles += count;
@@ -226,11 +231,16 @@ ImportedModel readModelFile(const JsonReader& j, ReadContext& context) {
   const std::filesystem::path rel = j.at("path").string();
   const std::filesystem::path full = rel.is_absolute() ? rel : baseDir / rel;
   try {
-    ImportOptions options;
-    options.limits = context.limits;
-    ImportedModel model = importModel(full, options);
-    context.charge(j.at("path"), model.triangleCount);
-    return model;
+    std::error_code ec;
+    const std::string key = std::filesystem::weakly_canonical(full, ec).string();
+    auto& cached = context.models[ec ? full.string() : key];
+    if (!cached) {
+      ImportOptions options;
+      options.limits = context.limits;
+      cached = std::make_shared<const ImportedModel>(importModel(full, options));
+    }
+    context.charge(j.at("path"), cached->triangleCount);
+    return *cached;
   } catch (const InputError& e) {
     j.at("path").fail(e.what());
   }

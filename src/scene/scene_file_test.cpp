@@ -331,3 +331,20 @@ TEST(SceneFile, ReadsTheDisplayKeys) {
 
 }  // namespace
 }  // namespace illum
+
+namespace illum {
+namespace {
+
+// A model file several objects name is read once: its meshes are shared between them.
+TEST(SceneFile, AModelFileNamedManyTimesIsReadOnce) {
+  std::string objects;
+  for (int i = 0; i < 8; ++i)
+    objects += std::string(i ? "," : "") + R"({"mesh": {"type": "file", "path": "/usr/share/assimp/models/PLY/Wuson.ply"},
+                                              "transform": [{"translate": [)" + std::to_string(i) + ", 0, 0]}]}";
+  const Scene s = parseScene(R"({"objects": [)" + objects + "]}", "scene.json", ".");
+  ASSERT_EQ(s.objects.size(), 8u);
+  for (const Object& o : s.objects) EXPECT_EQ(o.mesh.get(), s.objects[0].mesh.get());
+}
+
+}  // namespace
+}  // namespace illum

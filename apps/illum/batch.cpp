@@ -1,0 +1,325 @@
+// `illum render` over many inputs in one process: a folder of models to thumbnails, a turntable
+// to a GIF. Jobs run in order, each with every core; a failing input is reported and the rest go
+// on (unless --fail-fast); every picture is written atomically; Ctrl-C stops after the picture in
+// hand; --shard I/N renders one slice of the list, for cluster job arrays.
+#include <illum/animation.h>
+#include <illum/error.h>
+#include <illum/image.h>
+#include <illum/output_file.h>
+#include <illum/render.h>
+
+#include "render_options.h"
+
+#include <nlohmann/json.hpp>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <unistd.h>
+
+namespace illum::cli {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+std::atomic<bool> gInterrupted{false};
+
+// The first Ctrl-C asks the batch to stop after the picture in hand; a second one stops at once.
+void onInterrupt(int) {
+  gInterrupted = true;
+  std::signal(SIGINT, SIG_DFL);
+}
+
+std::string lower(std::string s) {
+  for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+enum class Container { Png, Gif, Webp, Mp4 };
+Container containerOf(const std::string& path) {
+  const std::string ext = lower(fs::path(path).extension().string());
+  return ext == ".gif" ? Container::Gif : ext == ".webp" ? Container::Webp : ext == ".mp4" ? Container::Mp4 : Container::Png;
+}
+
+bool onPath(const char* program) {
+  const char* path = std::getenv("PATH");
+  std::string dirs = path ? path : "";
+  std::size_t start = 0;
+  while (start <= dirs.size()) {
+    const std::size_t end = std::min(dirs.find(':', start), dirs.size());
+    const fs::path candidate = fs::path(dirs.substr(start, end - start)) / program;
+    if (::access(candidate.c_str(), X_OK) == 0) return true;
+    start = end + 1;
+  }
+  return false;
+}
+
+// MP4 through ffmpeg, when it is installed: raw RGBA frames down a pipe into a temporary file,
+// which is then written in place of the output as every output is.
+std::vector<std::uint8_t> encodeMp4(const std::vector<Image>& frames, int fps) {
+  if (!onPath("ffmpeg")) throw InputError("an .mp4 output needs ffmpeg on the PATH (apt-get install ffmpeg); .gif and .webp need nothing");
+  const fs::path temp = fs::temp_directory_path() / ("illum_" + std::to_string(::getpid()) + ".mp4");
+  const int w = frames[0].width & ~1, h = frames[0].height & ~1;  // H.264's 4:2:0 wants even sizes
+  const std::string command = "ffmpeg -loglevel error -y -f rawvideo -pixel_format rgba -video_size " +
+                              std::to_string(frames[0].width) + "x" + std::to_string(frames[0].height) + " -framerate " +
+                              std::to_string(fps) + " -i - -vf crop=" + std::to_string(w) + ":" + std::to_string(h) +
+                              ":0:0 -pix_fmt yuv420p -movflags +faststart '" + temp.string() + "'";
+  FILE* pipe = ::popen(command.c_str(), "w");
+  if (!pipe) throw Error("cannot start ffmpeg");
+  for (const Image& f : frames) std::fwrite(f.rgba.data(), 1, f.rgba.size(), pipe);
+  const int status = ::pclose(pipe);
+  std::ifstream in(temp, std::ios::binary);
+  std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  fs::remove(temp);
+  if (status != 0 || bytes.empty()) throw Error("ffmpeg could not encode the MP4");
+  return bytes;
+}
+
+// Turns the camera (turntable) or the first light (orbit) about the camera's up axis through the
+// point it looks at, by `degrees`.
+void orbit(Scene& scene, Real degrees, bool light) {
+  const Vec3 axis = glm::normalize(scene.camera.up), centre = scene.camera.center;
+  const Mat4 turn = glm::translate(Mat4(1), centre) * glm::rotate(Mat4(1), glm::radians(degrees), axis) *
+                    glm::translate(Mat4(1), -centre);
+  if (!light) {
+    scene.camera.eye = Vec3(turn * Vec4(scene.camera.eye, 1));
+    return;
+  }
+  if (scene.lights.empty()) return;
+  Light& l = scene.lights.front();
+  l.position = l.position.w == 0 ? Vec4(Mat3(turn) * Vec3(l.position), 0) : turn * (l.position / l.position.w);
+  l.spotDirection = Mat3(turn) * l.spotDirection;
+}
+
+// "illum: [########------] 12/40 · 3.1 pictures/s · about 9 s left · 1 failed", redrawn in place.
+class BatchProgress {
+ public:
+  BatchProgress(std::size_t total, bool shown) : total_(total), shown_(shown) {}
+  void update(std::size_t done, std::size_t failed) {
+    if (!shown_) return;
+    const double elapsed = std::chrono::duration<double>(Clock::now() - start_).count();
+    const double rate = elapsed > 0 ? double(done) / elapsed : 0;
+    const int width = 24, filled = total_ ? int(width * done / total_) : width;
+    std::string bar(std::size_t(filled), '#');
+    bar.append(std::size_t(width - filled), '-');
+    std::fprintf(stderr, "\r\033[Killum: [%s] %zu/%zu · %.1f pictures/s", bar.c_str(), done, total_, rate);
+    if (rate > 0 && done < total_) std::fprintf(stderr, " · about %.0f s left", double(total_ - done) / rate);
+    if (failed) std::fprintf(stderr, " · %zu failed", failed);
+    std::fflush(stderr);
+    drawn_ = true;
+  }
+  // A line of its own (an error) above the bar.
+  void say(const std::string& line) {
+    if (drawn_) std::fprintf(stderr, "\r\033[K");
+    std::fprintf(stderr, "%s\n", line.c_str());
+  }
+  void finish() {
+    if (drawn_) std::fprintf(stderr, "\n");
+  }
+
+ private:
+  std::size_t total_;
+  bool shown_, drawn_ = false;
+  Clock::time_point start_ = Clock::now();
+};
+
+struct JobResult {
+  std::vector<std::string> outputs;
+  std::vector<std::string> warnings;
+  std::size_t triangles = 0;
+  double loadMs = 0, renderMs = 0, encodeMs = 0;
+  bool skipped = false;
+};
+
+double msBetween(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); }
+
+JobResult renderJob(const RenderOptions& o, const BatchJob& job, const std::string& input, const std::string& pattern,
+                    Renderer& renderer) {
+  JobResult result;
+  const int frames = std::max({1, o.turntable, o.orbitLight});
+  const Container container = containerOf(expandTemplate(pattern, job, 0));
+  const bool animation = container != Container::Png;
+  if (frames > 1 && !animation && pattern.find("{frame") == std::string::npos)
+    throw InputError("-o: " + std::to_string(frames) + " frames need {frame} in the name (\"{stem}_{frame:03}.png\"), or a "
+                     ".gif, .webp or .mp4 output");
+  std::vector<std::string> names;
+  for (int f = 0; f < (animation ? 1 : frames); ++f) names.push_back(expandTemplate(pattern, job, f));
+  if (o.skipExisting && std::all_of(names.begin(), names.end(), [](const std::string& n) {
+        std::error_code ec;
+        return fs::is_regular_file(n, ec) && fs::file_size(n, ec) > 0;
+      })) {
+    result.outputs = names;
+    result.skipped = true;
+    return result;
+  }
+  ModelCache cache;
+  std::vector<Image> pictures;
+  for (int f = 0; f < frames && !(f > 0 && gInterrupted); ++f) {
+    SceneOptions so = o.scene;
+    so.input = input;
+    const Real degrees = Real(360) * Real(f) / Real(frames);
+    // A model's light rig follows its camera: its turntable turns the camera by its azimuth.
+    const bool model = !input.empty() && lower(fs::path(input).extension().string()) != ".json";
+    if (o.turntable && model) so.azimuth = so.azimuth.value_or(35) + double(degrees);
+    const auto start = Clock::now();
+    double loadMs = 0;
+    Scene scene = prepareScene(so, &loadMs, &cache, f == 0 ? &result.warnings : nullptr);
+    if (o.turntable && !model) orbit(scene, degrees, false);
+    if (o.orbitLight) orbit(scene, degrees, true);
+    const auto loaded = Clock::now();
+    Image image;
+    RenderStats stats;
+    if (o.bitDepth == 16 && !animation) {
+      FloatImage linear;
+      renderer.render(scene, image, &stats, nullptr, &linear);
+      const auto rendered = Clock::now();
+      writeOutputFile(names[std::size_t(f)], encodePng16(image.width, image.height, picture16(scene, linear)), OutputOptions{o.force});
+      result.encodeMs += msBetween(rendered, Clock::now());
+      result.renderMs += msBetween(loaded, rendered);
+    } else {
+      renderer.render(scene, image, &stats);
+      const auto rendered = Clock::now();
+      result.renderMs += msBetween(loaded, rendered);
+      if (animation) {
+        pictures.push_back(std::move(image));
+      } else {
+        writeOutputFile(names[std::size_t(f)], encodePng(image), OutputOptions{o.force});
+        result.encodeMs += msBetween(rendered, Clock::now());
+      }
+    }
+    result.loadMs += msBetween(start, loaded);
+    result.triangles = stats.trianglesIn;
+  }
+  if (animation) {
+    if (gInterrupted && int(pictures.size()) < frames) return result;  // nothing half-made is written
+    const auto start = Clock::now();
+    const int delay = 1000 / std::max(1, o.fps);
+    const std::vector<std::uint8_t> bytes = container == Container::Gif    ? encodeGif(pictures, delay)
+                                            : container == Container::Webp ? encodeWebp(pictures, delay)
+                                                                           : encodeMp4(pictures, o.fps);
+    writeOutputFile(names[0], bytes, OutputOptions{o.force});
+    result.encodeMs += msBetween(start, Clock::now());
+  }
+  result.outputs = names;
+  return result;
+}
+
+}  // namespace
+
+bool isBatch(const RenderOptions& o) {
+  if (o.inputs.size() > 1 || !o.shard.empty() || o.turntable > 0 || o.orbitLight > 0 || !o.outputDir.empty() || o.json ||
+      o.skipExisting || isTemplate(o.output))
+    return true;
+  for (const std::string& in : o.inputs) {
+    std::error_code ec;
+    if (in != "-" && (fs::is_directory(in, ec) || (in.find_first_of("*?[") != std::string::npos && !fs::exists(in, ec))))
+      return true;
+  }
+  return false;
+}
+
+int runBatch(const RenderOptions& o, const std::vector<BatchJob>& allJobs) {
+  if (!o.debugPixel.empty()) throw InputError("--debug-pixel: reports one picture; render one input for it");
+  if (o.output == "-") throw InputError("-o -: standard output takes one picture; render one input for it");
+  if (o.turntable && o.orbitLight) throw InputError("--turntable and --orbit-light: expected one of them");
+  if (o.turntable < 0 || o.orbitLight < 0 || o.turntable > 3600 || o.orbitLight > 3600)
+    throw InputError("--turntable, --orbit-light: expected 1 to 3600 frames");
+  if (o.fps < 1 || o.fps > 120) throw InputError("--fps: expected 1 to 120 frames per second");
+  if (o.bitDepth != 8 && o.bitDepth != 16) throw InputError("--bit-depth: expected 8 or 16, got " + std::to_string(o.bitDepth));
+  const std::vector<BatchJob> jobs = o.shard.empty() ? allJobs : shardOf(allJobs, o.shard);
+  const bool frames = o.turntable > 0 || o.orbitLight > 0;
+  std::string pattern = o.output.empty() ? (frames ? "{stem}.gif" : "{stem}.png") : o.output;
+  if (!isTemplate(pattern) && allJobs.size() > 1)
+    throw InputError("-o " + pattern + ": " + std::to_string(allJobs.size()) +
+                     " inputs need different names: use a template such as '{stem}.png' (fields {stem} {name} {ext} {dir} {n} {frame})");
+  if (!o.outputDir.empty()) pattern = (fs::path(o.outputDir) / pattern).string();
+  // Every output named before anything is drawn: two inputs may not write one file.
+  std::map<std::string, std::string> owner;
+  for (const BatchJob& job : allJobs) {
+    const std::string name = expandTemplate(pattern, job, 0);
+    if (auto [it, fresh] = owner.try_emplace(fs::path(name).lexically_normal().string(), job.input); !fresh)
+      throw InputError("-o: " + it->second + " and " + job.input + " would both be written to " + name +
+                       "; add {dir} or {n} to the template");
+  }
+  std::optional<StdinFile> stdinFile;
+  for (const BatchJob& job : jobs)
+    if (job.input == "-") stdinFile.emplace(o.format);
+  if (!o.outputDir.empty()) {
+    std::error_code ec;
+    fs::create_directories(o.outputDir, ec);
+    if (ec) throw Error(o.outputDir + ": cannot create the output folder: " + ec.message());
+  }
+
+  const ThreadLimit limit(o.scene);
+  const bool terminal = ::isatty(STDERR_FILENO) != 0;
+  BatchProgress progress(jobs.size(), !o.quiet && (o.progress || (terminal && !o.json)));
+  gInterrupted = false;
+  const auto previous = std::signal(SIGINT, onInterrupt);
+  Renderer renderer;
+  std::size_t done = 0, failed = 0, inputErrors = 0;
+  for (const BatchJob& job : jobs) {
+    if (gInterrupted) break;
+    const std::string input = job.input == "-" ? stdinFile->path() : job.input;
+    nlohmann::json line = {{"input", job.input}};
+    try {
+      // Folders the template names are made as needed.
+      const fs::path first = expandTemplate(pattern, job, 0);
+      if (first.has_parent_path()) fs::create_directories(first.parent_path());
+      const JobResult r = renderJob(o, job, input, pattern, renderer);
+      line["output"] = r.outputs.size() == 1 ? nlohmann::json(r.outputs[0]) : nlohmann::json(r.outputs);
+      line["ok"] = true;
+      line["skipped"] = r.skipped;
+      line["triangles"] = r.triangles;
+      line["load_ms"] = r.loadMs, line["render_ms"] = r.renderMs, line["encode_ms"] = r.encodeMs;
+      line["warnings"] = r.warnings;
+      if (!o.json && !o.quiet)
+        for (const std::string& w : r.warnings) progress.say("illum: warning: " + w);
+      if (!o.json && !o.quiet && !terminal && !o.progress)
+        for (const std::string& out : r.outputs) std::printf("%s\n", out.c_str());
+    } catch (const std::exception& e) {
+      ++failed;
+      const bool input = dynamic_cast<const InputError*>(&e) != nullptr;
+      inputErrors += input;
+      line["ok"] = false;
+      line["error"] = e.what();
+      progress.say(std::string("illum: error: ") + (std::string(e.what()).rfind(job.input, 0) == 0 ? "" : job.input + ": ") + e.what());
+    }
+    ++done;
+    if (o.json) std::printf("%s\n", line.dump().c_str()), std::fflush(stdout);
+    progress.update(done, failed);
+    if (failed && o.failFast) break;
+  }
+  progress.finish();
+  std::signal(SIGINT, previous);
+  if (gInterrupted) {
+    std::fprintf(stderr, "illum: interrupted after %zu of %zu pictures; --skip-existing resumes\n", done, jobs.size());
+    return 130;
+  }
+  if (failed && !o.quiet)
+    std::fprintf(stderr, "illum: %zu of %zu inputs failed%s\n", failed, jobs.size(), o.failFast ? " (--fail-fast)" : "");
+  return failed == 0 ? 0 : failed == inputErrors ? 2 : 1;
+}
+
+StdinFile::StdinFile(const std::string& format) {
+  if (format.empty() || format.find_first_of("/\\. ") != std::string::npos)
+    throw InputError("-: standard input needs --format, the extension of what it holds (--format ply, --format json)");
+  path_ = (fs::temp_directory_path() / ("illum_stdin_" + std::to_string(::getpid()) + "." + format)).string();
+  std::ofstream out(path_, std::ios::binary);
+  out << std::cin.rdbuf();
+  if (!out) throw Error("cannot save standard input to " + path_);
+}
+
+StdinFile::~StdinFile() {
+  std::error_code ec;
+  fs::remove(path_, ec);
+}
+
+}  // namespace illum::cli
