@@ -11,6 +11,7 @@
 #include "commands.h"
 #include "scene_options.h"
 #include "sheet_axes.h"
+#include "sheet_output.h"
 
 #include <algorithm>
 #include <cmath>
@@ -28,12 +29,6 @@ struct CompareOptions {
   bool force = false, quiet = false;
 };
 
-constexpr int kDefaultPanelWidth = 400;
-
-std::string inputName(const SceneOptions& o) {
-  return o.input.empty() ? "the built-in scene" : std::filesystem::path(o.input).filename().string();
-}
-
 std::string figures(const DifferencePanel& d) {
   char text[96];
   if (std::isinf(d.psnr)) std::snprintf(text, sizeof text, "identical");
@@ -45,14 +40,8 @@ int runCompare(const CompareOptions& o) {
   const ThreadLimit limit(o.scene);
   ModelCache cache;
   SceneOptions base = o.scene;
-  // The panels' size: as asked, else the scene's (a model's 1000×600) scaled to 400 pixels wide.
-  const bool sized = base.width || base.height || !base.resolution.empty();
   const Scene first = prepareScene(base, nullptr, &cache);
-  if (!sized) {
-    const int w = std::min(first.width, kDefaultPanelWidth);
-    base.width = w;
-    base.height = std::max(1, int(std::lround(double(first.height) * w / first.width)));
-  }
+  defaultPanelSize(base, first);
   const SheetAxis rows = parseSheetAxis("--rows", o.rows, first.lights.size());
   const SheetAxis cols = parseSheetAxis("--cols", o.cols, first.lights.size());
   if (rows.name == cols.name) throw InputError("--rows and --cols: expected two different axes, got " + rows.name + " twice");
@@ -114,17 +103,8 @@ int runCompare(const CompareOptions& o) {
     sheet.rowLabels.push_back(rows.values[diffRows->first] + " vs " + rows.values[diffRows->second]);
   }
 
-  const Image out = composeSheet(sheet);
-  if (o.scene.verbose) {
-    const SheetLayout layout = layoutSheet(sheet);
-    for (std::size_t r = 0; r < sheet.panels.size(); ++r)
-      for (std::size_t c = 0; c < sheet.panels[r].size(); ++c)
-        std::fprintf(stderr, "illum: panel %zu,%zu (%s / %s) at %d,%d, %dx%d\n", r, c, sheet.rowLabels[r].c_str(),
-                     sheet.columnLabels[c].c_str(), layout.panelOrigin[r][c].first, layout.panelOrigin[r][c].second,
-                     sheet.panels[r][c].image.width, sheet.panels[r][c].image.height);
-  }
-  writeOutputFile(o.output, encodePng(out), OutputOptions{o.force});
-  if (!o.quiet) std::printf("%s\n", o.output.c_str());
+  writeSheet(sheet, {o.output, o.force, o.quiet, o.scene.verbose},
+             [&](std::size_t r, std::size_t c) { return sheet.rowLabels[r] + " / " + sheet.columnLabels[c]; });
   return 0;
 }
 

@@ -9,6 +9,7 @@
 
 #include "commands.h"
 #include "scene_options.h"
+#include "sheet_output.h"
 
 #include <algorithm>
 #include <cmath>
@@ -46,7 +47,7 @@ constexpr Step kSteps[] = {
     {"1983", "Hall, Greenberg", "kr F and kt (1−F): Fresnel-weighted, filtered", "blinn-phong", "phong", "hall"},
     {"1986", "Kajiya", "L = Lₑ + ∫ f Lᵢ cos θ dω, path traced", "cook-torrance", "phong", "path"},
 };
-constexpr int kColumns = 3, kDefaultPanelWidth = 400;
+constexpr int kColumns = 3;
 
 // Wylie et al. lit their half-tone pictures from the observer: one light at the eye, as bright as
 // the distance to what is looked at, so that the middle of the picture has its full colour.
@@ -64,14 +65,9 @@ int runHistory(const HistoryOptions& o) {
     throw InputError("--model, --shading and --renderer: the history sets them panel by panel; use `illum render` for one");
   ModelCache cache;
   SceneOptions base = o.scene;
-  if (!base.width && !base.height && base.resolution.empty()) {
-    const Scene first = prepareScene(base, nullptr, &cache);
-    base.width = std::min(first.width, kDefaultPanelWidth);
-    base.height = std::max(1, int(std::lround(double(first.height) * *base.width / first.width)));
-  }
+  if (!base.width && !base.height && base.resolution.empty()) defaultPanelSize(base, prepareScene(base, nullptr, &cache));
   Sheet sheet;
-  sheet.title = "Lighting from Wylie (1967) to Kajiya (1986): " +
-                (o.scene.input.empty() ? std::string("the built-in scene") : std::filesystem::path(o.scene.input).filename().string());
+  sheet.title = "Lighting from Wylie (1967) to Kajiya (1986): " + inputName(o.scene);
   Renderer renderer;
   int index = 0;
   for (const Step& step : kSteps) {
@@ -88,19 +84,10 @@ int runHistory(const HistoryOptions& o) {
     sheet.panels.back().push_back({std::move(image), std::string(step.year) + " · " + step.authors + "\n" + step.formula});
     ++index;
   }
-  const Image out = composeSheet(sheet);
-  if (o.scene.verbose) {
-    const SheetLayout layout = layoutSheet(sheet);
-    for (std::size_t r = 0; r < sheet.panels.size(); ++r)
-      for (std::size_t c = 0; c < sheet.panels[r].size(); ++c) {
-        const Step& step = kSteps[r * kColumns + c];
-        std::fprintf(stderr, "illum: panel %zu,%zu (%s / %s %s %s) at %d,%d, %dx%d\n", r, c, step.year, step.model,
-                     step.shading, step.renderer, layout.panelOrigin[r][c].first, layout.panelOrigin[r][c].second,
-                     sheet.panels[r][c].image.width, sheet.panels[r][c].image.height);
-      }
-  }
-  writeOutputFile(o.output, encodePng(out), OutputOptions{o.force});
-  if (!o.quiet) std::printf("%s\n", o.output.c_str());
+  writeSheet(sheet, {o.output, o.force, o.quiet, o.scene.verbose}, [](std::size_t r, std::size_t c) {
+    const Step& step = kSteps[r * kColumns + c];
+    return std::string(step.year) + " / " + step.model + " " + step.shading + " " + step.renderer;
+  });
   return 0;
 }
 

@@ -1,0 +1,39 @@
+#include "sheet_output.h"
+
+#include <illum/image.h>
+#include <illum/output_file.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+namespace illum::cli {
+
+constexpr int kDefaultPanelWidth = 400;
+
+void defaultPanelSize(SceneOptions& o, const Scene& first) {
+  if (o.width || o.height || !o.resolution.empty()) return;
+  o.width = std::min(first.width, kDefaultPanelWidth);
+  o.height = std::max(1, int(std::lround(double(first.height) * *o.width / first.width)));
+}
+
+std::string inputName(const SceneOptions& o) {
+  return o.input.empty() ? "the built-in scene" : std::filesystem::path(o.input).filename().string();
+}
+
+void writeSheet(const Sheet& sheet, const SheetOutput& out, const std::function<std::string(std::size_t, std::size_t)>& describe) {
+  const Image image = composeSheet(sheet);
+  if (out.verbose) {
+    const SheetLayout layout = layoutSheet(sheet);
+    for (std::size_t r = 0; r < sheet.panels.size(); ++r)
+      for (std::size_t c = 0; c < sheet.panels[r].size(); ++c)
+        std::fprintf(stderr, "illum: panel %zu,%zu (%s) at %d,%d, %dx%d\n", r, c, describe(r, c).c_str(),
+                     layout.panelOrigin[r][c].first, layout.panelOrigin[r][c].second, sheet.panels[r][c].image.width,
+                     sheet.panels[r][c].image.height);
+  }
+  writeOutputFile(out.path, encodePng(image), OutputOptions{out.force});
+  if (!out.quiet) std::printf("%s\n", out.path.c_str());
+}
+
+}  // namespace illum::cli

@@ -1,0 +1,29 @@
+// What `illum compare` and `illum history` share: the panels' default size, the input's name for
+// the title, and writing the sheet (with -v, where each panel landed).
+#pragma once
+
+#include <illum/sheet.h>
+
+#include "scene_options.h"
+
+#include <functional>
+#include <string>
+
+namespace illum::cli {
+
+// Unless the options size the pictures, panels are the scene's size scaled to 400 pixels wide (a
+// model's 1000×600: 400×240); `first` is the scene as the options make it.
+void defaultPanelSize(SceneOptions& o, const Scene& first);
+
+// "the built-in scene", or the input file's name.
+std::string inputName(const SceneOptions& o);
+
+struct SheetOutput {
+  std::string path;
+  bool force = false, quiet = false, verbose = false;
+};
+
+// Composes and writes the sheet; with verbose, one line per panel naming it by `describe(r, c)`.
+void writeSheet(const Sheet& sheet, const SheetOutput& out, const std::function<std::string(std::size_t, std::size_t)>& describe);
+
+}  // namespace illum::cli
