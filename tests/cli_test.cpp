@@ -321,7 +321,7 @@ TEST(CliValues, ModelCameraOptionsAreValidatedLikeSceneCameras) {
   EXPECT_EQ(zero.exitCode, 2);
   EXPECT_NE(zero.err.find("--camera-view-up: expected a non-zero up direction"), std::string::npos) << zero.err;
   const RunResult parallel =
-      run("render " + model + " --camera-view-up 0,1,0 --camera-elevation-angle 90 -o " + (dir / "a.png").string());
+      run("render " + model + " --up=+Y --camera-view-up 0,1,0 --camera-elevation-angle 90 -o " + (dir / "a.png").string());
   EXPECT_EQ(parallel.exitCode, 2);
   EXPECT_NE(parallel.err.find("--camera-view-up: expected an up direction not parallel"), std::string::npos) << parallel.err;
   EXPECT_FALSE(fs::exists(dir / "a.png"));

@@ -377,3 +377,33 @@ TEST(ModelColour, PreviewsAreSrgbAndLinearOnRequest) {
 
 }  // namespace
 }  // namespace illum
+
+namespace illum {
+namespace {
+
+// The up axis comes from the file where the format says it: STL is +Z up (and --up still rules).
+TEST(ModelDefaults, StlIsZUpUnlessToldOtherwise) {
+  const fs::path spider = kModels / "STL/Spider_binary.stl";
+  const Image byDefault = renderModel(spider), zUp = renderModel(spider, "--up=+Z"), yUp = renderModel(spider, "--up=+Y");
+  EXPECT_EQ(byDefault.rgba, zUp.rgba);
+  EXPECT_NE(byDefault.rgba, yUp.rgba);
+}
+
+// --color, --opacity and --geometry-only override the file's materials.
+TEST(ModelDefaults, MaterialOverrides) {
+  const fs::path box = kModels / "glTF2/BoxTextured-glTF-Binary/BoxTextured.glb";
+  EXPECT_GT(dominated(renderModel(box, "--color 0.9,0.1,0.1"), 0), 10000);  // red all over
+  const Image geometry = renderModel(box, "--geometry-only --encoding linear");
+  EXPECT_EQ(dominated(geometry, 1, 20) + dominated(geometry, 2, 20), 0);  // no green or blue logo: grey
+  const Image seeThrough = renderModel(box, "--opacity 0.5 --no-background");
+  EXPECT_GT(seeThrough.pixel(200, 150)[3], 0);
+  EXPECT_LT(seeThrough.pixel(200, 150)[3], 255);
+  TempDir dir;
+  const auto r = runIllum("render " + std::string(ILLUM_EXAMPLES_DIR) + "/shininess.json --color 1,0,0 -o " +
+                          (dir / "x.png").string());
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("--color"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace illum

@@ -150,6 +150,42 @@ void rejectConflicts(const SceneOptions& o) {
     throw InputError("--camera-view-angle: an orthographic camera has no view angle; drop it or --orthographic");
 }
 
+// --geometry-only, --color, --opacity: for files whose materials are black, invisible or beside the
+// point. A colour replaces the file's colours (and the textures and vertex colours that carry them).
+void overrideMaterials(const SceneOptions& o, std::vector<Object>& objects) {
+  if (!o.geometryOnly && o.color.empty() && !o.opacity) return;
+  std::optional<Color3> colour;
+  if (!o.color.empty()) colour = parseColor("--color", o.color, true);
+  if (o.opacity && !(*o.opacity >= 0 && *o.opacity <= 1)) throw InputError("--opacity: expected a number in [0, 1]");
+  std::map<const Mesh*, std::shared_ptr<const Mesh>> colourless;
+  for (Object& obj : objects) {
+    if (o.geometryOnly || colour) {
+      if (o.geometryOnly) obj.material = defaultModelMaterial();
+      obj.diffuseTexture = nullptr;
+      obj.maps = {};
+      if (!obj.mesh->colors.empty()) {
+        auto& copy = colourless[obj.mesh.get()];
+        if (!copy) {
+          auto mesh = std::make_shared<Mesh>(*obj.mesh);
+          mesh->colors.clear();
+          copy = std::move(mesh);
+        }
+        obj.mesh = copy;
+      }
+    }
+    if (colour) {
+      if (obj.material.physicallyBased) {
+        PhysicalMaterial p = obj.material.physical;
+        p.baseColor = *colour;
+        glFromPhysical(obj.material, p);
+      } else {
+        obj.material.ambient = obj.material.diffuse = Color4(*colour, obj.material.diffuse.a);
+      }
+    }
+    if (o.opacity) obj.material.diffuse.a = Real(*o.opacity);
+  }
+}
+
 void decodeColourTextures(std::vector<Object>& objects) {
   std::map<const Texture*, std::shared_ptr<const Texture>> decoded;
   const auto srgb = [&](std::shared_ptr<const Texture>& t) {
@@ -170,6 +206,7 @@ Scene modelScene(const SceneOptions& o, ImportedModel& model) {
   s.height = o.height.value_or(600);
   s.background = {0.18, 0.19, 0.21, 1};
   ViewOptions view = viewOptions(o);
+  if (o.up.empty() && model.upAxis) view.up = *model.upAxis;  // the file's (or its format's) up axis
   if (!o.cameraPosition.empty()) view.position = parseVec3("--camera-position", o.cameraPosition);
   if (!o.cameraFocalPoint.empty()) view.focalPoint = parseVec3("--camera-focal-point", o.cameraFocalPoint);
   if (!o.cameraViewUp.empty()) view.viewUp = parseVec3("--camera-view-up", o.cameraViewUp);
@@ -189,6 +226,7 @@ Scene modelScene(const SceneOptions& o, ImportedModel& model) {
   // Glass and other translucent materials (MTL d, glTF alpha) show what is behind them.
   s.blend = true;
   s.objects = std::move(model.objects);
+  overrideMaterials(o, s.objects);
   return s;
 }
 
@@ -197,6 +235,9 @@ void rejectModelOnlyOptions(const SceneOptions& o) {
     if (given) throw InputError(std::string(name) + ": applies to model files, not scene files (the scene sets it)");
   };
   reject(!o.up.empty(), "--up");
+  reject(!o.color.empty(), "--color");
+  reject(o.opacity.has_value(), "--opacity");
+  reject(o.geometryOnly, "--geometry-only");
   reject(o.azimuth.has_value(), "--camera-azimuth-angle");
   reject(o.elevation.has_value(), "--camera-elevation-angle");
   reject(o.zoom.has_value(), "--camera-zoom-factor");
@@ -246,7 +287,10 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o, std::vector<std::string>* i
   cmd.add_flag("--axes", o.axes, "Draw the world's axes in the lower left corner");
   cmd.add_flag("--ambient-occlusion", o.ambientOcclusion, "Scale the ambient term by ray-traced occlusion (rasterizer)");
   cmd.add_flag("--no-ambient-occlusion", o.noAmbientOcclusion, "No ambient occlusion, even where the scene file asks for it");
-  cmd.add_option("--up", o.up, "Model files: the up axis, +Y (default), -Y, +Z, -Z, +X or -X");
+  cmd.add_option("--up", o.up, "Model files: the up axis, +Y, -Y, +Z, -Z, +X or -X [the file's: +Z for STL and 3DS, FBX's metadata, else +Y]");
+  cmd.add_option("--color", o.color, "Model files: draw every surface in this colour R,G,B or #rrggbb");
+  cmd.add_option("--opacity", o.opacity, "Model files: every surface's opacity, 0 to 1");
+  cmd.add_flag("--geometry-only", o.geometryOnly, "Model files: ignore the file's materials, textures and vertex colours");
   cmd.add_option("--camera-position", o.cameraPosition, "Camera position x,y,z");
   cmd.add_option("--camera-focal-point", o.cameraFocalPoint, "Point the camera looks at x,y,z (models: the bounds' centre)");
   cmd.add_option("--camera-view-up", o.cameraViewUp, "Camera up direction x,y,z (models: the up axis)");

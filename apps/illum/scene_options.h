@@ -30,7 +30,9 @@ struct SceneOptions {
   bool edges = false, grid = false, axes = false;
   bool ambientOcclusion = false, noAmbientOcclusion = false;
   // Model files (f3d's names).
-  std::string up, cameraPosition, cameraFocalPoint, cameraViewUp;
+  std::string up, cameraPosition, cameraFocalPoint, cameraViewUp, color;
+  std::optional<double> opacity;
+  bool geometryOnly = false;
   std::optional<double> viewAngle, azimuth, elevation, zoom, lightIntensity, creaseAngle;
   bool orthographic = false;
   std::string normals;

@@ -6,6 +6,7 @@
 #include <illum/scene.h>
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,9 @@ struct ImportedModel {
   Vec3 boundsMin{0}, boundsMax{0};
   std::size_t vertexCount = 0, triangleCount = 0, materialCount = 0, textureCount = 0;
   bool transparencyIgnored = false;  // every surface was fully transparent: drawn opaque instead
+  // The up axis the file says it has (FBX's UpAxis metadata), or its format's habit (STL and 3DS
+  // are +Z up); unset: the +Y of glTF and most formats.
+  std::optional<Vec3> upAxis;
   std::vector<std::string> warnings;  // e.g. a texture that could not be loaded
 };
 

@@ -496,6 +496,16 @@ ImportedModel importModelInProcess(const fs::path& path, const ImportOptions& op
   }
   model.boundsMin = lo;
   model.boundsMax = hi;
+  // The up axis: as the file's metadata says (assimp reads FBX's), else the format's habit.
+  int axis = 1, sign = 1;
+  if (scene->mMetaData && scene->mMetaData->Get("UpAxis", axis) && axis >= 0 && axis <= 2) {
+    scene->mMetaData->Get("UpAxisSign", sign);
+    Vec3 up(0);
+    up[axis] = sign < 0 ? Real(-1) : Real(1);
+    if (up != Vec3(0, 1, 0)) model.upAxis = up;
+  } else if (ext == ".stl" || ext == ".3ds") {
+    model.upAxis = Vec3(0, 0, 1);
+  }
   return model;
 }
 

@@ -123,6 +123,8 @@ void writeModel(const ImportedModel& model, IsolatedWriter& out) {
   for (std::size_t n : {model.vertexCount, model.triangleCount, model.materialCount, model.textureCount})
     w.value(std::uint64_t(n));
   w.value(model.transparencyIgnored);
+  w.value(model.upAxis.has_value());
+  w.value(model.upAxis.value_or(Vec3(0)));
   w.value(std::uint64_t(model.warnings.size()));
   for (const std::string& s : model.warnings) w.string(s);
   w.value(kMagic);
@@ -174,6 +176,9 @@ ImportedModel readModel(std::span<const std::uint8_t> bytes) {
   for (std::size_t* n : {&model.vertexCount, &model.triangleCount, &model.materialCount, &model.textureCount})
     *n = std::size_t(r.value<std::uint64_t>());
   model.transparencyIgnored = r.value<bool>();
+  const bool hasUp = r.value<bool>();
+  const Vec3 up = r.value<Vec3>();
+  if (hasUp) model.upAxis = up;
   model.warnings.resize(r.count(bytes.size()));
   for (std::string& s : model.warnings) s = r.string();
   if (r.value<std::uint64_t>() != kMagic || !r.atEnd()) Reader::broken();
