@@ -68,7 +68,9 @@ void expectSameAsByHand(const Scene& mapped, const Scene& byHand, int tolerance)
     a.renderer = b.renderer = renderer;
     const Image image = renderScene(a);
     EXPECT_LE(maxDifference(image, renderScene(b)), tolerance) << toString(renderer);
-    if (renderer == RendererKind::Raster) EXPECT_EQ(renderSceneReference(a).rgba, image.rgba);
+    if (renderer == RendererKind::Raster) {
+      EXPECT_EQ(renderSceneReference(a).rgba, image.rgba);
+    }
   }
 }
 

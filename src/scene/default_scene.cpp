@@ -20,7 +20,7 @@ Material material(Color3 ambient, Color3 diffuse, Color3 specular, Real shinines
 }
 
 Object object(Mesh mesh, Mat4 worldFromObject, Material m) {
-  return {std::make_shared<const Mesh>(std::move(mesh)), worldFromObject, m, nullptr, {}};
+  return {std::make_shared<const Mesh>(std::move(mesh)), worldFromObject, m, nullptr, {}, {}};
 }
 
 std::string describe(LightingModel model) {

@@ -456,7 +456,7 @@ Scene parseScene(const std::string& text, const std::string& name, const std::fi
   }
   if (j.has("objects")) {
     const JsonReader objects = j.at("objects");
-    ReadContext context{baseDir, limits};
+    ReadContext context{baseDir, limits, 0, {}};
     for (std::size_t i = 0, n = objects.arraySize(); i < n; ++i) readObject(objects.item(i), context, s.objects);
   }
   if (j.has("blend")) s.blend = j.at("blend").boolean();
