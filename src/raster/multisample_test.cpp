@@ -109,8 +109,11 @@ TEST(Multisample, EdgesApproachTheSupersampledReference) {
   for (int n : {1, 4, 8, 16}) {
     s.multisample = n;
     const double e = meanError(renderScene(s), reference);
-    if (n == 4) EXPECT_LT(e, 0.5 * previous);
-    else if (n > 4) EXPECT_LT(e, previous * 1.02);
+    if (n == 4) {
+      EXPECT_LT(e, 0.5 * previous);
+    } else if (n > 4) {
+      EXPECT_LT(e, previous * 1.02);
+    }
     previous = e;
   }
   EXPECT_LT(previous, 0.3);  // 16 samples: within a third of a level on average
