@@ -12,7 +12,7 @@
 #include <algorithm>
 
 int main(int argc, char** argv) {
-  CLI::App app{"illum: the classic lighting models (Lambert, Phong, Blinn-Phong) as OpenGL defines them"};
+  CLI::App app{"illum: the lighting models of computer graphics, from Wylie (1967) to Kajiya (1986), rendered exactly on the CPU"};
   app.name("illum");
   app.require_subcommand(1);
   app.set_version_flag("--version", "illum 0.1.0");

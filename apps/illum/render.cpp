@@ -164,7 +164,7 @@ int runRender(RenderOptions o) {
 Command addRenderCommand(CLI::App& app) {
   auto o = std::make_shared<RenderOptions>();
   CLI::App* cmd = app.add_subcommand(
-      "render", "Render a scene file, a model file, or with neither the built-in scene, to PNG");
+      "render", "Render scene files, model files, folders of them, or with none the built-in scene (PNG, EXR, GIF, WebP, MP4)");
   cmd->footer(
       "A .json input is a scene file (docs/scene-format.md); anything else is a model file read by\n"
       "assimp (OBJ+MTL, PLY, STL, glTF/GLB, FBX, Collada, 3DS, ...), framed and lit automatically.\n"
