@@ -25,8 +25,7 @@ namespace {
 struct CompareOptions {
   SceneOptions scene;
   std::string rows = "model", cols = "shading", diff;
-  std::string output = "compare.png";
-  bool force = false, quiet = false;
+  SheetOutput out{"compare.png"};
 };
 
 std::string figures(const DifferencePanel& d) {
@@ -103,7 +102,7 @@ int runCompare(const CompareOptions& o) {
     sheet.rowLabels.push_back(rows.values[diffRows->first] + " vs " + rows.values[diffRows->second]);
   }
 
-  writeSheet(sheet, {o.output, o.force, o.quiet, o.scene.verbose},
+  writeSheet(sheet, o.out, o.scene.verbose,
              [&](std::size_t r, std::size_t c) { return sheet.rowLabels[r] + " / " + sheet.columnLabels[c]; });
   return 0;
 }
@@ -123,9 +122,7 @@ Command addCompareCommand(CLI::App& app) {
   cmd->add_option("--rows", o->rows, "The axis down the sheet")->capture_default_str();
   cmd->add_option("--cols", o->cols, "The axis across the sheet")->capture_default_str();
   cmd->add_option("--diff", o->diff, "A,B: add panels showing where values A and B of one axis differ (max, PSNR)");
-  cmd->add_option("-o,--output", o->output, "Output PNG, written atomically")->capture_default_str();
-  cmd->add_flag("-q,--quiet", o->quiet, "Do not print the output's path on standard output");
-  cmd->add_flag("--force", o->force, "Replace a read-only output file (its permissions are kept)");
+  addSheetOutputOptions(*cmd, o->out);
   return [o] { return runCompare(*o); };
 }
 

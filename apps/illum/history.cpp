@@ -22,8 +22,7 @@ namespace {
 
 struct HistoryOptions {
   SceneOptions scene;
-  std::string output = "history.png";
-  bool force = false, quiet = false;
+  SheetOutput out{"history.png"};
 };
 
 // One step of the history: who, when, what, and how illum draws it.
@@ -84,7 +83,7 @@ int runHistory(const HistoryOptions& o) {
     sheet.panels.back().push_back({std::move(image), std::string(step.year) + " · " + step.authors + "\n" + step.formula});
     ++index;
   }
-  writeSheet(sheet, {o.output, o.force, o.quiet, o.scene.verbose}, [](std::size_t r, std::size_t c) {
+  writeSheet(sheet, o.out, o.scene.verbose, [](std::size_t r, std::size_t c) {
     const Step& step = kSteps[r * kColumns + c];
     return std::string(step.year) + " / " + step.model + " " + step.shading + " " + step.renderer;
   });
@@ -100,9 +99,7 @@ Command addHistoryCommand(CLI::App& app) {
       "Panels, in order: wylie (1967), bouknight (1970, flat), Gouraud (1971, lambert), Phong (1975),\n"
       "Blinn (1977), Whitted (1980), Cook-Torrance (1982), Hall (1983), Kajiya's path tracing (1986).");
   addSceneOptions(*cmd, o->scene);
-  cmd->add_option("-o,--output", o->output, "Output PNG, written atomically")->capture_default_str();
-  cmd->add_flag("-q,--quiet", o->quiet, "Do not print the output's path on standard output");
-  cmd->add_flag("--force", o->force, "Replace a read-only output file (its permissions are kept)");
+  addSheetOutputOptions(*cmd, o->out);
   return [o] { return runHistory(*o); };
 }
 

@@ -22,9 +22,16 @@ std::string inputName(const SceneOptions& o) {
   return o.input.empty() ? "the built-in scene" : std::filesystem::path(o.input).filename().string();
 }
 
-void writeSheet(const Sheet& sheet, const SheetOutput& out, const std::function<std::string(std::size_t, std::size_t)>& describe) {
+void addSheetOutputOptions(CLI::App& cmd, SheetOutput& out) {
+  cmd.add_option("-o,--output", out.path, "Output PNG, written atomically")->capture_default_str();
+  cmd.add_flag("-q,--quiet", out.quiet, "Do not print the output's path on standard output");
+  cmd.add_flag("--force", out.force, "Replace a read-only output file (its permissions are kept)");
+}
+
+void writeSheet(const Sheet& sheet, const SheetOutput& out, bool verbose,
+                const std::function<std::string(std::size_t, std::size_t)>& describe) {
   const Image image = composeSheet(sheet);
-  if (out.verbose) {
+  if (verbose) {
     const SheetLayout layout = layoutSheet(sheet);
     for (std::size_t r = 0; r < sheet.panels.size(); ++r)
       for (std::size_t c = 0; c < sheet.panels[r].size(); ++c)

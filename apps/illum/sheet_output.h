@@ -20,10 +20,13 @@ std::string inputName(const SceneOptions& o);
 
 struct SheetOutput {
   std::string path;
-  bool force = false, quiet = false, verbose = false;
+  bool force = false, quiet = false;
 };
+// -o, -q and --force.
+void addSheetOutputOptions(CLI::App& cmd, SheetOutput& out);
 
 // Composes and writes the sheet; with verbose, one line per panel naming it by `describe(r, c)`.
-void writeSheet(const Sheet& sheet, const SheetOutput& out, const std::function<std::string(std::size_t, std::size_t)>& describe);
+void writeSheet(const Sheet& sheet, const SheetOutput& out, bool verbose,
+                const std::function<std::string(std::size_t, std::size_t)>& describe);
 
 }  // namespace illum::cli
