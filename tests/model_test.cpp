@@ -287,25 +287,67 @@ TEST(NothingSilentlyEmpty, FullyTransparentModelsAreDrawnOpaque) {
   }
 }
 
-TEST(NothingSilentlyEmpty, DegenerateAndSurfacelessFilesAreRefused) {
+TEST(NothingSilentlyEmpty, DegenerateFilesAreRefused) {
   TempDir dir;
   const auto off = runIllum("render " + (kModels / "OFF/invalid.off").string() + " -o " + (dir / "a.png").string());
   EXPECT_EQ(off.exitCode, 2);
-  EXPECT_NE(off.err.find("no drawable triangle"), std::string::npos) << off.err;
-  std::ofstream(dir / "points.ply") << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-                                       "property float z\nend_header\n0 0 0\n1 0 0\n0 1 0\n";
-  const auto points = runIllum("render " + (dir / "points.ply").string() + " -o " + (dir / "b.png").string());
-  EXPECT_EQ(points.exitCode, 2);
-  EXPECT_NE(points.err.find("only 3 points (vertices without faces) and no triangles"), std::string::npos) << points.err;
-  std::ofstream(dir / "lines.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2\nl 2 3\n";
-  const auto lines = runIllum("render " + (dir / "lines.obj").string() + " -o " + (dir / "b.png").string());
-  EXPECT_EQ(lines.exitCode, 2);
-  EXPECT_NE(lines.err.find("only 2 lines and no triangles"), std::string::npos) << lines.err;
+  EXPECT_NE(off.err.find("all its vertices are at one point"), std::string::npos) << off.err;
+  const auto lights = runIllum("render " + (kModels / "Collada/lights.dae").string() + " -o " + (dir / "b.png").string());
+  EXPECT_EQ(lights.exitCode, 2);
+  EXPECT_NE(lights.err.find("no triangles, lines or points"), std::string::npos) << lights.err;
   std::ofstream(dir / "flat.obj") << "v 0 0 0\nv 1 1 1\nv 2 2 2\nf 1 2 3\n";
   const auto flat = runIllum("render " + (dir / "flat.obj").string() + " -o " + (dir / "c.png").string());
   EXPECT_EQ(flat.exitCode, 2);
   EXPECT_NE(flat.err.find("no drawable triangle"), std::string::npos) << flat.err;
   EXPECT_FALSE(fs::exists(dir / "a.png") || fs::exists(dir / "b.png") || fs::exists(dir / "c.png"));
+}
+
+// Point clouds and line sets are drawn as GL_POINTS and GL_LINES (--point-size, --line-width).
+TEST(PointsAndLines, PointCloudsAndLineSetsAreDrawn) {
+  TempDir dir;
+  std::ofstream(dir / "points.ply") << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                       "property float z\nend_header\n0 0 0\n1 0 0\n0 1 0\n";
+  const auto small = runIllum("render " + (dir / "points.ply").string() + " --resolution=200,120 -v -o " + (dir / "a.png").string());
+  ASSERT_EQ(small.exitCode, 0) << small.err;
+  EXPECT_NE(small.err.find("0 triangles, 3 points"), std::string::npos) << small.err;
+  const auto big = runIllum("render " + (dir / "points.ply").string() + " --resolution=200,120 --point-size 9 -o " +
+                            (dir / "b.png").string());
+  ASSERT_EQ(big.exitCode, 0) << big.err;
+  // Three discs of 3 and of 9 pixels across (the preview's 8 samples soften their edges).
+  const double a = foreground(readPng(dir / "a.png")).count, b = foreground(readPng(dir / "b.png")).count;
+  EXPECT_GE(a, 3 * 5);
+  EXPECT_NEAR(b / a, 9.0, 4.0);
+
+  std::ofstream(dir / "lines.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2\nl 2 3\n";
+  const auto lines = runIllum("render " + (dir / "lines.obj").string() + " --resolution=200,120 -o " + (dir / "c.png").string());
+  ASSERT_EQ(lines.exitCode, 0) << lines.err;
+  const double thin = foreground(readPng(dir / "c.png")).count;
+  EXPECT_GT(thin, 150);  // two lines across most of the picture
+  ASSERT_EQ(runIllum("render " + (dir / "lines.obj").string() + " --resolution=200,120 --line-width 4 -o " +
+                     (dir / "d.png").string()).exitCode, 0);
+  EXPECT_GT(foreground(readPng(dir / "d.png")).count, 2 * thin);  // anti-aliased, a 1-pixel line touches 2
+
+  // The ray tracers trace surfaces: points alone are refused, points beside surfaces left out.
+  const auto traced = runIllum("render " + (dir / "points.ply").string() + " --renderer whitted -o " + (dir / "e.png").string());
+  EXPECT_EQ(traced.exitCode, 2);
+  EXPECT_NE(traced.err.find("only points and lines, which the rasterizer draws"), std::string::npos) << traced.err;
+  EXPECT_FALSE(fs::exists(dir / "e.png"));
+  const auto mixed = runIllum("render " + (kModels / "OBJ/testmixed.obj").string() +
+                              " --renderer whitted --resolution=80,60 -o " + (dir / "f.png").string());
+  EXPECT_EQ(mixed.exitCode, 0) << mixed.err;
+  EXPECT_NE(mixed.err.find("points and lines are left out"), std::string::npos) << mixed.err;
+}
+
+// glTF's primitive modes 0-3 (points, lines, line loop, line strip) from Khronos' asset generator.
+TEST(PointsAndLines, GltfPrimitiveModesAreDrawn) {
+  TempDir dir;
+  const fs::path folder = kModels / "glTF2/glTF-Asset-Generator/Mesh_PrimitiveMode";
+  for (const char* file : {"Mesh_PrimitiveMode_00.gltf", "Mesh_PrimitiveMode_01.gltf", "Mesh_PrimitiveMode_02.gltf",
+                           "Mesh_PrimitiveMode_03.gltf"}) {
+    const auto r = runIllum("render " + (folder / file).string() + " --resolution=120,90 -o " + (dir / "m.png").string());
+    ASSERT_EQ(r.exitCode, 0) << file << ": " << r.err;
+    EXPECT_GT(foreground(readPng(dir / "m.png")).count, 150) << file;
+  }
 }
 
 TEST(NothingSilentlyEmpty, AnEmptyPictureIsWarnedAbout) {

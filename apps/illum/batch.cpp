@@ -134,7 +134,7 @@ class BatchProgress {
 struct JobResult {
   std::vector<std::string> outputs;
   std::vector<std::string> warnings;
-  std::size_t triangles = 0;
+  std::size_t triangles = 0, points = 0, lines = 0;
   double loadMs = 0, renderMs = 0, encodeMs = 0;
   bool skipped = false;
 };
@@ -197,6 +197,9 @@ JobResult renderJob(const RenderOptions& o, const BatchJob& job, const std::stri
     }
     result.loadMs += msBetween(start, loaded);
     result.triangles = stats.trianglesIn;
+    result.points = result.lines = 0;
+    for (const Object& object : scene.objects)
+      result.points += object.mesh->pointCount(), result.lines += object.mesh->lineCount();
   }
   if (animation) {
     if (gInterrupted && int(pictures.size()) < frames) return result;  // nothing half-made is written
@@ -278,6 +281,7 @@ int runBatch(const RenderOptions& o, const std::vector<BatchJob>& allJobs) {
       line["ok"] = true;
       line["skipped"] = r.skipped;
       line["triangles"] = r.triangles;
+      line["lines"] = r.lines, line["points"] = r.points;
       line["load_ms"] = r.loadMs, line["render_ms"] = r.renderMs, line["encode_ms"] = r.encodeMs;
       line["warnings"] = r.warnings;
       if (!o.json && !o.quiet)

@@ -246,6 +246,21 @@ void rejectModelOnlyOptions(const SceneOptions& o) {
   reject(o.creaseAngle.has_value(), "--crease-angle");
 }
 
+// The ray tracers trace surfaces: points and lines, which have none, are the rasterizer's. A scene
+// of nothing else is refused; one that has surfaces too is drawn without them, with a warning.
+void rejectTracedPointsAndLines(const Scene& scene, std::vector<std::string>* warnings) {
+  if (scene.renderer == RendererKind::Raster) return;
+  const auto hasPrimitives = [](const Object& o) { return o.mesh->hasPointsOrLines(); };
+  if (std::none_of(scene.objects.begin(), scene.objects.end(), hasPrimitives)) return;
+  const std::string renderer(toString(scene.renderer));
+  if (std::all_of(scene.objects.begin(), scene.objects.end(), [](const Object& o) { return o.mesh->triangleCount() == 0; }))
+    throw InputError("the " + renderer + " renderer: the scene holds only points and lines, which the rasterizer draws; " +
+                     "the ray tracers trace surfaces (use --renderer raster)");
+  const std::string w = "the ray tracers trace surfaces: the scene's points and lines are left out (the rasterizer draws them)";
+  if (warnings) warnings->push_back(w);
+  else std::fprintf(stderr, "illum: warning: %s\n", w.c_str());
+}
+
 }  // namespace
 
 double peakMemoryMiB() {
@@ -285,6 +300,10 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o, std::vector<std::string>* i
   cmd.add_flag("--edges", o.edges, "Draw every triangle's edges over the surfaces (rasterizer)");
   cmd.add_flag("--grid", o.grid, "Draw a ground grid under the scene (rasterizer)");
   cmd.add_flag("--axes", o.axes, "Draw the world's axes in the lower left corner");
+  cmd.add_option("--point-size", o.pointSize, "Pixel size of the points of point clouds [scenes 1 (GL's), models 3]")
+      ->check(CLI::Range(double(kMinPrimitiveSize), double(kMaxPrimitiveSize)));
+  cmd.add_option("--line-width", o.lineWidth, "Pixel width of the lines of line sets [1]")
+      ->check(CLI::Range(double(kMinPrimitiveSize), double(kMaxPrimitiveSize)));
   cmd.add_flag("--ambient-occlusion", o.ambientOcclusion, "Scale the ambient term by ray-traced occlusion (rasterizer)");
   cmd.add_flag("--no-ambient-occlusion", o.noAmbientOcclusion, "No ambient occlusion, even where the scene file asks for it");
   cmd.add_option("--up", o.up, "Model files: the up axis, +Y, -Y, +Z, -Z, +X or -X [the file's: +Z for STL and 3DS, FBX's metadata, else +Y]");
@@ -377,9 +396,11 @@ Scene prepareScene(SceneOptions o, double* loadMs, ModelCache* cache, std::vecto
       }
     }
     if (o.verbose && !cached) {
-      std::fprintf(stderr, "illum: %s: %s vertices, %s triangles, %zu materials, %zu textures\n", o.input.c_str(),
-                   withThousands(model->vertexCount).c_str(), withThousands(model->triangleCount).c_str(),
-                   model->materialCount, model->textureCount);
+      std::string primitives = withThousands(model->triangleCount) + " triangles";
+      if (model->lineCount) primitives += ", " + withThousands(model->lineCount) + " lines";
+      if (model->pointCount) primitives += ", " + withThousands(model->pointCount) + " points";
+      std::fprintf(stderr, "illum: %s: %s vertices, %s, %zu materials, %zu textures\n", o.input.c_str(),
+                   withThousands(model->vertexCount).c_str(), primitives.c_str(), model->materialCount, model->textureCount);
       const Vec3 &lo = model->boundsMin, &hi = model->boundsMax;
       std::fprintf(stderr, "illum: bounds [%g, %g, %g] .. [%g, %g, %g]\n", double(lo.x), double(lo.y), double(lo.z),
                    double(hi.x), double(hi.y), double(hi.z));
@@ -448,6 +469,10 @@ Scene prepareScene(SceneOptions o, double* loadMs, ModelCache* cache, std::vecto
     throw InputError(scene.renderer == RendererKind::Path
                          ? "--ambient-occlusion: the path tracer computes the light that ambient occlusion approximates"
                          : "--ambient-occlusion: the rasterizer's; the ray tracers keep the classic ambient term");
+  if (model) scene.pointSize = 3;  // a point cloud's 1-pixel points are hard to see in a preview
+  if (o.pointSize) scene.pointSize = Real(*o.pointSize);
+  if (o.lineWidth) scene.lineWidth = Real(*o.lineWidth);
+  rejectTracedPointsAndLines(scene, warnings);
   if ((scene.overlays.edges || scene.overlays.grid) && scene.renderer != RendererKind::Raster)
     throw InputError(std::string(scene.overlays.edges ? "--edges" : "--grid") +
                      ": the rasterizer draws edges and grids; the ray tracers have no depth buffer to hide them with");

@@ -22,6 +22,7 @@ struct ImportedModel {
   std::vector<Object> objects;  // one per (node, mesh) instance, in world space
   Vec3 boundsMin{0}, boundsMax{0};
   std::size_t vertexCount = 0, triangleCount = 0, materialCount = 0, textureCount = 0;
+  std::size_t pointCount = 0, lineCount = 0;  // of point clouds and line sets
   bool transparencyIgnored = false;  // every surface was fully transparent: drawn opaque instead
   // The up axis the file says it has (FBX's UpAxis metadata), or its format's habit (STL and 3DS
   // are +Z up); unset: the +Y of glTF and most formats.
@@ -33,7 +34,7 @@ struct ImportedModel {
 // a reader that crashes, aborts, loops or allocates without end costs a clean InputError naming
 // the file and the reason ("the importer crashed", "would need more than N MiB: raise
 // --max-memory"), never illum itself. Throws InputError for a missing, empty, truncated or
-// malformed file, out-of-range indices, non-finite positions, no drawable triangle, or a size
+// malformed file, out-of-range indices, non-finite positions, nothing drawable, or a size
 // beyond a limit.
 ImportedModel importModel(const std::filesystem::path& path, const ImportOptions& options = {});
 // The same, in this process (for the fuzzer and for the isolated child itself).

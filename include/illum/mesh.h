@@ -1,4 +1,6 @@
-// Triangle meshes: geometry only, structure of arrays, counter-clockwise front faces.
+// Meshes: geometry only, structure of arrays. Triangles (counter-clockwise front faces), and the
+// points and line segments of point clouds and line sets, which the rasterizer draws as GL_POINTS
+// and GL_LINES (raster/points_lines.h).
 #pragma once
 
 #include <illum/real.h>
@@ -10,12 +12,19 @@ namespace illum {
 
 struct Mesh {
   std::vector<Vec3> positions;
-  std::vector<Vec3> normals;  // one per position, unit length
+  // One per position, unit length. Empty only in a mesh without triangles whose file gave none:
+  // its points and lines are then drawn unlit.
+  std::vector<Vec3> normals;
   std::vector<std::uint32_t> indices;  // three per triangle; the LAST is GL's provoking vertex
+  std::vector<std::uint32_t> pointIndices;  // one per point (GL_POINTS)
+  std::vector<std::uint32_t> lineIndices;   // two per segment (GL_LINES)
   std::vector<Vec2> uvs;       // optional: texture coordinates, one per position (GL: v up)
   std::vector<Vec4> colors;    // optional: vertex colours, one per position (GL_COLOR_MATERIAL)
 
   std::size_t triangleCount() const { return indices.size() / 3; }
+  std::size_t pointCount() const { return pointIndices.size(); }
+  std::size_t lineCount() const { return lineIndices.size() / 2; }
+  bool hasPointsOrLines() const { return !pointIndices.empty() || !lineIndices.empty(); }
 };
 
 // GLUT's solids (freeglut's vertex layout and parameters), centred at the origin.

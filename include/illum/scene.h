@@ -134,6 +134,10 @@ struct RayTracing {
 // The multisample counts the rasterizer takes.
 constexpr bool isMultisampleCount(int n) { return n == 1 || n == 4 || n == 8 || n == 16; }
 
+// glPointSize and glLineWidth bounds, in pixels.
+constexpr Real kMinPrimitiveSize = Real(0.1);
+constexpr Real kMaxPrimitiveSize = 256;
+
 struct Scene;
 // Rays per pixel: as the scene says, else 1 (64 for the path tracer, which needs many).
 int samplesPerPixel(const Scene& scene);
@@ -160,6 +164,10 @@ struct Scene {
   // (coverage and depth per sample, each pixel shaded once per triangle at its centre, resolved
   // with premultiplied alpha). The ray tracers take rayTracing.samples instead.
   int multisample = 1;
+  // glPointSize and glLineWidth: the pixel sizes of the points and lines of point clouds and line
+  // sets (Mesh::pointIndices, lineIndices), which the rasterizer draws and the ray tracers leave out.
+  Real pointSize = 1;
+  Real lineWidth = 1;
   Overlays overlays;
   AmbientOcclusion ambientOcclusion;
 };

@@ -1,6 +1,7 @@
 #include "raster/overlay.h"
 
 #include "image/text.h"
+#include "raster/wide_segment.h"
 
 #include <algorithm>
 #include <cmath>
@@ -67,14 +68,6 @@ void addGrid(const Scene& scene, std::vector<OverlayLine>& out) {
   }
 }
 
-// Distance from p to the segment ab, and where along it (0..1) the nearest point is.
-std::pair<Real, Real> toSegment(const Vec2& p, const Vec2& a, const Vec2& b) {
-  const Vec2 d = b - a;
-  const Real len2 = glm::dot(d, d);
-  const Real t = len2 > 0 ? std::clamp(glm::dot(p - a, d) / len2, Real(0), Real(1)) : Real(0);
-  return {glm::length(a + t * d - p), t};
-}
-
 }  // namespace
 
 std::vector<OverlayLine> overlayLines(const Scene& scene) {
@@ -87,42 +80,15 @@ std::vector<OverlayLine> overlayLines(const Scene& scene) {
 
 void drawOverlayLines(Framebuffer& fb, const FrameContext& frame, std::span<const OverlayLine> lines, Real width) {
   const Mat4 clipFromWorld = frame.clipFromView * frame.viewFromWorld;
-  const Vec2 sample(Real(frame.sample.x) / 256, Real(frame.sample.y) / 256);
-  const Real radius = width / 2;
   for (const OverlayLine& line : lines) {
-    Vec4 a = clipFromWorld * Vec4(line.a, 1), b = clipFromWorld * Vec4(line.b, 1);
-    // Clip against the near plane (z ≥ −w).
-    const Real da = a.z + a.w, db = b.z + b.w;
-    if (da < 0 && db < 0) continue;
-    if (da < 0) a = a + (da / (da - db)) * (b - a);
-    if (db < 0) b = b + (db / (db - da)) * (a - b);
-    if (!(a.w > 0) || !(b.w > 0)) continue;
-    const auto window = [&](const Vec4& c) {
-      return Vec3((c.x / c.w + 1) * Real(0.5) * Real(frame.width), (c.y / c.w + 1) * Real(0.5) * Real(frame.height),
-                  (c.z / c.w + 1) * Real(0.5));
-    };
-    const Vec3 wa = window(a), wb = window(b);
-    const Real length = glm::length(Vec2(wb - wa));
-    if (!std::isfinite(length) || length > Real(1e5)) continue;
-    // In pieces of at most 16 pixels, each tested over its own small box.
-    const int pieces = std::max(1, int(std::ceil(length / 16)));
-    for (int k = 0; k < pieces; ++k) {
-      const Vec3 pa = wa + (Real(k) / Real(pieces)) * (wb - wa), pb = wa + (Real(k + 1) / Real(pieces)) * (wb - wa);
-      const int x0 = std::max(0, int(std::floor(std::min(pa.x, pb.x) - radius - 1)));
-      const int x1 = std::min(frame.width - 1, int(std::ceil(std::max(pa.x, pb.x) + radius + 1)));
-      const int y0 = std::max(0, int(std::floor(std::min(pa.y, pb.y) - radius - 1)));
-      const int y1 = std::min(frame.height - 1, int(std::ceil(std::max(pa.y, pb.y) + radius + 1)));
-      for (int y = y0; y <= y1; ++y)
-        for (int x = x0; x <= x1; ++x) {
-          const Vec2 p(Real(x) + Real(0.5) + sample.x, Real(y) + Real(0.5) + sample.y);
-          const auto [d, t] = toSegment(p, Vec2(pa), Vec2(pb));
-          if (d > radius) continue;
-          fb.clearTile(x, y);  // a tile no triangle touched is cleared now
-          const Real z = pa.z + t * (pb.z - pa.z);
-          if (z < 0 || z > 1 || z > fb.depth(x, y) + kLineBias) continue;
-          fb.writeColor(x, y, Color4(line.color, 1));
-        }
-    }
+    const auto segment = windowSegment(frame, clipFromWorld * Vec4(line.a, 1), clipFromWorld * Vec4(line.b, 1));
+    if (!segment) continue;
+    forEachSegmentPixel(frame, *segment, width, [&](int x, int y, Real t) {
+      fb.clearTile(x, y);  // a tile no triangle touched is cleared now
+      const Real z = segment->a.z + t * (segment->b.z - segment->a.z);
+      if (z < 0 || z > 1 || z > fb.depth(x, y) + kLineBias) return;
+      fb.writeColor(x, y, Color4(line.color, 1));
+    });
   }
 }
 

@@ -10,6 +10,7 @@
 #include "raster/draw.h"
 #include "raster/multisample.h"
 #include "raster/overlay.h"
+#include "raster/points_lines.h"
 #include "raster/shade_tile.h"
 #include "shading/shade_points.h"
 #include "trace/ray_tracer.h"
@@ -59,6 +60,7 @@ class BinnedFrame {
   }
 
   void drawObject(const Object& object, std::uint32_t index) {
+    if (object.mesh->triangleCount() == 0) return;  // points and lines only: drawn after the triangles
     auto& vertices = s_.vertices;
     vertices.resize(object.mesh->positions.size());
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vertices.size(), kVertexGrain),
@@ -165,6 +167,7 @@ void Renderer::render(const Scene& scene, Image& image, RenderStats* statsOut, P
     for (const Object* object : drawingOrder(scene, frame))
       pass.drawObject(*object, std::uint32_t(object - scene.objects.data()));
     pass.flush();
+    drawPointsAndLines(state_->fb, frame, scene, state_->vertices);
     drawOverlayLines(state_->fb, frame, overlay, 1);
     stats = pass.stats();
     finishFrame(state_->fb, scene, stats, image, linear);
@@ -179,6 +182,7 @@ void Renderer::render(const Scene& scene, Image& image, RenderStats* statsOut, P
       for (const Object* object : drawingOrder(scene, frame))
         pass.drawObject(*object, std::uint32_t(object - scene.objects.data()));
       pass.flush();
+      drawPointsAndLines(state_->fb, frame, scene, state_->vertices);
       drawOverlayLines(state_->fb, frame, overlay, 1);
       const RenderStats passStats = pass.stats();
       if (s == 0) stats = passStats;

@@ -40,12 +40,13 @@ std::string lowerExtension(const fs::path& p) {
   return e;
 }
 
-// Vertices no triangle uses (left over from points, lines or an exporter) are dropped, so that they
+// Vertices no triangle, line or point uses (left over from an exporter) are dropped, so that they
 // neither frame the picture nor cost memory; assimp's JoinIdenticalVertices used to do this.
 void dropUnusedVertices(Mesh& mesh) {
   constexpr std::uint32_t kUnused = ~std::uint32_t(0);
   std::vector<std::uint32_t> remap(mesh.positions.size(), kUnused);
-  for (std::uint32_t i : mesh.indices) remap[i] = 0;
+  for (const auto* list : {&mesh.indices, &mesh.lineIndices, &mesh.pointIndices})
+    for (std::uint32_t i : *list) remap[i] = 0;
   std::uint32_t kept = 0;
   for (std::uint32_t& r : remap)
     if (r != kUnused) r = kept++;
@@ -60,7 +61,8 @@ void dropUnusedVertices(Mesh& mesh) {
   compact(mesh.normals);
   compact(mesh.uvs);
   compact(mesh.colors);
-  for (std::uint32_t& i : mesh.indices) i = remap[i];
+  for (auto* list : {&mesh.indices, &mesh.lineIndices, &mesh.pointIndices})
+    for (std::uint32_t& i : *list) i = remap[i];
 }
 
 // One assimp mesh as an illum mesh, with normals chosen by `options`.
@@ -92,22 +94,30 @@ Mesh convertMesh(const aiMesh& m, const fs::path& path, const ImportOptions& opt
       mesh.colors.push_back(glm::clamp(Vec4(c.r, c.g, c.b, c.a), Vec4(0), Vec4(1)));
     }
   }
-  mesh.indices.reserve(std::size_t(m.mNumFaces) * 3);
+  // Triangles, line segments and points (SortByPType gives each kind a mesh of its own).
   for (unsigned f = 0; f < m.mNumFaces; ++f) {
     const aiFace& face = m.mFaces[f];
-    if (face.mNumIndices != 3) continue;  // points and lines are not surfaces
-    for (unsigned c = 0; c < 3; ++c) {
+    std::vector<std::uint32_t>& list =
+        face.mNumIndices == 3 ? mesh.indices : face.mNumIndices == 2 ? mesh.lineIndices : mesh.pointIndices;
+    if (face.mNumIndices > 3) continue;  // Triangulate left none; a polygon is not drawn whole
+    for (unsigned c = 0; c < face.mNumIndices; ++c) {
       if (face.mIndices[c] >= m.mNumVertices)
         throw InputError(where + " face " + std::to_string(f) + ": index " + std::to_string(face.mIndices[c]) +
                          " is out of range (" + std::to_string(m.mNumVertices) + " vertices)");
-      mesh.indices.push_back(face.mIndices[c]);
+      list.push_back(face.mIndices[c]);
     }
   }
 
   dropUnusedVertices(mesh);
-  // Usable means every vertex a triangle uses has a finite, non-zero normal (stored as 0 if not).
+  // Usable means every vertex used has a finite, non-zero normal (stored as 0 if not).
   if (m.mNormals)
     fileNormalsUsable = std::none_of(mesh.normals.begin(), mesh.normals.end(), [](const Vec3& n) { return n == Vec3(0); });
+  if (mesh.indices.empty()) {
+    // Points and lines alone: lit with the file's normals (as GL lights GL_POINTS), else unlit;
+    // there are no faces to make normals from.
+    if (!fileNormalsUsable) mesh.normals.clear();
+    return mesh;
+  }
   switch (options.normals) {
     case NormalMode::Flat: generateFlatNormals(mesh); break;
     case NormalMode::Smooth: generateCreaseNormals(mesh, 180); break;
@@ -303,20 +313,20 @@ namespace {
   throw InputError(path.string() + ": cannot read the model: " + why);
 }
 
-// What a file without a single triangle holds instead, for the message.
-std::string describeNonSurfaces(const aiScene& scene) {
-  std::size_t points = 0, lines = 0;
-  for (unsigned i = 0; i < scene.mNumMeshes; ++i)
-    for (unsigned f = 0; f < scene.mMeshes[i]->mNumFaces; ++f) {
-      const unsigned n = scene.mMeshes[i]->mFaces[f].mNumIndices;
-      points += n == 1;
-      lines += n == 2;
+// A point cloud's vertices as GL_POINTS: assimp's PLY reader, among others, gives a mesh of
+// vertices and no faces, which its validation step (and every later step) would refuse.
+void facesForPointClouds(aiScene& scene) {
+  for (unsigned i = 0; i < scene.mNumMeshes; ++i) {
+    aiMesh& m = *scene.mMeshes[i];
+    if (m.mNumFaces != 0 || m.mNumVertices == 0 || m.mFaces) continue;
+    m.mFaces = new aiFace[m.mNumVertices];
+    for (unsigned v = 0; v < m.mNumVertices; ++v) {
+      m.mFaces[v].mNumIndices = 1;
+      m.mFaces[v].mIndices = new unsigned[1]{v};
     }
-  if (points == 0 && lines == 0) return "the model has no triangles";
-  std::string what;
-  if (points) what += withThousands(points) + (points == 1 ? " point" : " points");
-  if (lines) what += std::string(what.empty() ? "" : " and ") + withThousands(lines) + (lines == 1 ? " line" : " lines");
-  return "the model holds only " + what + " and no triangles; illum draws surfaces";
+    m.mNumFaces = m.mNumVertices;
+    m.mPrimitiveTypes = aiPrimitiveType_POINT;
+  }
 }
 
 // Opacity as drawn: vertex colours' alpha replaces the material's (GL_COLOR_MATERIAL).
@@ -353,20 +363,13 @@ ImportedModel importModelInProcess(const fs::path& path, const ImportOptions& op
 
   AssimpWarnings assimpWarnings;
   Assimp::Importer importer;
-  // Keep lines and points out of the triangles; the validation step rejects broken index buffers.
-  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+  // Points and lines stay, each kind in meshes of its own (SortByPType removes none).
+  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, 0);
   // Read and validate before anything else: assimp's later steps assert (and abort) on some broken input.
   const aiScene* scene = importer.ReadFile(path.string(), 0);
   if (!scene) readFailed(path, importer);
-  // Point clouds (vertices without faces) fail assimp's validation with its own words; say it plainly.
-  std::uint64_t faceless = 0, vertices = 0;
-  for (unsigned i = 0; i < scene->mNumMeshes; ++i) {
-    vertices += scene->mMeshes[i]->mNumVertices;
-    faceless += scene->mMeshes[i]->mNumFaces == 0 ? scene->mMeshes[i]->mNumVertices : 0;
-  }
-  if (scene->mNumMeshes > 0 && faceless == vertices)
-    throw InputError(path.string() + ": the model holds only " + withThousands(vertices) +
-                     (vertices == 1 ? " point" : " points") + " (vertices without faces) and no triangles; illum draws surfaces");
+  // The importer owns the scene; its own post-processing steps change it in place as this does.
+  facesForPointClouds(*const_cast<aiScene*>(scene));
   scene = importer.ApplyPostProcessing(aiProcess_ValidateDataStructure);
   if (!scene) readFailed(path, importer);
   checkFaces(*scene, path);
@@ -375,13 +378,10 @@ ImportedModel importModelInProcess(const fs::path& path, const ImportOptions& op
   if (faces > options.limits.maxTriangles)
     throw InputError(path.string() + ": the model has " + withThousands(faces) + " faces, more than the limit of " +
                      withThousands(options.limits.maxTriangles) + " triangles (raise it with --max-triangles)");
-  const std::string nonSurfaces = describeNonSurfaces(*scene);
-  const bool onlyPointsAndLines = nonSurfaces.find("only") != std::string::npos;
   scene = importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_SortByPType);
-  if (!scene && onlyPointsAndLines) throw InputError(path.string() + ": " + nonSurfaces);  // SortByPType removed them all
   if (!scene) readFailed(path, importer);
   if ((scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !scene->mRootNode || scene->mNumMeshes == 0)
-    throw InputError(path.string() + ": " + nonSurfaces);
+    throw InputError(path.string() + ": the model has no triangles, lines or points");
   if (auto w = assimpWarnings.find("out-of-range")) throw InputError(path.string() + ": indices out of range: " + *w);
 
   ImportedModel model;
@@ -389,7 +389,6 @@ ImportedModel importModelInProcess(const fs::path& path, const ImportOptions& op
   std::vector<std::shared_ptr<const Mesh>> meshes(scene->mNumMeshes);
   for (unsigned i = 0; i < scene->mNumMeshes; ++i) {
     const aiMesh& m = *scene->mMeshes[i];
-    if (!(m.mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) continue;
     meshes[i] = std::make_shared<const Mesh>(convertMesh(m, path, options, stl));
   }
   std::vector<Material> materials;
@@ -448,7 +447,7 @@ ImportedModel importModelInProcess(const fs::path& path, const ImportOptions& op
     const Mat4 world = parent * toMat4(node->mTransformation);
     for (unsigned k = 0; k < node->mNumMeshes; ++k) {
       const unsigned mi = node->mMeshes[k];
-      if (mi >= meshes.size() || !meshes[mi] || meshes[mi]->indices.empty()) continue;
+      if (mi >= meshes.size() || !meshes[mi] || (meshes[mi]->indices.empty() && !meshes[mi]->hasPointsOrLines())) continue;
       Object o;
       o.mesh = meshes[mi];
       o.worldFromObject = world;
@@ -463,9 +462,11 @@ ImportedModel importModelInProcess(const fs::path& path, const ImportOptions& op
         lo = glm::min(lo, w);
         hi = glm::max(hi, w);
       }
-      drawable = drawable || hasDrawableTriangle(*o.mesh);
+      drawable = drawable || o.mesh->hasPointsOrLines() || hasDrawableTriangle(*o.mesh);
       model.vertexCount += o.mesh->positions.size();
       model.triangleCount += o.mesh->triangleCount();
+      model.pointCount += o.mesh->pointCount();
+      model.lineCount += o.mesh->lineCount();
       if (model.triangleCount > options.limits.maxTriangles)
         throw InputError(path.string() + ": the model's instances make more than the limit of " +
                          withThousands(options.limits.maxTriangles) + " triangles (raise it with --max-triangles)");
@@ -473,12 +474,12 @@ ImportedModel importModelInProcess(const fs::path& path, const ImportOptions& op
     }
     for (unsigned c = 0; c < node->mNumChildren; ++c) stack.push_back({node->mChildren[c], world});
   }
-  if (model.objects.empty()) throw InputError(path.string() + ": " + nonSurfaces);
+  if (model.objects.empty()) throw InputError(path.string() + ": the model has no triangles, lines or points");
   if (!std::isfinite(lo.x + lo.y + lo.z + hi.x + hi.y + hi.z))
     throw InputError(path.string() + ": the node transforms place the model at infinity");
   if (!drawable || hi == lo)
-    throw InputError(path.string() + ": the model has no drawable triangle (every triangle has zero area" +
-                     std::string(hi == lo ? ": all its vertices are at one point)" : ")"));
+    throw InputError(path.string() + (hi == lo ? ": the model has nothing to draw: all its vertices are at one point"
+                                               : ": the model has no drawable triangle (every triangle has zero area)"));
   // Exporters that write <transparency>0</transparency> or an alpha-0 diffuse for opaque
   // surfaces would make the whole model invisible: that is their bug, not the author's intent.
   if (std::all_of(model.objects.begin(), model.objects.end(), fullyTransparent)) {

@@ -99,6 +99,8 @@ void writeModel(const ImportedModel& model, IsolatedWriter& out) {
     w.vector(m->positions);
     w.vector(m->normals);
     w.vector(m->indices);
+    w.vector(m->pointIndices);
+    w.vector(m->lineIndices);
     w.vector(m->uvs);
     w.vector(m->colors);
   }
@@ -120,7 +122,8 @@ void writeModel(const ImportedModel& model, IsolatedWriter& out) {
   }
   w.value(model.boundsMin);
   w.value(model.boundsMax);
-  for (std::size_t n : {model.vertexCount, model.triangleCount, model.materialCount, model.textureCount})
+  for (std::size_t n : {model.vertexCount, model.triangleCount, model.materialCount, model.textureCount,
+                        model.pointCount, model.lineCount})
     w.value(std::uint64_t(n));
   w.value(model.transparencyIgnored);
   w.value(model.upAxis.has_value());
@@ -140,10 +143,18 @@ ImportedModel readModel(std::span<const std::uint8_t> bytes) {
     m->positions = r.vector<Vec3>();
     m->normals = r.vector<Vec3>();
     m->indices = r.vector<std::uint32_t>();
+    m->pointIndices = r.vector<std::uint32_t>();
+    m->lineIndices = r.vector<std::uint32_t>();
     m->uvs = r.vector<Vec2>();
     m->colors = r.vector<Vec4>();
-    for (std::uint32_t i : m->indices)
-      if (i >= m->positions.size()) Reader::broken();
+    for (const auto* list : {&m->indices, &m->pointIndices, &m->lineIndices})
+      for (std::uint32_t i : *list)
+        if (i >= m->positions.size()) Reader::broken();
+    const std::size_t n = m->positions.size();
+    if (m->indices.size() % 3 || m->lineIndices.size() % 2 || (m->normals.size() != n && !m->indices.empty()) ||
+        (!m->normals.empty() && m->normals.size() != n) || (!m->uvs.empty() && m->uvs.size() != n) ||
+        (!m->colors.empty() && m->colors.size() != n))
+      Reader::broken();
     slot = std::move(m);
   }
   std::vector<std::shared_ptr<const Texture>> textures(r.count(bytes.size()));
@@ -173,7 +184,8 @@ ImportedModel readModel(std::span<const std::uint8_t> bytes) {
   }
   model.boundsMin = r.value<Vec3>();
   model.boundsMax = r.value<Vec3>();
-  for (std::size_t* n : {&model.vertexCount, &model.triangleCount, &model.materialCount, &model.textureCount})
+  for (std::size_t* n : {&model.vertexCount, &model.triangleCount, &model.materialCount, &model.textureCount,
+                         &model.pointCount, &model.lineCount})
     *n = std::size_t(r.value<std::uint64_t>());
   model.transparencyIgnored = r.value<bool>();
   const bool hasUp = r.value<bool>();

@@ -29,6 +29,8 @@ std::vector<std::uint8_t> bytesOf(const ImportedModel& model) {
 TEST(ModelWire, RoundTripKeepsSharingAndValues) {
   auto mesh = std::make_shared<Mesh>(makeCube(2));
   mesh->uvs.assign(mesh->positions.size(), Vec2(0.25, 0.75));
+  mesh->pointIndices = {0, 5, 7};
+  mesh->lineIndices = {1, 2, 3, 4};
   Image image(3, 2);
   for (std::size_t i = 0; i < image.rgba.size(); ++i) image.rgba[i] = std::uint8_t(i * 11);
   auto texture = std::make_shared<const Texture>(image);
@@ -43,6 +45,7 @@ TEST(ModelWire, RoundTripKeepsSharingAndValues) {
   }
   model.boundsMin = Vec3(-1), model.boundsMax = Vec3(2);
   model.vertexCount = 48, model.triangleCount = 24, model.materialCount = 2, model.textureCount = 1;
+  model.pointCount = 6, model.lineCount = 4;
   model.transparencyIgnored = true;
   model.warnings = {"one", "two"};
 
@@ -52,6 +55,10 @@ TEST(ModelWire, RoundTripKeepsSharingAndValues) {
   EXPECT_EQ(back.objects[0].mesh->positions, mesh->positions);
   EXPECT_EQ(back.objects[0].mesh->indices, mesh->indices);
   EXPECT_EQ(back.objects[0].mesh->uvs, mesh->uvs);
+  EXPECT_EQ(back.objects[0].mesh->pointIndices, mesh->pointIndices);
+  EXPECT_EQ(back.objects[0].mesh->lineIndices, mesh->lineIndices);
+  EXPECT_EQ(back.pointCount, 6u);
+  EXPECT_EQ(back.lineCount, 4u);
   EXPECT_EQ(back.objects[1].worldFromObject, model.objects[1].worldFromObject);
   EXPECT_EQ(back.objects[1].material.shininess, Real(11));
   ASSERT_TRUE(back.objects[0].diffuseTexture);

@@ -367,7 +367,8 @@ Scene parseScene(const std::string& text, const std::string& name, const std::fi
   const JsonReader j(root, name);
   j.expectObject({"version", "width", "height", "background", "model", "shading", "camera",
                   "light_model", "lights", "objects", "labels", "blend", "renderer", "max_depth", "shadows",
-                  "samples", "environment", "environment_map", "tone_map", "encoding", "multisample", "overlays", "ambient_occlusion"});
+                  "samples", "environment", "environment_map", "tone_map", "encoding", "multisample", "overlays", "ambient_occlusion",
+                  "point_size", "line_width"});
   Scene s;
   if (j.has("version") && j.at("version").integer(0, std::numeric_limits<int>::max()) != 1)
     j.at("version").fail("expected version 1");
@@ -431,6 +432,8 @@ Scene parseScene(const std::string& text, const std::string& name, const std::fi
     if (!isMultisampleCount(s.multisample))
       j.at("multisample").fail("expected 1, 4, 8 or 16 samples per pixel, got " + std::to_string(s.multisample));
   }
+  if (j.has("point_size")) s.pointSize = j.at("point_size").number(kMinPrimitiveSize, kMaxPrimitiveSize);
+  if (j.has("line_width")) s.lineWidth = j.at("line_width").number(kMinPrimitiveSize, kMaxPrimitiveSize);
   if (j.has("max_depth")) s.rayTracing.maxDepth = j.at("max_depth").integer(0, kMaxRayDepth);
   if (j.has("shadows")) s.rayTracing.shadows = j.at("shadows").boolean();
   if (j.has("samples")) s.rayTracing.samples = j.at("samples").integer(1, kMaxSamples);

@@ -46,6 +46,7 @@ RayScene::RayScene(const Scene& scene) {
     const Mesh& mesh = *object.mesh;
     EyeMesh& eye = meshes_[i];
     eye.object = &object;
+    if (mesh.triangleCount() == 0) continue;  // points and lines are the rasterizer's
     // GL_MODELVIEW and its normal matrix, as the vertex stage applies them (raster/vertex.cpp).
     const Mat4 viewFromObject = viewFromWorld * object.worldFromObject;
     const Mat3 normalFromObject = normalMatrix(viewFromObject);

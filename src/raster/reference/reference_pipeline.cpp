@@ -13,6 +13,7 @@ Image renderSceneReference(const Scene& scene, RenderStats* statsOut) {
   std::vector<ShadedVertex> vertices;
   RecordArena records;
   for (const Object* object : drawingOrder(scene, frame)) {
+    if (object->mesh->triangleCount() == 0) continue;  // the oracle is for triangles
     const auto index = std::uint32_t(object - scene.objects.data());
     vertices.resize(object->mesh->positions.size());
     runVertexStage(frame, *object, vertices, 0, vertices.size());

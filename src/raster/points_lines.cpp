@@ -1,0 +1,101 @@
+#include "raster/points_lines.h"
+
+#include "raster/wide_segment.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <cmath>
+
+namespace illum {
+namespace {
+
+constexpr std::size_t kVertexGrain = 4096;  // vertices per parallel task
+
+// Every vertex's clip position and colour (`front`), as the header says.
+void prepareVertices(const FrameContext& litFrame, const Object& object, std::vector<ShadedVertex>& out) {
+  const Mesh& mesh = *object.mesh;
+  out.resize(mesh.positions.size());
+  const Mat4 clipFromObject = litFrame.clipFromView * litFrame.viewFromWorld * object.worldFromObject;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, out.size(), kVertexGrain), [&](const auto& r) {
+    if (!mesh.normals.empty()) {
+      runVertexStage(litFrame, object, out, r.begin(), r.end());
+      return;
+    }
+    // A physically based material's colour is its base colour (its GL diffuse is base·(1 − metallic)).
+    const Material& m = object.material;
+    const Color4 unlit = m.physicallyBased ? Color4(m.physical.baseColor, m.diffuse.a) : m.diffuse;
+    for (std::size_t i = r.begin(); i < r.end(); ++i) {
+      out[i].clip = clipFromObject * Vec4(mesh.positions[i], 1);
+      out[i].front = mesh.colors.empty() ? unlit : mesh.colors[i];
+    }
+  });
+}
+
+void writeFragment(Framebuffer& fb, const FrameContext& frame, int x, int y, Real z, const Color4& color) {
+  fb.clearTile(x, y);  // a tile no triangle touched is cleared now
+  if (z < 0 || z > 1 || !fb.depthTest(x, y, z)) return;
+  if (frame.blend) fb.blendColor(x, y, color);
+  else fb.writeColor(x, y, color);
+}
+
+void drawPoint(Framebuffer& fb, const FrameContext& frame, const ShadedVertex& v, Real size) {
+  const Vec4& c = v.clip;
+  // GL passes a point whose centre is inside the clip volume, whole, and discards any other.
+  if (!(c.w > 0) || std::abs(c.x) > c.w || std::abs(c.y) > c.w || std::abs(c.z) > c.w) return;
+  const Real cx = (c.x / c.w + 1) * Real(0.5) * Real(frame.width), cy = (c.y / c.w + 1) * Real(0.5) * Real(frame.height);
+  const Real z = (c.z / c.w + 1) * Real(0.5), half = size / 2;
+  // Samples lie less than half a pixel from pixel centres: pixels beyond these cannot be covered.
+  const int x0 = std::max(0, int(std::ceil(cx - half - 1))), x1 = std::min(frame.width - 1, int(std::floor(cx + half)));
+  const int y0 = std::max(0, int(std::ceil(cy - half - 1))), y1 = std::min(frame.height - 1, int(std::floor(cy + half)));
+  const Vec2 sample(Real(frame.sample.x) / 256, Real(frame.sample.y) / 256);
+  for (int y = y0; y <= y1; ++y)
+    for (int x = x0; x <= x1; ++x) {
+      const Vec2 d = Vec2(Real(x) + Real(0.5), Real(y) + Real(0.5)) + sample - Vec2(cx, cy);
+      // Multisampled, the disc of diameter `size` at this pass's sample position; else the pixels
+      // whose centres lie in the square [c − size/2, c + size/2) (size 1: the pixel c is in).
+      const bool covered = frame.multisampled ? glm::dot(d, d) <= half * half
+                                              : d.x >= -half && d.x < half && d.y >= -half && d.y < half;
+      if (covered) writeFragment(fb, frame, x, y, z, v.front);
+    }
+}
+
+void drawLine(Framebuffer& fb, const FrameContext& frame, const ShadedVertex& a, const ShadedVertex& b, Real width) {
+  const auto s = windowSegment(frame, a.clip, b.clip);
+  if (!s) return;
+  forEachSegmentPixel(frame, *s, width, [&](int x, int y, Real t) {
+    Color4 color = b.front;  // flat shading: the provoking (second) vertex's
+    if (frame.shading != Shading::Flat) {
+      // Perspective-correct: t is along the window-space segment, u along the original one.
+      const Real along = (t / s->wB) / ((1 - t) / s->wA + t / s->wB);
+      const Real u = s->tA + along * (s->tB - s->tA);
+      color = a.front + u * (b.front - a.front);
+    }
+    writeFragment(fb, frame, x, y, s->a.z + t * (s->b.z - s->a.z), color);
+  });
+}
+
+}  // namespace
+
+void drawPointsAndLines(Framebuffer& fb, const FrameContext& frame, const Scene& scene,
+                        std::vector<ShadedVertex>& vertices) {
+  // The vertex stage lights vertices for flat and Gouraud shading: points and lines have no pixels
+  // to light in between, so Phong shading lights them at their vertices too.
+  FrameContext litFrame;
+  bool copied = false;
+  for (const Object& object : scene.objects) {
+    const Mesh& mesh = *object.mesh;
+    if (!mesh.hasPointsOrLines()) continue;
+    if (!copied && frame.shading == Shading::Phong) {
+      litFrame = frame;
+      litFrame.shading = Shading::Gouraud;
+      copied = true;
+    }
+    prepareVertices(copied ? litFrame : frame, object, vertices);
+    for (std::size_t i = 0; i + 1 < mesh.lineIndices.size(); i += 2)
+      drawLine(fb, frame, vertices[mesh.lineIndices[i]], vertices[mesh.lineIndices[i + 1]], scene.lineWidth);
+    for (std::uint32_t i : mesh.pointIndices) drawPoint(fb, frame, vertices[i], scene.pointSize);
+  }
+}
+
+}  // namespace illum

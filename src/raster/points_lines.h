@@ -1,0 +1,26 @@
+// GL_POINTS and GL_LINES: the points and segments of point clouds and line sets (Mesh::pointIndices,
+// lineIndices), drawn after each pass's triangles (every multisample pass too), depth-tested with
+// GL_LESS and writing depth, in the scene's object order.
+//
+// Shapes as GL rasterizes them: on one sample a point is GL's aliased point, the square of
+// pointSize pixels around it (size 1: the pixel it lies in); multisampled it is the disc of that
+// diameter (GL §3.4's multisample points). A line is lineWidth pixels wide (wide_segment.h).
+// Colours as GL gives them: with the file's normals the lighting equation at each vertex (the
+// vertex stage, as Gouraud shading lights it, GL_COLOR_MATERIAL included); without, unlit, the
+// vertex colour or else the material's diffuse colour (a physically based one's base colour). Lines are smooth-shaded between their
+// ends (perspective-correct), flat shading gives the whole line its second vertex's colour.
+#pragma once
+
+#include "raster/framebuffer.h"
+#include "raster/frame_context.h"
+#include "raster/vertex.h"
+
+#include <vector>
+
+namespace illum {
+
+// Draws every object's points and lines; `vertices` is working memory.
+void drawPointsAndLines(Framebuffer& fb, const FrameContext& frame, const Scene& scene,
+                        std::vector<ShadedVertex>& vertices);
+
+}  // namespace illum
