@@ -75,6 +75,30 @@ TEST(CliBatch, AFolderBecomesThumbnailsAndABrokenFileLeavesTheRestDone) {
   EXPECT_EQ(jsonLines(fast.out).size(), 1u);
 }
 
+// The next models are read while one is drawn: the pictures, warnings and errors are each job's
+// own, as single renders give them.
+TEST(CliBatch, ModelsReadAheadGiveWhatSingleRendersGive) {
+  TempDir dir;
+  const std::vector<fs::path> inputs = {kModels / "PLY/Wuson.ply", kModels / "Collada/teapots.DAE",
+                                        kModels / "OBJ/box.obj", kModels / "OFF/invalid.off", kModels / "STL/Spider_binary.stl"};
+  std::string list;
+  for (const fs::path& p : inputs) list += p.string() + " ";
+  const RunResult batch = run("render " + list + "--resolution 64,48 --threads 2 --json -o '" + (dir / "{stem}.png").string() + "'");
+  EXPECT_EQ(batch.exitCode, 2) << batch.err;
+  const auto lines = jsonLines(batch.out);
+  ASSERT_EQ(lines.size(), inputs.size());
+  EXPECT_NE(lines[1]["warnings"].dump().find("fully transparent"), std::string::npos) << lines[1].dump();
+  EXPECT_EQ(lines[2]["warnings"].size(), 0u) << lines[2].dump();
+  EXPECT_FALSE(lines[3]["ok"].get<bool>());
+  EXPECT_NE(lines[3]["error"].get<std::string>().find("invalid.off"), std::string::npos);
+  for (std::size_t i = 0; i < inputs.size(); ++i) {
+    if (i == 3) continue;
+    const fs::path single = dir / ("single" + std::to_string(i) + ".png");
+    ASSERT_EQ(run("render " + inputs[i].string() + " --resolution 64,48 -o " + single.string()).exitCode, 0);
+    EXPECT_EQ(slurp(single), slurp(dir / (inputs[i].stem().string() + ".png"))) << inputs[i];
+  }
+}
+
 TEST(CliBatch, NamesAreCheckedBeforeAnythingIsDrawn) {
   TempDir dir;
   const RunResult same = run("render " + (kModels / "PLY/Wuson.ply").string() + " " + (kModels / "STL/Wuson.stl").string() +

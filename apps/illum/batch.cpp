@@ -14,14 +14,18 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <csignal>
+#include <deque>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <future>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <unistd.h>
 
 namespace illum::cli {
@@ -141,8 +145,50 @@ struct JobResult {
 
 double msBetween(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); }
 
+// The files a job writes: one animation, or one picture per frame.
+std::vector<std::string> outputNames(const RenderOptions& o, const BatchJob& job, const std::string& pattern) {
+  const int frames = std::max({1, o.turntable, o.orbitLight});
+  const bool animation = containerOf(expandTemplate(pattern, job, 0)) != Container::Png;
+  std::vector<std::string> names;
+  for (int f = 0; f < (animation ? 1 : frames); ++f) names.push_back(expandTemplate(pattern, job, f));
+  return names;
+}
+
+// --skip-existing: every file the job would write is there and not empty.
+bool alreadyDone(const RenderOptions& o, const std::vector<std::string>& names) {
+  return o.skipExisting && std::all_of(names.begin(), names.end(), [](const std::string& n) {
+           std::error_code ec;
+           return fs::is_regular_file(n, ec) && fs::file_size(n, ec) > 0;
+         });
+}
+
+// A job's model file read ahead, in its isolated child, while the job before it is drawn: the
+// reading (one core) and the drawing (every core) overlap.
+struct ReadAhead {
+  std::string key;  // modelCacheKey
+  std::future<std::shared_ptr<const ImportedModel>> model;
+};
+
+std::optional<ReadAhead> startReadAhead(const RenderOptions& o, const BatchJob& job, const std::string& pattern,
+                                        int threads) {
+  // A big model is read in its turn: several read ahead would be held in memory at once.
+  constexpr std::uintmax_t kLargestReadAhead = std::uintmax_t(64) << 20;
+  std::error_code ec;
+  if (job.input == "-" || !isModelInput(job.input) || fs::file_size(job.input, ec) > kLargestReadAhead || ec ||
+      alreadyDone(o, outputNames(o, job, pattern)))
+    return std::nullopt;
+  SceneOptions so = o.scene;
+  so.input = job.input;
+  ReadAhead ahead;
+  ahead.key = modelCacheKey(so);
+  // Sharing the cores with the drawing, the reader is allowed that much more wall-clock time
+  // (its CPU time is held to the same limit).
+  ahead.model = std::async(std::launch::async, [so, threads] { return importModelFor(so, double(threads + 1)); });
+  return ahead;
+}
+
 JobResult renderJob(const RenderOptions& o, const BatchJob& job, const std::string& input, const std::string& pattern,
-                    Renderer& renderer) {
+                    Renderer& renderer, std::optional<ReadAhead> ahead) {
   JobResult result;
   const int frames = std::max({1, o.turntable, o.orbitLight});
   const Container container = containerOf(expandTemplate(pattern, job, 0));
@@ -150,17 +196,14 @@ JobResult renderJob(const RenderOptions& o, const BatchJob& job, const std::stri
   if (frames > 1 && !animation && pattern.find("{frame") == std::string::npos)
     throw InputError("-o: " + std::to_string(frames) + " frames need {frame} in the name (\"{stem}_{frame:03}.png\"), or a "
                      ".gif, .webp or .mp4 output");
-  std::vector<std::string> names;
-  for (int f = 0; f < (animation ? 1 : frames); ++f) names.push_back(expandTemplate(pattern, job, f));
-  if (o.skipExisting && std::all_of(names.begin(), names.end(), [](const std::string& n) {
-        std::error_code ec;
-        return fs::is_regular_file(n, ec) && fs::file_size(n, ec) > 0;
-      })) {
+  const std::vector<std::string> names = outputNames(o, job, pattern);
+  if (alreadyDone(o, names)) {
     result.outputs = names;
     result.skipped = true;
     return result;
   }
   ModelCache cache;
+  if (ahead) cache[ahead->key] = {ahead->model.get(), false};  // its error, if any, is this job's
   std::vector<Image> pictures;
   for (int f = 0; f < frames && !(f > 0 && gInterrupted); ++f) {
     SceneOptions so = o.scene;
@@ -268,15 +311,26 @@ int runBatch(const RenderOptions& o, const std::vector<BatchJob>& allJobs) {
   const auto previous = std::signal(SIGINT, onInterrupt);
   Renderer renderer;
   std::size_t done = 0, failed = 0, inputErrors = 0;
-  for (const BatchJob& job : jobs) {
+  // The next jobs' models, read while this job is drawn: as many at once as there are cores.
+  std::deque<std::optional<ReadAhead>> ahead;
+  std::size_t started = 1;  // jobs whose reading has started (or that read their own)
+  for (std::size_t i = 0; i < jobs.size(); ++i) {
     if (gInterrupted) break;
+    const BatchJob& job = jobs[i];
+    std::optional<ReadAhead> readAhead;
+    if (!ahead.empty()) {
+      readAhead = std::move(ahead.front());
+      ahead.pop_front();
+    }
     const std::string input = job.input == "-" ? stdinFile->path() : job.input;
     nlohmann::json line = {{"input", job.input}};
     try {
       // Folders the template names are made as needed.
       const fs::path first = expandTemplate(pattern, job, 0);
       if (first.has_parent_path()) fs::create_directories(first.parent_path());
-      const JobResult r = renderJob(o, job, input, pattern, renderer);
+      for (; started < jobs.size() && started <= i + std::size_t(limit.threads()); ++started)
+        ahead.push_back(startReadAhead(o, jobs[started], pattern, limit.threads()));
+      const JobResult r = renderJob(o, job, input, pattern, renderer, std::move(readAhead));
       line["output"] = r.outputs.size() == 1 ? nlohmann::json(r.outputs[0]) : nlohmann::json(r.outputs);
       line["ok"] = true;
       line["skipped"] = r.skipped;

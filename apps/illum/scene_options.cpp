@@ -263,6 +263,18 @@ void rejectTracedPointsAndLines(const Scene& scene, std::vector<std::string>* wa
 
 }  // namespace
 
+bool isModelInput(const std::string& input) { return !input.empty() && !isSceneFile(input); }
+
+std::string modelCacheKey(const SceneOptions& o) {
+  return o.input + "\n" + o.normals + "\n" + (o.creaseAngle ? std::to_string(*o.creaseAngle) : "");
+}
+
+std::shared_ptr<const ImportedModel> importModelFor(const SceneOptions& o, double wallClockAllowance) {
+  ImportOptions options = importOptions(o);
+  options.wallClockAllowance = wallClockAllowance;
+  return std::make_shared<const ImportedModel>(importModel(o.input, options));
+}
+
 double peakMemoryMiB() {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
@@ -383,19 +395,20 @@ Scene prepareScene(SceneOptions o, double* loadMs, ModelCache* cache, std::vecto
     applyExplicitCamera(o, scene.camera);
     validateCamera(o, scene.camera, Real(scene.width) / Real(scene.height));
   } else {
-    const std::string key = o.input + "\n" + o.normals + "\n" + (o.creaseAngle ? std::to_string(*o.creaseAngle) : "");
-    const bool cached = cache && cache->count(key);
-    if (cached) {
-      model = *cache->at(key);
-    } else {
-      model = importModel(o.input, importOptions(o));
-      if (cache) cache->emplace(key, std::make_shared<const ImportedModel>(*model));
+    const std::string key = modelCacheKey(o);
+    CachedModel entry;
+    if (cache && cache->count(key)) entry = cache->at(key);
+    else entry = {importModelFor(o), false};
+    const bool report = !entry.reported;
+    entry.reported = true;
+    if (cache) (*cache)[key] = entry;
+    model = *entry.model;
+    if (report)
       for (const std::string& w : model->warnings) {
         if (warnings) warnings->push_back(w);
         else std::fprintf(stderr, "illum: warning: %s\n", w.c_str());
       }
-    }
-    if (o.verbose && !cached) {
+    if (o.verbose && report) {
       std::string primitives = withThousands(model->triangleCount) + " triangles";
       if (model->lineCount) primitives += ", " + withThousands(model->lineCount) + " lines";
       if (model->pointCount) primitives += ", " + withThousands(model->pointCount) + " points";

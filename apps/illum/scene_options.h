@@ -58,12 +58,26 @@ class ThreadLimit {
 void addSceneOptions(CLI::App& cmd, SceneOptions& o, std::vector<std::string>* inputs = nullptr);
 
 // Model files already imported, by path and import options (normals, crease angle), so that many
-// scenes of one model (a comparison sheet's panels) read it once.
-using ModelCache = std::map<std::string, std::shared_ptr<const ImportedModel>>;
+// scenes of one model (a comparison sheet's panels) read it once. An entry imported ahead of use
+// (a batch reads the next input while it draws this one) has its warnings and -v statistics still
+// to report.
+struct CachedModel {
+  std::shared_ptr<const ImportedModel> model;
+  bool reported = true;
+};
+using ModelCache = std::map<std::string, CachedModel>;
+
+// Whether `input` names a model file (rather than a scene file or the built-in scene).
+bool isModelInput(const std::string& input);
+// The cache key of the model file the options name.
+std::string modelCacheKey(const SceneOptions& o);
+// Imports the model file the options name, as prepareScene would; `wallClockAllowance` as in
+// ImportOptions (more than 1 when the import runs beside a render).
+std::shared_ptr<const ImportedModel> importModelFor(const SceneOptions& o, double wallClockAllowance = 1);
 
 // Loads or builds the scene the options describe, validated (exit-2 errors name the option);
 // warnings go to stderr, and with --verbose the model's statistics. `loadMs` is the time it took.
-// With a cache, a model file already in it is not read again (nor its warnings printed).
+// With a cache, a model file already in it is not read again (nor its warnings printed twice).
 // With `warnings`, warnings are collected there instead of printed.
 Scene prepareScene(SceneOptions o, double* loadMs = nullptr, ModelCache* cache = nullptr,
                    std::vector<std::string>* warnings = nullptr);

@@ -16,6 +16,9 @@ struct ImportOptions {
   NormalMode normals = NormalMode::Auto;
   Real creaseAngle = 40;  // degrees, for generated normals
   Limits limits;
+  // The importer's wall-clock limit is its CPU-time limit times this: more than 1 when it shares
+  // the cores with other work (a batch drawing one picture while it reads the next file).
+  double wallClockAllowance = 1;
 };
 
 struct ImportedModel {

@@ -281,7 +281,8 @@ IsolationOutcome runIsolated(const std::function<void(IsolatedWriter&)>& work, c
   // waits, or shares a busy machine, is held to the same promise), and its resident size (the
   // limit that works under every allocator and sanitizer).
   using Clock = std::chrono::steady_clock;
-  const auto deadline = Clock::now() + std::chrono::duration<double>(limits.cpuSeconds);
+  const auto deadline =
+      Clock::now() + std::chrono::duration<double>(limits.wallSeconds > 0 ? limits.wallSeconds : limits.cpuSeconds);
   const auto residentLimit = inherited + std::size_t(double(limits.memoryBytes) * kResidentAllowance);
   auto pause = std::chrono::microseconds(200);
   int status = 0;

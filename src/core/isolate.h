@@ -13,7 +13,8 @@ namespace illum {
 
 struct IsolationLimits {
   std::size_t memoryBytes = std::size_t(1) << 30;  // the child's data segment (and resident size)
-  double cpuSeconds = 10;                          // CPU time, and wall-clock time too
+  double cpuSeconds = 10;                          // CPU time
+  double wallSeconds = 0;                          // wall-clock time; 0: cpuSeconds
   std::size_t outputBytes = std::size_t(1) << 30;  // what the child may hand back
 };
 

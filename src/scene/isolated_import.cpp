@@ -7,6 +7,7 @@
 #include "core/isolate.h"
 #include "scene/model_wire.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <system_error>
@@ -24,6 +25,7 @@ ImportedModel importModel(const std::filesystem::path& path, const ImportOptions
   IsolationLimits limits;
   limits.memoryBytes = std::size_t(options.limits.memoryBytesFor(size));
   limits.cpuSeconds = options.limits.secondsFor(size);
+  limits.wallSeconds = limits.cpuSeconds * std::max(1.0, options.wallClockAllowance);
   limits.outputBytes = limits.memoryBytes;
   const IsolationOutcome outcome =
       runIsolated([&](IsolatedWriter& out) { writeModel(importModelInProcess(path, options), out); }, limits);
