@@ -188,7 +188,7 @@ std::optional<ReadAhead> startReadAhead(const RenderOptions& o, const BatchJob& 
 }
 
 JobResult renderJob(const RenderOptions& o, const BatchJob& job, const std::string& input, const std::string& pattern,
-                    Renderer& renderer, std::optional<ReadAhead> ahead) {
+                    Renderer& renderer, ModelCache& cache, std::optional<ReadAhead> ahead) {
   JobResult result;
   const int frames = std::max({1, o.turntable, o.orbitLight});
   const Container container = containerOf(expandTemplate(pattern, job, 0));
@@ -202,8 +202,10 @@ JobResult renderJob(const RenderOptions& o, const BatchJob& job, const std::stri
     result.skipped = true;
     return result;
   }
-  ModelCache cache;
-  if (ahead) cache[ahead->key] = {ahead->model.get(), false};  // its error, if any, is this job's
+  // A model file is this job's alone (its frames share it); the models scene files name are kept
+  // for the next scene, which may name them too.
+  cache.models.clear();
+  if (ahead) cache.models[ahead->key] = {ahead->model.get(), false};  // its error, if any, is this job's
   std::vector<Image> pictures;
   for (int f = 0; f < frames && !(f > 0 && gInterrupted); ++f) {
     SceneOptions so = o.scene;
@@ -310,6 +312,7 @@ int runBatch(const RenderOptions& o, const std::vector<BatchJob>& allJobs) {
   gInterrupted = false;
   const auto previous = std::signal(SIGINT, onInterrupt);
   Renderer renderer;
+  ModelCache cache;
   std::size_t done = 0, failed = 0, inputErrors = 0;
   // The next jobs' models, read while this job is drawn: as many at once as there are cores.
   std::deque<std::optional<ReadAhead>> ahead;
@@ -330,7 +333,7 @@ int runBatch(const RenderOptions& o, const std::vector<BatchJob>& allJobs) {
       if (first.has_parent_path()) fs::create_directories(first.parent_path());
       for (; started < jobs.size() && started <= i + std::size_t(limit.threads()); ++started)
         ahead.push_back(startReadAhead(o, jobs[started], pattern, limit.threads()));
-      const JobResult r = renderJob(o, job, input, pattern, renderer, std::move(readAhead));
+      const JobResult r = renderJob(o, job, input, pattern, renderer, cache, std::move(readAhead));
       line["output"] = r.outputs.size() == 1 ? nlohmann::json(r.outputs[0]) : nlohmann::json(r.outputs);
       line["ok"] = true;
       line["skipped"] = r.skipped;

@@ -378,7 +378,7 @@ Scene prepareScene(SceneOptions o, double* loadMs, ModelCache* cache, std::vecto
     // The built-in scene's captions name the model and shading it is drawn with.
     scene = o.input.empty() ? defaultScene(lightingModel.value_or(LightingModel::BlinnPhong),
                                            shading.value_or(Shading::Phong), renderer.value_or(RendererKind::Raster))
-                            : loadSceneFile(o.input, o.limits);
+                            : loadSceneFile(o.input, o.limits, cache ? &cache->sceneModels : nullptr);
     const int designedWidth = scene.width, designedHeight = scene.height;
     if (o.width) scene.width = *o.width;
     if (o.height) scene.height = *o.height;
@@ -397,11 +397,11 @@ Scene prepareScene(SceneOptions o, double* loadMs, ModelCache* cache, std::vecto
   } else {
     const std::string key = modelCacheKey(o);
     CachedModel entry;
-    if (cache && cache->count(key)) entry = cache->at(key);
+    if (cache && cache->models.count(key)) entry = cache->models.at(key);
     else entry = {importModelFor(o), false};
     const bool report = !entry.reported;
     entry.reported = true;
-    if (cache) (*cache)[key] = entry;
+    if (cache) cache->models[key] = entry;
     model = *entry.model;
     if (report)
       for (const std::string& w : model->warnings) {

@@ -65,7 +65,10 @@ struct CachedModel {
   std::shared_ptr<const ImportedModel> model;
   bool reported = true;
 };
-using ModelCache = std::map<std::string, CachedModel>;
+struct ModelCache {
+  std::map<std::string, CachedModel> models;  // model files drawn as previews
+  SceneModelCache sceneModels;                // model files that scene files name
+};
 
 // Whether `input` names a model file (rather than a scene file or the built-in scene).
 bool isModelInput(const std::string& input);

@@ -10,6 +10,7 @@
 #include <illum/texture.h>
 
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -172,14 +173,29 @@ struct Scene {
   AmbientOcclusion ambientOcclusion;
 };
 
+struct ImportedModel;
+// The model files scene files name, by canonical path, kept from one scene to the next: a batch of
+// scenes that share assets reads each file once. What the scene being read uses is kept, and what
+// the scene before it used, until the next scene starts: never more than two scenes' models.
+class SceneModelCache {
+ public:
+  std::shared_ptr<const ImportedModel> find(const std::string& key);
+  void add(const std::string& key, std::shared_ptr<const ImportedModel> model);
+  void nextScene();  // a scene starts: forgets what the scene two before it used (parseScene calls it)
+
+ private:
+  std::map<std::string, std::shared_ptr<const ImportedModel>> current_, earlier_;
+};
+
 // Reads a scene file; relative mesh paths are resolved against the file's folder.
 // Throws InputError naming the file, the JSON path and what was expected.
 // Tessellation, model files and the image size are held to `limits` before anything is built.
-Scene loadSceneFile(const std::filesystem::path& path, const Limits& limits = {});
+// With `models`, model files already in it are not read again.
+Scene loadSceneFile(const std::filesystem::path& path, const Limits& limits = {}, SceneModelCache* models = nullptr);
 
 // Parses scene JSON text. `name` is used in messages; `baseDir` resolves mesh file paths.
-Scene parseScene(const std::string& text, const std::string& name,
-                 const std::filesystem::path& baseDir, const Limits& limits = {});
+Scene parseScene(const std::string& text, const std::string& name, const std::filesystem::path& baseDir,
+                 const Limits& limits = {}, SceneModelCache* models = nullptr);
 
 // The built-in scene `illum render` draws with no arguments: GLUT's solids in several materials
 // under coloured lights, the seeds' story at a glance, labelled with what each part shows.

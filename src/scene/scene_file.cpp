@@ -214,7 +214,7 @@ struct ReadContext {
   std::uint64_t triangles = 0;
   // Model files already read, by their path: a file several objects name is read once, and its
   // meshes and textures are shared between them.
-  std::map<std::string, std::shared_ptr<const ImportedModel>> models;
+  SceneModelCache* models = nullptr;
 
   void charge(const JsonReader& j, std::uint64_t count) {
     triangles += count;
@@ -233,11 +233,13 @@ ImportedModel readModelFile(const JsonReader& j, ReadContext& context) {
   try {
     std::error_code ec;
     const std::string key = std::filesystem::weakly_canonical(full, ec).string();
-    auto& cached = context.models[ec ? full.string() : key];
+    const std::string name = ec ? full.string() : key;
+    std::shared_ptr<const ImportedModel> cached = context.models->find(name);
     if (!cached) {
       ImportOptions options;
       options.limits = context.limits;
       cached = std::make_shared<const ImportedModel>(importModel(full, options));
+      context.models->add(name, cached);
     }
     context.charge(j.at("path"), cached->triangleCount);
     return *cached;
@@ -351,8 +353,25 @@ std::string describeParseError(const Json::parse_error& e, const std::string& te
 
 }  // namespace
 
+std::shared_ptr<const ImportedModel> SceneModelCache::find(const std::string& key) {
+  if (auto it = current_.find(key); it != current_.end()) return it->second;
+  auto it = earlier_.find(key);
+  if (it == earlier_.end()) return nullptr;
+  return current_[key] = it->second;  // used again: kept for the next scene too
+}
+
+void SceneModelCache::add(const std::string& key, std::shared_ptr<const ImportedModel> model) {
+  current_[key] = std::move(model);
+}
+
+void SceneModelCache::nextScene() {
+  earlier_ = std::move(current_);
+  current_.clear();
+}
+
 Scene parseScene(const std::string& text, const std::string& name, const std::filesystem::path& baseDir,
-                 const Limits& limits) {
+                 const Limits& limits, SceneModelCache* models) {
+  if (models) models->nextScene();
   Json root;
   try {
     root = parseJsonStrict(text, name);
@@ -459,7 +478,8 @@ Scene parseScene(const std::string& text, const std::string& name, const std::fi
   }
   if (j.has("objects")) {
     const JsonReader objects = j.at("objects");
-    ReadContext context{baseDir, limits, 0, {}};
+    SceneModelCache ownModels;
+    ReadContext context{baseDir, limits, 0, models ? models : &ownModels};
     for (std::size_t i = 0, n = objects.arraySize(); i < n; ++i) readObject(objects.item(i), context, s.objects);
   }
   if (j.has("blend")) s.blend = j.at("blend").boolean();
@@ -470,13 +490,13 @@ Scene parseScene(const std::string& text, const std::string& name, const std::fi
   return s;
 }
 
-Scene loadSceneFile(const std::filesystem::path& path, const Limits& limits) {
+Scene loadSceneFile(const std::filesystem::path& path, const Limits& limits, SceneModelCache* models) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path.string() + ": cannot open the scene file (does it exist and is it readable?)");
   std::ostringstream buf;
   buf << in.rdbuf();
   if (in.bad()) throw InputError(path.string() + ": cannot read the scene file");
-  return parseScene(buf.str(), path.string(), path.parent_path(), limits);
+  return parseScene(buf.str(), path.string(), path.parent_path(), limits, models);
 }
 
 }  // namespace illum

@@ -5,6 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include <unistd.h>
 
 namespace illum {
 namespace {
@@ -344,6 +348,46 @@ TEST(SceneFile, AModelFileNamedManyTimesIsReadOnce) {
   const Scene s = parseScene(R"({"objects": [)" + objects + "]}", "scene.json", ".");
   ASSERT_EQ(s.objects.size(), 8u);
   for (const Object& o : s.objects) EXPECT_EQ(o.mesh.get(), s.objects[0].mesh.get());
+}
+
+}  // namespace
+}  // namespace illum
+
+namespace illum {
+namespace {
+
+TEST(SceneFile, ReadsPointSizeAndLineWidth) {
+  const Scene defaults = parseScene("{}", "scene.json", ".");
+  EXPECT_EQ(defaults.pointSize, 1);  // glPointSize's and glLineWidth's defaults
+  EXPECT_EQ(defaults.lineWidth, 1);
+  const Scene s = parseScene(R"({"point_size": 4.5, "line_width": 2})", "scene.json", ".");
+  EXPECT_EQ(s.pointSize, Real(4.5));
+  EXPECT_EQ(s.lineWidth, 2);
+  EXPECT_THROW(parseScene(R"({"point_size": 0})", "scene.json", "."), InputError);
+  EXPECT_THROW(parseScene(R"({"line_width": 1000})", "scene.json", "."), InputError);
+}
+
+// A model file that scenes read one after another name is read once; one the scene before named,
+// and this one does not, is let go (no more than two scenes' models are held at once).
+TEST(SceneFile, ModelFilesAreKeptForTheNextScene) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("illum_scene_cache_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "tri.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  const std::string withModel = R"({"objects": [{"mesh": {"type": "file", "path": "tri.obj"}}]})";
+  SceneModelCache cache;
+  const Scene a = parseScene(withModel, "a.json", dir, {}, &cache);
+  const Scene b = parseScene(withModel, "b.json", dir, {}, &cache);
+  const Scene c = parseScene(withModel, "c.json", dir, {}, &cache);
+  EXPECT_EQ(a.objects[0].mesh, b.objects[0].mesh);  // the same mesh, not read again
+  EXPECT_EQ(a.objects[0].mesh, c.objects[0].mesh);
+  parseScene(R"({"objects": [{}]})", "d.json", dir, {}, &cache);
+  const Scene e = parseScene(withModel, "e.json", dir, {}, &cache);  // d let it go: read again
+  EXPECT_NE(a.objects[0].mesh, e.objects[0].mesh);
+  EXPECT_EQ(a.objects[0].mesh->positions, e.objects[0].mesh->positions);
+  // Without a cache, every scene reads its own.
+  EXPECT_NE(parseScene(withModel, "f.json", dir).objects[0].mesh, parseScene(withModel, "g.json", dir).objects[0].mesh);
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace
