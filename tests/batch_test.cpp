@@ -95,7 +95,7 @@ TEST(CliBatch, ModelsReadAheadGiveWhatSingleRendersGive) {
     if (i == 3) continue;
     const fs::path single = dir / ("single" + std::to_string(i) + ".png");
     ASSERT_EQ(run("render " + inputs[i].string() + " --resolution 64,48 -o " + single.string()).exitCode, 0);
-    EXPECT_EQ(slurp(single), slurp(dir / (inputs[i].stem().string() + ".png"))) << inputs[i];
+    EXPECT_EQ(slurp(single), slurp(dir / (inputs[i].stem().string() + ".png"))) << inputs[i] << "\n" << batch.err;
   }
 }
 
@@ -139,7 +139,8 @@ TEST(CliBatch, SkipExistingResumes) {
   const fs::path in = modelFolder(dir);
   fs::remove(in / "broken.ply");
   const std::string args = "render " + in.string() + " --resolution 64,48 --output-dir " + (dir / "out").string() + " --json";
-  ASSERT_EQ(run(args).exitCode, 0);
+  const RunResult first = run(args);
+  ASSERT_EQ(first.exitCode, 0) << first.err;
   const auto before = fs::last_write_time(dir / "out/wuson.png");
   fs::remove(dir / "out/spider.png");
   const auto lines = jsonLines(run(args + " --skip-existing").out);

@@ -22,7 +22,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <future>
 #include <iostream>
 #include <map>
 #include <optional>
@@ -163,10 +162,11 @@ bool alreadyDone(const RenderOptions& o, const std::vector<std::string>& names) 
 }
 
 // A job's model file read ahead, in its isolated child, while the job before it is drawn: the
-// reading (one core) and the drawing (every core) overlap.
+// reading (one core) and the drawing (every core) overlap. The child is started here, on the main
+// thread between renders, as forking safely requires.
 struct ReadAhead {
   std::string key;  // modelCacheKey
-  std::future<std::shared_ptr<const ImportedModel>> model;
+  PendingImport model;
 };
 
 std::optional<ReadAhead> startReadAhead(const RenderOptions& o, const BatchJob& job, const std::string& pattern,
@@ -183,7 +183,7 @@ std::optional<ReadAhead> startReadAhead(const RenderOptions& o, const BatchJob& 
   ahead.key = modelCacheKey(so);
   // Sharing the cores with the drawing, the reader is allowed that much more wall-clock time
   // (its CPU time is held to the same limit).
-  ahead.model = std::async(std::launch::async, [so, threads] { return importModelFor(so, double(threads + 1)); });
+  ahead.model = startModelImport(so, double(threads + 1));
   return ahead;
 }
 
@@ -205,7 +205,8 @@ JobResult renderJob(const RenderOptions& o, const BatchJob& job, const std::stri
   // A model file is this job's alone (its frames share it); the models scene files name are kept
   // for the next scene, which may name them too.
   cache.models.clear();
-  if (ahead) cache.models[ahead->key] = {ahead->model.get(), false};  // its error, if any, is this job's
+  if (ahead)  // its error, if any, is this job's
+    cache.models[ahead->key] = {std::make_shared<const ImportedModel>(ahead->model.finish()), false};
   std::vector<Image> pictures;
   for (int f = 0; f < frames && !(f > 0 && gInterrupted); ++f) {
     SceneOptions so = o.scene;

@@ -269,10 +269,10 @@ std::string modelCacheKey(const SceneOptions& o) {
   return o.input + "\n" + o.normals + "\n" + (o.creaseAngle ? std::to_string(*o.creaseAngle) : "");
 }
 
-std::shared_ptr<const ImportedModel> importModelFor(const SceneOptions& o, double wallClockAllowance) {
+PendingImport startModelImport(const SceneOptions& o, double wallClockAllowance) {
   ImportOptions options = importOptions(o);
   options.wallClockAllowance = wallClockAllowance;
-  return std::make_shared<const ImportedModel>(importModel(o.input, options));
+  return startImport(o.input, options);
 }
 
 double peakMemoryMiB() {
@@ -398,7 +398,7 @@ Scene prepareScene(SceneOptions o, double* loadMs, ModelCache* cache, std::vecto
     const std::string key = modelCacheKey(o);
     CachedModel entry;
     if (cache && cache->models.count(key)) entry = cache->models.at(key);
-    else entry = {importModelFor(o), false};
+    else entry = {std::make_shared<const ImportedModel>(importModel(o.input, importOptions(o))), false};
     const bool report = !entry.reported;
     entry.reported = true;
     if (cache) cache->models[key] = entry;

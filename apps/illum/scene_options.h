@@ -74,9 +74,9 @@ struct ModelCache {
 bool isModelInput(const std::string& input);
 // The cache key of the model file the options name.
 std::string modelCacheKey(const SceneOptions& o);
-// Imports the model file the options name, as prepareScene would; `wallClockAllowance` as in
-// ImportOptions (more than 1 when the import runs beside a render).
-std::shared_ptr<const ImportedModel> importModelFor(const SceneOptions& o, double wallClockAllowance = 1);
+// Starts importing the model file the options name, as prepareScene would import it;
+// `wallClockAllowance` as in ImportOptions (more than 1 when the import runs beside a render).
+PendingImport startModelImport(const SceneOptions& o, double wallClockAllowance);
 
 // Loads or builds the scene the options describe, validated (exit-2 errors name the option);
 // warnings go to stderr, and with --verbose the model's statistics. `loadMs` is the time it took.

@@ -6,6 +6,8 @@
 #include <illum/scene.h>
 
 #include <filesystem>
+#include <memory>
+#include <exception>
 #include <optional>
 #include <string>
 #include <vector>
@@ -40,6 +42,29 @@ struct ImportedModel {
 // malformed file, out-of-range indices, non-finite positions, nothing drawable, or a size
 // beyond a limit.
 ImportedModel importModel(const std::filesystem::path& path, const ImportOptions& options = {});
+// importModel in two halves: startImport starts the isolated child and returns at once (a batch
+// draws one picture while the next files are read); finish() waits for it and gives the model,
+// or throws what importModel would have. Call startImport from the main thread, between renders
+// (core/isolate.h says why). A PendingImport destroyed unfinished stops its child.
+class IsolatedChild;
+class PendingImport {
+ public:
+  PendingImport();
+  PendingImport(PendingImport&&) noexcept;
+  PendingImport& operator=(PendingImport&&) noexcept;
+  ~PendingImport();
+  ImportedModel finish();
+
+ private:
+  friend PendingImport startImport(const std::filesystem::path& path, const ImportOptions& options);
+  std::filesystem::path path_;
+  std::size_t memoryBytes_ = 0;  // its limits, for the messages
+  double cpuSeconds_ = 0;
+  std::unique_ptr<IsolatedChild> child_;
+  std::exception_ptr error_;  // a refusal before any child was started
+};
+PendingImport startImport(const std::filesystem::path& path, const ImportOptions& options = {});
+
 // The same, in this process (for the fuzzer and for the isolated child itself).
 ImportedModel importModelInProcess(const std::filesystem::path& path, const ImportOptions& options = {});
 

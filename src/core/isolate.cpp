@@ -260,45 +260,97 @@ void IsolatedWriter::flush() {
   buffer_.clear();
 }
 
-IsolationOutcome runIsolated(const std::function<void(IsolatedWriter&)>& work, const IsolationLimits& limits) {
-  const int resultFd = makeMemoryFile("illum-result");
-  const int logFd = makeMemoryFile("illum-log");
-  struct Closer {
-    int a, b;
-    ~Closer() { ::close(a), ::close(b); }
-  } closer{resultFd, logFd};
+namespace {
 
-  if (const char* inProcess = std::getenv("ILLUM_NO_ISOLATION"); inProcess && std::string(inProcess) == "1")
-    return outcomeOf(runWork(work, resultFd), resultFd);
+double steadySeconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
 
+}  // namespace
+
+IsolatedChild startIsolated(const std::function<void(IsolatedWriter&)>& work, const IsolationLimits& limits) {
+  IsolatedChild child;
+  child.limits_ = limits;
+  child.resultFd_ = makeMemoryFile("illum-result");
+  child.logFd_ = makeMemoryFile("illum-log");
+  if (const char* inProcess = std::getenv("ILLUM_NO_ISOLATION"); inProcess && std::string(inProcess) == "1") {
+    child.ranInProcess_ = true;
+    child.inProcessCode_ = runWork(work, child.resultFd_);
+    return child;
+  }
   std::fflush(nullptr);  // nothing buffered is written twice
-  const std::size_t inherited = residentBytes(::getpid());
+  child.inherited_ = residentBytes(::getpid());
+  child.deadline_ = steadySeconds() + (limits.wallSeconds > 0 ? limits.wallSeconds : limits.cpuSeconds);
   const pid_t pid = ::fork();
   if (pid < 0) throw Error(std::string("cannot start the isolated importer: ") + std::strerror(errno));
-  if (pid == 0) childMain(work, limits, resultFd, logFd);
+  if (pid == 0) childMain(work, limits, child.resultFd_, child.logFd_);
+  child.pid_ = pid;
+  return child;
+}
 
-  // Watch the child: its CPU time and the wall clock, each against the time limit (a child that
+IsolationOutcome runIsolated(const std::function<void(IsolatedWriter&)>& work, const IsolationLimits& limits) {
+  return startIsolated(work, limits).wait();
+}
+
+IsolatedChild::IsolatedChild(IsolatedChild&& other) noexcept { *this = std::move(other); }
+
+IsolatedChild& IsolatedChild::operator=(IsolatedChild&& other) noexcept {
+  if (this != &other) {
+    release();
+    pid_ = std::exchange(other.pid_, -1);
+    resultFd_ = std::exchange(other.resultFd_, -1);
+    logFd_ = std::exchange(other.logFd_, -1);
+    limits_ = other.limits_;
+    deadline_ = other.deadline_;
+    inherited_ = other.inherited_;
+    ranInProcess_ = other.ranInProcess_;
+    inProcessCode_ = other.inProcessCode_;
+  }
+  return *this;
+}
+
+IsolatedChild::~IsolatedChild() { release(); }
+
+void IsolatedChild::release() {
+  if (pid_ > 0) {
+    ::kill(pid_, SIGKILL);
+    int status = 0;
+    while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
+    }
+    pid_ = -1;
+  }
+  for (int* fd : {&resultFd_, &logFd_})
+    if (*fd >= 0) ::close(std::exchange(*fd, -1));
+}
+
+IsolationOutcome IsolatedChild::wait() {
+  if (resultFd_ < 0) throw Error("the isolated work was already waited for");
+  struct Release {
+    IsolatedChild& child;
+    ~Release() { child.release(); }
+  } releaseAtEnd{*this};
+  if (ranInProcess_) return outcomeOf(inProcessCode_, resultFd_);
+
+  // Watch the child: its CPU time and the wall clock, each against its time limit (a child that
   // waits, or shares a busy machine, is held to the same promise), and its resident size (the
   // limit that works under every allocator and sanitizer).
-  using Clock = std::chrono::steady_clock;
-  const auto deadline =
-      Clock::now() + std::chrono::duration<double>(limits.wallSeconds > 0 ? limits.wallSeconds : limits.cpuSeconds);
-  const auto residentLimit = inherited + std::size_t(double(limits.memoryBytes) * kResidentAllowance);
+  const auto residentLimit = inherited_ + std::size_t(double(limits_.memoryBytes) * kResidentAllowance);
   auto pause = std::chrono::microseconds(200);
   int status = 0;
   std::optional<IsolationOutcome::Kind> killedFor;
   for (;;) {
-    const pid_t done = ::waitpid(pid, &status, WNOHANG);
-    if (done == pid) break;
+    const pid_t done = ::waitpid(pid_, &status, WNOHANG);
+    if (done == pid_) break;
     if (done < 0 && errno != EINTR) throw Error(std::string("cannot wait for the importer: ") + std::strerror(errno));
     if (!killedFor) {
-      if (Clock::now() > deadline || cpuSeconds(pid) > limits.cpuSeconds) killedFor = IsolationOutcome::Kind::TimedOut;
-      else if (residentBytes(pid) > residentLimit) killedFor = IsolationOutcome::Kind::OutOfMemory;
-      if (killedFor) ::kill(pid, SIGKILL);
+      if (steadySeconds() > deadline_ || cpuSeconds(pid_) > limits_.cpuSeconds) killedFor = IsolationOutcome::Kind::TimedOut;
+      else if (residentBytes(pid_) > residentLimit) killedFor = IsolationOutcome::Kind::OutOfMemory;
+      if (killedFor) ::kill(pid_, SIGKILL);
     }
     std::this_thread::sleep_for(pause);
     pause = std::min(pause * 2, std::chrono::microseconds(5000));
   }
+  pid_ = -1;  // reaped
 
   if (killedFor) {
     IsolationOutcome o;
@@ -306,9 +358,9 @@ IsolationOutcome runIsolated(const std::function<void(IsolatedWriter&)>& work, c
     return o;
   }
   if (WIFEXITED(status)) {
-    IsolationOutcome o = outcomeOf(WEXITSTATUS(status), resultFd);
+    IsolationOutcome o = outcomeOf(WEXITSTATUS(status), resultFd_);
     if (o.kind == IsolationOutcome::Kind::Crashed) {
-      const std::string words = lastWords(logFd);
+      const std::string words = lastWords(logFd_);
       if (!words.empty()) o.message += ", after printing \"" + words + "\"";
     }
     return o;
@@ -322,7 +374,7 @@ IsolationOutcome runIsolated(const std::function<void(IsolatedWriter&)>& work, c
   o.kind = IsolationOutcome::Kind::Crashed;
   const char* name = sig ? sigabbrev_np(sig) : nullptr;
   o.message = name ? "SIG" + std::string(name) + ", " + strsignal(sig) : "an unknown signal";
-  if (const std::string words = lastWords(logFd); !words.empty()) o.message += ", after printing \"" + words + "\"";
+  if (const std::string words = lastWords(logFd_); !words.empty()) o.message += ", after printing \"" + words + "\"";
   return o;
 }
 

@@ -67,10 +67,43 @@ class IsolatedWriter {
   std::vector<std::uint8_t> buffer_;
 };
 
-// Runs `work` in a forked child under `limits`. The child must not touch the parent's threads or
-// locks beyond what fork() makes safe: call this while the process is single-threaded, or from
-// work that only allocates and reads files. With ILLUM_NO_ISOLATION=1 in the environment the work
-// runs in this process (for debuggers and profilers), with the same outcomes for exceptions.
+// A child that startIsolated started, running on its own while the parent does other work (a
+// batch draws one picture while the next files are read); wait() watches it against its limits
+// until it ends. Destroying a child that was not waited for kills it.
+class IsolatedChild {
+ public:
+  IsolatedChild() = default;
+  IsolatedChild(IsolatedChild&& other) noexcept;
+  IsolatedChild& operator=(IsolatedChild&& other) noexcept;
+  IsolatedChild(const IsolatedChild&) = delete;
+  IsolatedChild& operator=(const IsolatedChild&) = delete;
+  ~IsolatedChild();
+
+  // How the work ended. The time limits count from the start: a child whose wall-clock deadline
+  // passed while the parent was busy is killed now.
+  IsolationOutcome wait();
+
+ private:
+  friend IsolatedChild startIsolated(const std::function<void(IsolatedWriter&)>& work, const IsolationLimits& limits);
+  void release();
+
+  int pid_ = -1;
+  int resultFd_ = -1, logFd_ = -1;
+  IsolationLimits limits_;
+  double deadline_ = 0;          // steady-clock seconds
+  std::size_t inherited_ = 0;    // the parent's resident size at the fork
+  bool ranInProcess_ = false;    // ILLUM_NO_ISOLATION: the outcome is already known
+  int inProcessCode_ = 0;
+};
+
+// Starts `work` in a forked child under `limits`. Fork from the thread that owns the process's
+// other threads' work, between pieces of it (the forked child must find no lock held): the main
+// thread before or between renders, never a helper thread while a render runs. With
+// ILLUM_NO_ISOLATION=1 in the environment the work runs here, in this process (for debuggers and
+// profilers), with the same outcomes for exceptions.
+IsolatedChild startIsolated(const std::function<void(IsolatedWriter&)>& work, const IsolationLimits& limits);
+
+// startIsolated(work, limits).wait().
 IsolationOutcome runIsolated(const std::function<void(IsolatedWriter&)>& work, const IsolationLimits& limits);
 
 }  // namespace illum

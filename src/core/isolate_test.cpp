@@ -100,6 +100,30 @@ TEST(Isolate, BlockedChildTimesOutByTheWallClock) {
   EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5);
 }
 
+// Children started at once run side by side while the parent works, and are waited for in any
+// order; one whose wall clock ran out meanwhile is stopped when it is waited for.
+TEST(Isolate, ChildrenRunWhileTheParentWorks) {
+  IsolationLimits limits = smallLimits();
+  limits.cpuSeconds = 0.2;
+  limits.wallSeconds = 0.3;
+  IsolatedChild blocked = startIsolated([](IsolatedWriter&) { ::pause(); }, limits);
+  IsolatedChild first = startIsolated([](IsolatedWriter& w) { w.write("one", 3); }, smallLimits());
+  IsolatedChild second = startIsolated([](IsolatedWriter& w) { w.write("two", 3); }, smallLimits());
+  ::usleep(400000);  // the parent's own work, past the blocked child's deadline
+  const auto start = std::chrono::steady_clock::now();
+  const IsolationOutcome b = blocked.wait();
+  EXPECT_EQ(b.kind, Kind::TimedOut);
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 0.2);
+  const IsolationOutcome two = second.wait(), one = first.wait();
+  ASSERT_EQ(two.kind, Kind::Finished);
+  ASSERT_EQ(one.kind, Kind::Finished);
+  EXPECT_EQ(std::string(one.payload.begin(), one.payload.end()), "one");
+  EXPECT_EQ(std::string(two.payload.begin(), two.payload.end()), "two");
+  // A child never waited for is stopped and reaped when dropped.
+  { IsolatedChild dropped = startIsolated([](IsolatedWriter&) { ::pause(); }, smallLimits()); }
+  EXPECT_THROW(first.wait(), Error);
+}
+
 TEST(Isolate, TooMuchOutputIsRefused) {
   const IsolationOutcome o = runIsolated(
       [](IsolatedWriter& w) {
