@@ -315,7 +315,14 @@ namespace {
 
 // A point cloud's vertices as GL_POINTS: assimp's PLY reader, among others, gives a mesh of
 // vertices and no faces, which its validation step (and every later step) would refuse.
-void facesForPointClouds(aiScene& scene) {
+// The points count against the triangle limit, checked before any face is made.
+void facesForPointClouds(aiScene& scene, const fs::path& path, const Limits& limits) {
+  std::uint64_t points = 0;
+  for (unsigned i = 0; i < scene.mNumMeshes; ++i)
+    if (scene.mMeshes[i]->mNumFaces == 0 && !scene.mMeshes[i]->mFaces) points += scene.mMeshes[i]->mNumVertices;
+  if (points > limits.maxTriangles)
+    throw InputError(path.string() + ": the model has " + withThousands(points) + " points, more than the limit of " +
+                     withThousands(limits.maxTriangles) + " primitives (raise it with --max-triangles)");
   for (unsigned i = 0; i < scene.mNumMeshes; ++i) {
     aiMesh& m = *scene.mMeshes[i];
     if (m.mNumFaces != 0 || m.mNumVertices == 0 || m.mFaces) continue;
@@ -369,7 +376,7 @@ ImportedModel importModelInProcess(const fs::path& path, const ImportOptions& op
   const aiScene* scene = importer.ReadFile(path.string(), 0);
   if (!scene) readFailed(path, importer);
   // The importer owns the scene; its own post-processing steps change it in place as this does.
-  facesForPointClouds(*const_cast<aiScene*>(scene));
+  facesForPointClouds(*const_cast<aiScene*>(scene), path, options.limits);
   scene = importer.ApplyPostProcessing(aiProcess_ValidateDataStructure);
   if (!scene) readFailed(path, importer);
   checkFaces(*scene, path);
