@@ -6,8 +6,6 @@
 namespace illum {
 namespace {
 
-using WindowVertex = WindowPosition;
-
 // std::llround without the call into libm: exact for |x| < 2^52, where x − trunc(x) is exact.
 std::int64_t roundHalfAway(double x) {
   const std::int64_t t = std::int64_t(x);
@@ -15,16 +13,15 @@ std::int64_t roundHalfAway(double x) {
   return t + (fraction >= 0.5) - (fraction <= -0.5);
 }
 
-
 // Edge from p to q, positive on its left (the inside of a counter-clockwise triangle, y up).
-EdgeFunction makeEdge(const WindowVertex& p, const WindowVertex& q) {
+EdgeFunction makeEdge(std::int64_t px, std::int64_t py, std::int64_t qx, std::int64_t qy) {
   EdgeFunction e;
-  e.a = -(q.y - p.y);
-  e.b = q.x - p.x;
-  e.c = -(e.a * p.x + e.b * p.y);
+  e.a = std::int32_t(-(qy - py));
+  e.b = std::int32_t(qx - px);
+  e.c = -(e.a * px + e.b * py);
   // Top-left rule, y up: a left edge runs downwards; a top edge is horizontal and runs leftwards.
-  const bool left = q.y < p.y;
-  const bool top = q.y == p.y && q.x < p.x;
+  const bool left = qy < py;
+  const bool top = qy == py && qx < px;
   e.bias = (left || top) ? 0 : -1;
   return e;
 }
@@ -41,19 +38,21 @@ WindowPosition toWindow(const Vec4& clip, int width, int height) {
 
 bool setupTriangle(const ShadedVertex& v0, const ShadedVertex& v1, const ShadedVertex& v2, int width, int height,
                    TriangleSetup& out, SubpixelOffset sample) {
-  const auto windowOf = [&](const ShadedVertex& v) {
-    WindowPosition p = v.hasWindow ? v.window : toWindow(v.clip, width, height);
-    p.x -= sample.x;
-    p.y -= sample.y;
-    return p;
-  };
-  std::array<WindowVertex, 3> w = {windowOf(v0), windowOf(v1), windowOf(v2)};
-  std::int64_t area2 = (w[1].x - w[0].x) * (w[2].y - w[0].y) - (w[2].x - w[0].x) * (w[1].y - w[0].y);
+  // The coordinates as plain integers (copies of whole structs cost store-forwarding stalls in
+  // this, the hottest function of a dense mesh).
+  WindowPosition computed[3];
+  const ShadedVertex* v[3] = {&v0, &v1, &v2};
+  const WindowPosition* p[3];
+  for (int k = 0; k < 3; ++k)
+    p[k] = v[k]->hasWindow ? &v[k]->window : &(computed[k] = toWindow(v[k]->clip, width, height));
+  std::int64_t x[3], y[3];
+  for (int k = 0; k < 3; ++k) x[k] = p[k]->x - sample.x, y[k] = p[k]->y - sample.y;
+  std::int64_t area2 = (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]);
   if (area2 == 0) return false;
   // Pixel centres (x + 0.5) inside the bounding box, limited to the viewport (the scissor).
   const std::int64_t half = kSubpixelOne / 2;
-  const std::int64_t minFx = std::min({w[0].x, w[1].x, w[2].x}), maxFx = std::max({w[0].x, w[1].x, w[2].x});
-  const std::int64_t minFy = std::min({w[0].y, w[1].y, w[2].y}), maxFy = std::max({w[0].y, w[1].y, w[2].y});
+  const std::int64_t minFx = std::min({x[0], x[1], x[2]}), maxFx = std::max({x[0], x[1], x[2]});
+  const std::int64_t minFy = std::min({y[0], y[1], y[2]}), maxFy = std::max({y[0], y[1], y[2]});
   const auto firstCentre = [&](std::int64_t f) { return (f - half + kSubpixelOne - 1) >> kSubpixelBits; };
   const auto lastCentre = [&](std::int64_t f) { return (f - half) >> kSubpixelBits; };
   out.minX = int(std::max<std::int64_t>(0, firstCentre(minFx)));
@@ -67,18 +66,20 @@ bool setupTriangle(const ShadedVertex& v0, const ShadedVertex& v1, const ShadedV
   out.swapped = area2 < 0;
   if (out.swapped) {
     // Make the triangle counter-clockwise; the caller moves the attributes along.
-    std::swap(w[1], w[2]);
+    std::swap(x[1], x[2]);
+    std::swap(y[1], y[2]);
+    std::swap(p[1], p[2]);
     area2 = -area2;
   }
   out.area2 = area2;
   out.invArea = Real(1) / Real(area2);
   for (int i = 0; i < 3; ++i) {
-    out.z[std::size_t(i)] = w[std::size_t(i)].z;
-    out.invW[std::size_t(i)] = w[std::size_t(i)].invW;
+    out.z[std::size_t(i)] = p[i]->z;
+    out.invW[std::size_t(i)] = p[i]->invW;
   }
-  out.edge[0] = makeEdge(w[1], w[2]);
-  out.edge[1] = makeEdge(w[2], w[0]);
-  out.edge[2] = makeEdge(w[0], w[1]);
+  out.edge[0] = makeEdge(x[1], y[1], x[2], y[2]);
+  out.edge[1] = makeEdge(x[2], y[2], x[0], y[0]);
+  out.edge[2] = makeEdge(x[0], y[0], x[1], y[1]);
   // An edge's function vanishes on its own segment, which lies in the bounds, so anywhere in them
   // |E| ≤ |a|·width + |b|·height (sub-pixel units): small triangles can be rasterized in float.
   const std::int64_t spanX = maxFx - minFx, spanY = maxFy - minFy;

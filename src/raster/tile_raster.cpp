@@ -208,8 +208,46 @@ HWY_INLINE std::size_t DepthPassTwoRows(const TriangleSetup& t, const PixelRect&
 }
 #endif
 
+// A triangle of a few pixels (most of a dense mesh's): each pixel alone, in one-lane vectors, which
+// costs far less than setting full vectors up for it. The same values as DepthPass: an edge value
+// converts to Real as the double lanes' demotion rounds it, and every formula is the same.
+template <class Write>
+HWY_INLINE std::size_t DepthPassFewPixels(const TriangleSetup& t, int minX, int maxX, int minY, int maxY,
+                                          const PixelRect& tile, Real* depth, const Write& write) {
+  const hn::CappedTag<Real, 1> d1;
+  const std::int64_t half = kSubpixelOne / 2;
+  std::size_t passed = 0;
+  for (int y = minY; y <= maxY; ++y) {
+    const std::int64_t fy = std::int64_t(y) * kSubpixelOne + half;
+    const int row = (y - tile.minY) * kTileSize - tile.minX;
+    for (int x = minX; x <= maxX; ++x) {
+      const std::int64_t fx = std::int64_t(x) * kSubpixelOne + half;
+      const std::int64_t e0 = t.edge[0].at(fx, fy), e1 = t.edge[1].at(fx, fy), e2 = t.edge[2].at(fx, fy);
+      if (e0 + t.edge[0].bias < 0 || e1 + t.edge[1].bias < 0 || e2 + t.edge[2].bias < 0) continue;
+      const Real l0 = Real(e0) * t.invArea, l1 = Real(e1) * t.invArea, l2 = Real(e2) * t.invArea;
+      const Real z = l0 * t.z[0] + l1 * t.z[1] + l2 * t.z[2];
+      Real& stored = depth[row + x];
+      if (!(z < stored)) continue;
+      stored = z;
+      write(row + x, hn::FirstN(d1, 1), hn::Set(d1, l0), hn::Set(d1, l1), hn::Set(d1, l2));
+      ++passed;
+    }
+  }
+  return passed;
+}
+
+// Triangles whose pixels in the tile are at most this many go one pixel at a time.
+constexpr int kFewPixels = 4;
+
 template <class Write>
 HWY_INLINE std::size_t DepthPass(const TriangleSetup& t, const PixelRect& tile, Real* depth, const Write& write) {
+  {
+    const int minX = std::max(t.minX, tile.minX), maxX = std::min(t.maxX, tile.maxX);
+    const int minY = std::max(t.minY, tile.minY), maxY = std::min(t.maxY, tile.maxY);
+    if (minX > maxX || minY > maxY) return 0;
+    if ((maxX - minX + 1) * (maxY - minY + 1) <= kFewPixels)
+      return DepthPassFewPixels(t, minX, maxX, minY, maxY, tile, depth, write);
+  }
 #if HWY_TARGET != HWY_SCALAR
   if (sizeof(Real) == 4 && t.floatExact) return DepthPassTwoRows(t, tile, depth, write);
 #endif
@@ -219,82 +257,79 @@ HWY_INLINE std::size_t DepthPass(const TriangleSetup& t, const PixelRect& tile, 
 
 std::size_t RasterizeDepth(const TriangleSetup& t, const PixelRect& tile, Real* depth, std::uint32_t slot,
                            std::uint32_t* winners) {
-  const DU du;
-  const auto slots = hn::Set(du, slot);
-  return DepthPass(t, tile, depth, [&](int at, MR pass, VR, VR, VR) {
-    hn::BlendedStore(slots, hn::RebindMask(du, pass), du, winners + at);
+  return DepthPass(t, tile, depth, [&](int at, auto pass, auto l0, auto, auto) {
+    const hn::Rebind<std::uint32_t, hn::DFromV<decltype(l0)>> du;
+    hn::BlendedStore(hn::Set(du, slot), hn::RebindMask(du, pass), du, winners + at);
   });
 }
 
 // A pixel coloured here shows no record of the winners' pass any more.
-HWY_INLINE void ClearWinners(std::uint32_t* winners, int at, MR pass) {
-  const DU du;
+template <class DU, class M>
+HWY_INLINE void ClearWinners(DU du, std::uint32_t* winners, int at, M pass) {
   if (winners) hn::BlendedStore(hn::Set(du, kNoWinner), hn::RebindMask(du, pass), du, winners + at);
 }
 
 std::size_t RasterizeFlat(const TriangleSetup& t, const PixelRect& tile, Real* depth, std::uint32_t* color,
                           std::uint32_t* winners, std::uint32_t packed) {
-  const DU du;
-  const auto pixel = hn::Set(du, packed);
-  return DepthPass(t, tile, depth, [&](int at, MR pass, VR, VR, VR) {
-    hn::BlendedStore(pixel, hn::RebindMask(du, pass), du, color + at);
-    ClearWinners(winners, at, pass);
+  return DepthPass(t, tile, depth, [&](int at, auto pass, auto l0, auto, auto) {
+    const hn::Rebind<std::uint32_t, hn::DFromV<decltype(l0)>> du;
+    hn::BlendedStore(hn::Set(du, packed), hn::RebindMask(du, pass), du, color + at);
+    ClearWinners(du, winners, at, pass);
   });
 }
 
 std::size_t RasterizeGouraud(const TriangleSetup& t, const PixelRect& tile, Real* depth, std::uint32_t* color,
                              std::uint32_t* winners, const Color4* lit) {
-  const DR dr;
-  const DU du;
-  const VR w0 = hn::Set(dr, t.invW[0]), w1 = hn::Set(dr, t.invW[1]), w2 = hn::Set(dr, t.invW[2]);
   // Three alphas of exactly 1 blend to within a few ulps of 1, which converts to 255 every time.
   const bool opaque = lit[0].a == 1 && lit[1].a == 1 && lit[2].a == 1;
-  return DepthPass(t, tile, depth, [&](int at, MR pass, VR l0, VR l1, VR l2) {
+  return DepthPass(t, tile, depth, [&](int at, auto pass, auto l0, auto l1, auto l2) {
+    using V = decltype(l0);
+    const hn::DFromV<V> dr;
+    const hn::Rebind<std::uint32_t, decltype(dr)> du;
     // perspectiveWeights (fragment.h) and gouraudColor, lane by lane.
-    const VR q0 = l0 * w0, q1 = l1 * w1, q2 = l2 * w2;
-    const VR inv = hn::Set(dr, Real(1)) / (q0 + q1 + q2);
-    const VR p0 = q0 * inv, p1 = q1 * inv, p2 = q2 * inv;
-    VR c[4];
+    const V q0 = l0 * hn::Set(dr, t.invW[0]), q1 = l1 * hn::Set(dr, t.invW[1]), q2 = l2 * hn::Set(dr, t.invW[2]);
+    const V inv = hn::Set(dr, Real(1)) / (q0 + q1 + q2);
+    const V p0 = q0 * inv, p1 = q1 * inv, p2 = q2 * inv;
+    V c[4];
     for (int k = 0; k < (opaque ? 3 : 4); ++k)
       c[k] = p0 * hn::Set(dr, lit[0][k]) + p1 * hn::Set(dr, lit[1][k]) + p2 * hn::Set(dr, lit[2][k]);
     const auto pixels = opaque ? PackUnorm8(dr, c[0], c[1], c[2], 255u) : PackUnorm8(dr, c[0], c[1], c[2], c[3]);
     hn::BlendedStore(pixels, hn::RebindMask(du, pass), du, color + at);
-    ClearWinners(winners, at, pass);
+    ClearWinners(du, winners, at, pass);
   });
 }
 
 std::size_t RasterizeSurface(const TriangleSetup& t, const PixelRect& tile, Real* depth, const SurfaceVertices& v,
                              const SurfaceTile& out) {
-  const DR dr;
-  const DU du;
-  const VR w0 = hn::Set(dr, t.invW[0]), w1 = hn::Set(dr, t.invW[1]), w2 = hn::Set(dr, t.invW[2]);
-  const auto owner = hn::Set(du, v.owner);
-  // Σ p_i · a_i in phongSurface's order (broadcasts from memory, folded into the multiplies).
-  const auto blend = [&](VR p0, VR p1, VR p2, Real a0, Real a1, Real a2) {
-    return p0 * hn::Set(dr, a0) + p1 * hn::Set(dr, a1) + p2 * hn::Set(dr, a2);
-  };
-  return DepthPass(t, tile, depth, [&](int at, MR pass, VR l0, VR l1, VR l2) {
-    const VR q0 = l0 * w0, q1 = l1 * w1, q2 = l2 * w2;
-    const VR inv = hn::Set(dr, Real(1)) / (q0 + q1 + q2);
-    const VR p0 = q0 * inv, p1 = q1 * inv, p2 = q2 * inv;
-    VR n[3];
+  return DepthPass(t, tile, depth, [&](int at, auto pass, auto l0, auto l1, auto l2) {
+    using V = decltype(l0);
+    const hn::DFromV<V> dr;
+    const hn::Rebind<std::uint32_t, decltype(dr)> du;
+    // Σ p_i · a_i in phongSurface's order (broadcasts from memory, folded into the multiplies).
+    const auto blend = [&](V p0, V p1, V p2, Real a0, Real a1, Real a2) {
+      return p0 * hn::Set(dr, a0) + p1 * hn::Set(dr, a1) + p2 * hn::Set(dr, a2);
+    };
+    const V q0 = l0 * hn::Set(dr, t.invW[0]), q1 = l1 * hn::Set(dr, t.invW[1]), q2 = l2 * hn::Set(dr, t.invW[2]);
+    const V inv = hn::Set(dr, Real(1)) / (q0 + q1 + q2);
+    const V p0 = q0 * inv, p1 = q1 * inv, p2 = q2 * inv;
+    V n[3];
     for (int c = 0; c < 3; ++c) {
       hn::BlendedStore(blend(p0, p1, p2, v.position[0][c], v.position[1][c], v.position[2][c]), pass, dr,
                        out.position[c] + at);
       n[c] = blend(p0, p1, p2, v.normal[0][c], v.normal[1][c], v.normal[2][c]);
     }
-    const VR len = hn::Sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    const V len = hn::Sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
     const auto positive = len > hn::Zero(dr);
-    const VR inverse = hn::Set(dr, Real(1)) / len;
+    const V inverse = hn::Set(dr, Real(1)) / len;
     for (int c = 0; c < 3; ++c) {
-      VR unit = hn::IfThenElse(positive, n[c] * inverse, hn::Set(dr, Real(c == 2 ? 1 : 0)));
+      V unit = hn::IfThenElse(positive, n[c] * inverse, hn::Set(dr, Real(c == 2 ? 1 : 0)));
       if (v.negate) unit = hn::Neg(unit);
       hn::BlendedStore(unit, pass, dr, out.normal[c] + at);
     }
     if (v.colors)
       for (int c = 0; c < 4; ++c)
         hn::BlendedStore(blend(p0, p1, p2, v.color[0][c], v.color[1][c], v.color[2][c]), pass, dr, out.color[c] + at);
-    hn::BlendedStore(owner, hn::RebindMask(du, pass), du, out.owner + at);
+    hn::BlendedStore(hn::Set(du, v.owner), hn::RebindMask(du, pass), du, out.owner + at);
   });
 }
 

@@ -15,25 +15,25 @@ struct WindowPosition {
   Real z = 0, invW = 0;
 };
 
-// What the fragment stage interpolates across a triangle.
-struct VertexAttributes {
+constexpr unsigned kOutcodeUnknown = ~0u;
+
+// A vertex after the vertex stage: its clip-space position and, computed once here rather than
+// once per triangle that shares it, its clip outcode and window position; then what the fragment
+// stage interpolates across a triangle. Laid out for the setup of dense meshes, whose vertex
+// arrays are far larger than the caches: what every triangle's setup reads (window position,
+// outcode) and the Gouraud colour share the first 64-byte line, so that most triangles, which
+// cover no pixel centre, cost one line per vertex.
+struct alignas(64) ShadedVertex {
+  WindowPosition window;
+  unsigned outcode = kOutcodeUnknown;  // clipOutcode(clip) (clip.h), once known
+  bool hasWindow = false;              // `window` is toWindow(clip): the vertex is inside the clip volume
+  Vec4 clip{0};                        // clipFromView · viewFromObject · p
+  Color4 front{0};                     // lit with N (flat, Gouraud)
   Vec3 eyePosition{0};
   Vec3 eyeNormal{0};  // unit length (GL_NORMALIZE)
-  Color4 front{0};    // lit with N (flat, Gouraud)
   Color4 back{0};     // lit with −N (two-sided lighting only)
   Vec2 uv{0};         // texture coordinates, when the mesh has them
   Color4 color{1};    // the vertex colour, when the mesh has them (GL_COLOR_MATERIAL)
-};
-
-constexpr unsigned kOutcodeUnknown = ~0u;
-
-// A vertex after the vertex stage: its attributes, its clip-space position and, computed once
-// here rather than once per triangle that shares it, its clip outcode and window position.
-struct ShadedVertex : VertexAttributes {
-  Vec4 clip{0};                       // clipFromView · viewFromObject · p
-  unsigned outcode = kOutcodeUnknown;  // clipOutcode(clip) (clip.h), once known
-  bool hasWindow = false;              // `window` is toWindow(clip): the vertex is inside the clip volume
-  WindowPosition window;
 };
 
 // The object's vertices [first, last) through the vertex stage, into `out` (already sized to the
