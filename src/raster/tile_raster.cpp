@@ -143,18 +143,19 @@ HWY_INLINE std::size_t DepthPassTwoRows(const TriangleSetup& t, const PixelRect&
   using VF = hn::VFromD<decltype(df)>;
   const int columns = int(hn::Lanes(dh));
   // Lane k is the pixel (k mod columns, k / columns) of the block; its edge values differ from
-  // the block's first pixel by whole multiples of 256, exact in float inside the bounds.
-  HWY_ALIGN float offset[3][hn::MaxLanes(df)], column[hn::MaxLanes(df)], upper[hn::MaxLanes(df)];
-  for (std::size_t k = 0; k < hn::Lanes(df); ++k) {
-    const int c = int(k) % columns, r = int(k) / columns;
-    for (int i = 0; i < 3; ++i)
-      offset[i][k] = float(double(c) * double(t.edge[i].a * kSubpixelOne) + double(r) * double(t.edge[i].b * kSubpixelOne));
-    column[k] = float(c);
-    upper[k] = float(r);
-  }
+  // the block's first pixel by c·A + r·B (A = 256a, B = 256b: |a|, |b| ≤ 2^24 here, exact in
+  // float), whole multiples of 256 of at most 2^25 inside the bounds: exact in float however the
+  // multiply-add rounds, and lanes outside the bounds are masked.
+  const VF iota = hn::Iota(df, 0.0f);
+  const VF rowOf = hn::IfThenElseZero(iota >= hn::Set(df, float(columns)), hn::Set(df, 1.0f));
+  const VF columnOf = hn::NegMulAdd(rowOf, hn::Set(df, float(columns)), iota);
   VF off[3], bias[3];
-  for (int i = 0; i < 3; ++i) off[i] = hn::Load(df, offset[i]), bias[i] = hn::Set(df, float(t.edge[i].bias));
-  const VF columnOf = hn::Load(df, column), rowOf = hn::Load(df, upper);
+  for (int i = 0; i < 3; ++i) {
+    const VF A = hn::Set(df, float(t.edge[i].a) * float(kSubpixelOne));
+    const VF B = hn::Set(df, float(t.edge[i].b) * float(kSubpixelOne));
+    off[i] = hn::MulAdd(columnOf, A, rowOf * B);
+    bias[i] = hn::Set(df, float(t.edge[i].bias));
+  }
   const VF hi = hn::Set(df, float(maxX - tile.minX));
   const VF invArea = hn::Set(df, t.invArea);
   const VF z0 = hn::Set(df, t.z[0]), z1 = hn::Set(df, t.z[1]), z2 = hn::Set(df, t.z[2]);
