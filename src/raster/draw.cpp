@@ -10,6 +10,10 @@
 
 namespace illum {
 
+namespace {
+bool isTranslucent(const Object& o);
+}  // namespace
+
 DrawTarget::DrawTarget(const FrameContext& frame, const Scene& scene, Framebuffer& fb, PixelProbe* probe)
     : frame(frame), scene(scene), fb(fb), probe(probe) {
   // (Multisample passes shade at the pixel centre, not where the surface is sampled.)
@@ -18,6 +22,7 @@ DrawTarget::DrawTarget(const FrameContext& frame, const Scene& scene, Framebuffe
     layouts.push_back(AttributeLayout::forObject(frame, o, probe != nullptr));
     setups.push_back({frame.lights, frame.lightModel, modelOf(o.material, frame.model), o.material});
     colored.push_back(!o.mesh->colors.empty());
+    translucent.push_back(frame.blend && isTranslucent(o));
     if (drawnTexture(o) || mapsDrawn(frame, o)) litFromSurface = false;
   }
 }
@@ -39,7 +44,7 @@ void recordProbe(const DrawTarget& target, const DrawRecord& record, const std::
   p.lit = lit;
   p.textured = texel != nullptr;
   p.texel = texel ? *texel : Vec4(1);
-  p.blended = target.frame.blend && c.a < 1;  // alpha 1 blends to the fragment itself
+  p.blended = target.blends(record) && c.a < 1;  // alpha 1 blends to the fragment itself
   p.weights = w;
   for (std::size_t i = 0; i < 3; ++i) {
     p.vertexColors[i] = v[i].lit();  // already the side shown
@@ -124,7 +129,7 @@ void drawPixels(const DrawTarget& target, const DrawRecord& record, const PixelR
 
 template <Shading kShading, bool kTextured>
 void drawPixels(const DrawTarget& target, const DrawRecord& record, const PixelRect& rect, std::size_t& fragments) {
-  if (target.frame.blend) drawPixels<kShading, kTextured, true>(target, record, rect, fragments);
+  if (target.blends(record)) drawPixels<kShading, kTextured, true>(target, record, rect, fragments);
   else drawPixels<kShading, kTextured, false>(target, record, rect, fragments);
 }
 

@@ -31,9 +31,14 @@ struct DrawTarget {
   bool litFromSurface = false;
   std::vector<ShadeSetup> setups;
   std::vector<std::uint8_t> colored;
+  // Per object: blending on and the object translucent (material, texture or vertex alpha below 1).
+  // An opaque object is drawn as without blending even when it is on: its alpha of 1 would blend
+  // to the fragment itself, and so its interpolated alpha, a few ulps from 1, cannot blend at all.
+  std::vector<std::uint8_t> translucent;
 
   DrawTarget(const FrameContext& frame, const Scene& scene, Framebuffer& fb, PixelProbe* probe);
   const AttributeLayout& layout(const DrawRecord& r) const { return layouts[r.object]; }
+  bool blends(const DrawRecord& r) const { return translucent[r.object] != 0; }
 };
 
 // Draws the record's pixels inside `rect`; adds the fragments that passed the depth test.

@@ -97,7 +97,7 @@ class BinnedFrame {
   }
 
   // Draws every tile of what has been binned, each tile on one thread, its records in order:
-  // opaque drawing shades each visible pixel once (shade_tile.h), blending fragment by fragment.
+  // opaque objects shade each visible pixel once (shade_tile.h), translucent ones blend fragment by fragment.
   // The affinity partitioner gives a tile to the thread that drew it in the previous flush, while
   // its pixels are still in that core's cache.
   void flush() {
@@ -123,11 +123,12 @@ class BinnedFrame {
     const PixelRect rect = tiles_.tileRect(tile);
     s_.fb.clearTile(rect.minX, rect.minY);
     std::size_t& fragments = s_.tileFragments[std::size_t(tile)];
-    if (frame_.blend) {
-      for (const DrawRecord* r : records) drawRecord(target_, *r, rect, fragments);
-    } else {
-      fragments += drawOpaqueTile(target_, records, rect, s_.scratch.local());
-    }
+    // The opaque objects come first (drawingOrder): each visible pixel shaded once
+    // (shade_tile.h); then the translucent ones, blended fragment by fragment.
+    std::size_t opaque = 0;
+    while (opaque < records.size() && !target_.blends(*records[opaque])) ++opaque;
+    if (opaque > 0) fragments += drawOpaqueTile(target_, std::span(records).first(opaque), rect, s_.scratch.local());
+    for (std::size_t i = opaque; i < records.size(); ++i) drawRecord(target_, *records[i], rect, fragments);
   }
 
   RenderStats stats() const {
