@@ -475,7 +475,7 @@ Scene prepareScene(SceneOptions o, double* loadMs, ModelCache* cache, std::vecto
   scene.overlays.axes = scene.overlays.axes || o.axes;
   if (o.ambientOcclusion && o.noAmbientOcclusion)
     throw InputError("--ambient-occlusion and --no-ambient-occlusion: expected one of them, not both");
-  // Not on by default, even for previews: 8 rays a pixel cost 70-90 % of an 8-sample preview's time
+  // Not on by default, even for previews: 8 rays a pixel cost more than an 8-sample preview's whole time
   // (docs/models.md), more than the third that would make it free enough.
   if (o.ambientOcclusion || o.noAmbientOcclusion) scene.ambientOcclusion.enabled = o.ambientOcclusion;
   if (o.ambientOcclusion && scene.renderer != RendererKind::Raster)
