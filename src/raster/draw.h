@@ -19,6 +19,35 @@
 
 namespace illum {
 
+// Multisampling shades a pixel at its centre, so every pass that finds the same triangle piece
+// in a pixel computes the same colour: the first pass to shade it keeps it here for the others.
+// Tile by tile in the framebuffer's layout (a tile's thread owns its block); reset before pass 0.
+class ShadedPixelCache {
+ public:
+  static constexpr std::uint64_t kNone = ~std::uint64_t(0);
+  void reset(int width, int height) {
+    tilesX_ = (width + kTileSize - 1) / kTileSize;
+    const std::size_t size = std::size_t(tilesX_) * std::size_t((height + kTileSize - 1) / kTileSize) * kTileBlock;
+    key_.assign(size, kNone);
+    color_.resize(size);
+  }
+  static std::uint64_t keyOf(const DrawRecord& r) {
+    return std::uint64_t(r.object) << 35 | std::uint64_t(r.triangle) << 3 | r.piece;
+  }
+  // The slot of pixel `index` (tile-local) of the tile whose rectangle is `rect`.
+  std::size_t slot(const PixelRect& rect, int index) const {
+    return (std::size_t(rect.minY / kTileSize) * std::size_t(tilesX_) + std::size_t(rect.minX / kTileSize)) * kTileBlock +
+           std::size_t(index);
+  }
+  std::uint64_t& key(std::size_t slot) { return key_[slot]; }
+  std::uint32_t& color(std::size_t slot) { return color_[slot]; }
+
+ private:
+  int tilesX_ = 0;
+  std::vector<std::uint64_t> key_;
+  std::vector<std::uint32_t> color_;  // RGBA8, as the framebuffer stores it
+};
+
 // What every triangle of a frame draws into.
 struct DrawTarget {
   const FrameContext& frame;
@@ -35,6 +64,7 @@ struct DrawTarget {
   // An opaque object is drawn as without blending even when it is on: its alpha of 1 would blend
   // to the fragment itself, and so its interpolated alpha, a few ulps from 1, cannot blend at all.
   std::vector<std::uint8_t> translucent;
+  ShadedPixelCache* shadedPixels = nullptr;  // multisampling: colours of earlier passes (Phong)
 
   DrawTarget(const FrameContext& frame, const Scene& scene, Framebuffer& fb, PixelProbe* probe);
   const AttributeLayout& layout(const DrawRecord& r) const { return layouts[r.object]; }

@@ -73,7 +73,7 @@ std::size_t setupTriangles(const FrameContext& frame, const Object& object, std:
     const ClipResult kind = classifyTriangle(a, b, c, frame.width, frame.height);
     if (kind == ClipResult::Outside) continue;
     // c is the provoking vertex: flat shading shows its colour on every piece.
-    const auto emit = [&](const ShadedVertex& v0, const ShadedVertex& v1, const ShadedVertex& v2) {
+    const auto emit = [&](const ShadedVertex& v0, const ShadedVertex& v1, const ShadedVertex& v2, std::uint32_t piece) {
       DrawRecord& r = out.append();
       if (!setupTriangle(v0, v1, v2, frame.width, frame.height, r.setup, frame.sample)) {
         out.drop();
@@ -83,6 +83,7 @@ std::size_t setupTriangles(const FrameContext& frame, const Object& object, std:
       r.flat = back ? c.back : c.front;
       r.object = objectIndex;
       r.triangle = std::uint32_t(t);
+      r.piece = piece;
       // Counter-clockwise on screen: setup swapped the last two when the triangle came clockwise.
       const ShadedVertex* ordered[3] = {&v0, r.setup.swapped ? &v2 : &v1, r.setup.swapped ? &v1 : &v2};
       for (int k = 0; k < 3; ++k) packVertex(*ordered[k], back, layout, r.vertex(k, layout));
@@ -92,13 +93,13 @@ std::size_t setupTriangles(const FrameContext& frame, const Object& object, std:
       }
     };
     if (kind == ClipResult::Inside) {
-      emit(a, b, c);
+      emit(a, b, c, 0);
       continue;
     }
     if (clipTriangle({a, b, c}, frame.width, frame.height, polygon) == ClipResult::Outside) continue;
     // The clipped polygon is convex: draw it as a fan.
     const auto& v = polygon.vertex;
-    for (std::size_t k = 1; k + 1 < polygon.size; ++k) emit(v[0], v[k], v[k + 1]);
+    for (std::size_t k = 1; k + 1 < polygon.size; ++k) emit(v[0], v[k], v[k + 1], std::uint32_t(k));
   }
   return out.size() - before;
 }

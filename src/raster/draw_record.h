@@ -46,6 +46,7 @@ struct DrawRecord {
   Color4 flat;                 // flat shading: the provoking (last) vertex's colour for the side shown
   std::uint32_t object;        // index into Scene::objects
   std::uint32_t triangle;      // of that object's mesh
+  std::uint32_t piece;         // which of the clipped triangle's fan (0 when unclipped)
 
   // The per-vertex values follow the record in memory.
   const Real* vertex(int i, const AttributeLayout& l) const {

@@ -45,6 +45,7 @@ struct Renderer::State {
   std::vector<Chunk> pool;
   tbb::enumerable_thread_specific<std::vector<const DrawRecord*>> tileRecords;  // one tile's, gathered
   tbb::affinity_partitioner tileAffinity;
+  ShadedPixelCache shadedPixels;  // multisampling: what earlier passes shaded
 };
 
 namespace {
@@ -54,6 +55,7 @@ class BinnedFrame {
  public:
   BinnedFrame(Renderer::State& state, const Scene& scene, const FrameContext& frame, PixelProbe* probe)
       : s_(state), frame_(frame), target_(frame, scene, state.fb, probe) {
+    if (frame.multisampled) target_.shadedPixels = &s_.shadedPixels;
     s_.fb.reset(scene.width, scene.height, scene.background);
     tiles_.reset(frame.width, frame.height);
     s_.tileFragments.assign(std::size_t(tiles_.tileCount()), 0);
@@ -176,6 +178,7 @@ void Renderer::render(const Scene& scene, Image& image, RenderStats* statsOut, P
     // One pass per sample position, each through the whole pipeline into the framebuffer, summed
     // premultiplied; the watched pixel reports the first sample's fragment.
     frame.multisampled = true;
+    state_->shadedPixels.reset(scene.width, scene.height);
     MultisampleResolve resolve(scene.width, scene.height);
     for (std::size_t s = 0; s < samples.size(); ++s) {
       frame.sample = samples[s];

@@ -3,6 +3,8 @@
 #include "raster/fragment.h"
 #include "shading/shade_points.h"
 
+#include <cstring>
+
 namespace illum {
 namespace {
 
@@ -61,6 +63,14 @@ class PhongBatch {
 
   void add(int index, std::uint32_t slot) {
     const DrawRecord& r = *records_[slot];
+    if (ShadedPixelCache* cache = target_.shadedPixels) {
+      // An earlier multisample pass shaded this pixel with this triangle: the same colour.
+      const std::size_t at = cache->slot(rect_, index);
+      if (cache->key(at) == ShadedPixelCache::keyOf(r)) {
+        std::memcpy(target_.fb.colorTile(rect_.minX, rect_.minY) + 4 * std::size_t(index), &cache->color(at), 4);
+        return;
+      }
+    }
     const Object& object = target_.scene.objects[r.object];
     const VisiblePixel p = visiblePixel(r.setup, rect_, index, target_.frame.sample);
     if (mapsDrawn(target_.frame, object)) return shadeMapped(object, r, p);
@@ -106,6 +116,11 @@ class PhongBatch {
       const Color4 color(lit[0][k], lit[1][k], lit[2][k], lit[3][k]);
       const Vec4 texel(s_.soa[10][k], s_.soa[11][k], s_.soa[12][k], s_.soa[13][k]);
       writePixel(target_, r, p, color, textured ? &texel : nullptr, baseTexture);
+      if (ShadedPixelCache* cache = target_.shadedPixels) {
+        const std::size_t at = cache->slot(rect_, s_.pixel[k]);
+        cache->key(at) = ShadedPixelCache::keyOf(r);
+        std::memcpy(&cache->color(at), target_.fb.colorTile(rect_.minX, rect_.minY) + 4 * std::size_t(s_.pixel[k]), 4);
+      }
     }
     n_ = 0;
   }
