@@ -88,14 +88,13 @@ void drawPixels(const DrawTarget& target, const DrawRecord& record, const PixelR
   MappedSurface surface;
   const int probeRow = kProbe ? frame.height - 1 - target.probe->y : -1;  // GL rows run bottom up
   // A multisample pass tests coverage and depth at the sample, and shades at the pixel centre.
-  const SubpixelOffset sample = frame.sample;
-  const Real toCentre[3] = {-Real(t.edge[0].a * sample.x + t.edge[0].b * sample.y) * t.invArea,
-                            -Real(t.edge[1].a * sample.x + t.edge[1].b * sample.y) * t.invArea,
-                            -Real(t.edge[2].a * sample.x + t.edge[2].b * sample.y) * t.invArea};
   rasterizeTriangle(t, rect, [&](int x, int y, Real l0, Real l1, Real l2) {
     const Real z = l0 * t.z[0] + l1 * t.z[1] + l2 * t.z[2];
     if (!target.fb.depthTest(x, y, z)) return;
-    if (frame.multisampled) l0 += toCentre[0], l1 += toCentre[1], l2 += toCentre[2];
+    if (frame.multisampled) {
+      const std::array<Real, 3> centre = centreBarycentrics(t, x, y, frame.sample);
+      l0 = centre[0], l1 = centre[1], l2 = centre[2];
+    }
     ++fragments;
     Color4 c;
     Vec4 texel(1);

@@ -12,6 +12,16 @@
 
 namespace illum {
 
+// The screen-space barycentrics of pixel (x, y)'s centre, as the rasterizer computes them (the
+// edge functions evaluated exactly, then scaled). A multisample pass moved the triangle by
+// −sample: the centre is at centre − sample there, so its shading is the same in every pass.
+inline std::array<Real, 3> centreBarycentrics(const TriangleSetup& t, int x, int y, SubpixelOffset sample) {
+  const std::int64_t fx = std::int64_t(x) * kSubpixelOne + kSubpixelOne / 2 - sample.x;
+  const std::int64_t fy = std::int64_t(y) * kSubpixelOne + kSubpixelOne / 2 - sample.y;
+  return {Real(t.edge[0].at(fx, fy)) * t.invArea, Real(t.edge[1].at(fx, fy)) * t.invArea,
+          Real(t.edge[2].at(fx, fy)) * t.invArea};
+}
+
 // Screen-space barycentrics → perspective-correct weights (λi/wi normalized).
 inline std::array<Real, 3> perspectiveWeights(const TriangleSetup& t, Real l0, Real l1, Real l2) {
   const Real q0 = l0 * t.invW[0], q1 = l1 * t.invW[1], q2 = l2 * t.invW[2];

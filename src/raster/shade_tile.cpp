@@ -13,14 +13,11 @@ struct VisiblePixel {
   Real l0, l1, l2;  // screen-space barycentrics, exactly as the rasterizer computes them
 };
 
-// A multisample pass moved the triangle by −sample: its pixel centre is at centre − sample there.
+// The pixel of a tile index, and its centre's barycentrics (fragment.h).
 VisiblePixel visiblePixel(const TriangleSetup& t, const PixelRect& rect, int index, SubpixelOffset sample) {
   const int x = rect.minX + index % kTileSize, y = rect.minY + index / kTileSize;
-  const std::int64_t fx = std::int64_t(x) * kSubpixelOne + kSubpixelOne / 2 - sample.x;
-  const std::int64_t fy = std::int64_t(y) * kSubpixelOne + kSubpixelOne / 2 - sample.y;
-  const Real invArea = t.invArea;
-  return {x, y, Real(t.edge[0].at(fx, fy)) * invArea, Real(t.edge[1].at(fx, fy)) * invArea,
-          Real(t.edge[2].at(fx, fy)) * invArea};
+  const auto [l0, l1, l2] = centreBarycentrics(t, x, y, sample);
+  return {x, y, l0, l1, l2};
 }
 
 // Writes a coloured pixel: GL_MODULATE by the texel (unless the texel was the base colour), then
