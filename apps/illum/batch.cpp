@@ -165,26 +165,35 @@ bool alreadyDone(const RenderOptions& o, const std::vector<std::string>& names) 
 // reading (one core) and the drawing (every core) overlap. The child is started here, on the main
 // thread between renders, as forking safely requires.
 struct ReadAhead {
-  std::string key;  // modelCacheKey
+  std::size_t job = 0;  // index in the job list
+  std::string key;      // modelCacheKey
   PendingImport model;
 };
 
-std::optional<ReadAhead> startReadAhead(const RenderOptions& o, const BatchJob& job, const std::string& pattern,
-                                        int threads) {
+// Starts reading jobs[index]'s model, if it is a model file worth reading ahead; whatever goes
+// wrong here is left for the job itself to meet and report.
+std::optional<ReadAhead> startReadAhead(const RenderOptions& o, const std::vector<BatchJob>& jobs, std::size_t index,
+                                        const std::string& pattern, int threads) {
   // A big model is read in its turn: several read ahead would be held in memory at once.
   constexpr std::uintmax_t kLargestReadAhead = std::uintmax_t(64) << 20;
-  std::error_code ec;
-  if (job.input == "-" || !isModelInput(job.input) || fs::file_size(job.input, ec) > kLargestReadAhead || ec ||
-      alreadyDone(o, outputNames(o, job, pattern)))
+  const BatchJob& job = jobs[index];
+  try {
+    std::error_code ec;
+    if (job.input == "-" || !isModelInput(job.input) || fs::file_size(job.input, ec) > kLargestReadAhead || ec ||
+        alreadyDone(o, outputNames(o, job, pattern)))
+      return std::nullopt;
+    SceneOptions so = o.scene;
+    so.input = job.input;
+    ReadAhead ahead;
+    ahead.job = index;
+    ahead.key = modelCacheKey(so);
+    // Sharing the cores with the drawing, the reader is allowed that much more wall-clock time
+    // (its CPU time is held to the same limit).
+    ahead.model = startModelImport(so, double(threads + 1));
+    return ahead;
+  } catch (const std::exception&) {
     return std::nullopt;
-  SceneOptions so = o.scene;
-  so.input = job.input;
-  ReadAhead ahead;
-  ahead.key = modelCacheKey(so);
-  // Sharing the cores with the drawing, the reader is allowed that much more wall-clock time
-  // (its CPU time is held to the same limit).
-  ahead.model = startModelImport(so, double(threads + 1));
-  return ahead;
+  }
 }
 
 JobResult renderJob(const RenderOptions& o, const BatchJob& job, const std::string& input, const std::string& pattern,
@@ -316,13 +325,15 @@ int runBatch(const RenderOptions& o, const std::vector<BatchJob>& allJobs) {
   ModelCache cache;
   std::size_t done = 0, failed = 0, inputErrors = 0;
   // The next jobs' models, read while this job is drawn: as many at once as there are cores.
-  std::deque<std::optional<ReadAhead>> ahead;
-  std::size_t started = 1;  // jobs whose reading has started (or that read their own)
+  std::deque<ReadAhead> ahead;
+  std::size_t considered = 1;  // jobs [1, considered) were looked at for reading ahead
   for (std::size_t i = 0; i < jobs.size(); ++i) {
     if (gInterrupted) break;
     const BatchJob& job = jobs[i];
+    for (; considered < jobs.size() && considered <= i + std::size_t(limit.threads()); ++considered)
+      if (auto next = startReadAhead(o, jobs, considered, pattern, limit.threads())) ahead.push_back(std::move(*next));
     std::optional<ReadAhead> readAhead;
-    if (!ahead.empty()) {
+    if (!ahead.empty() && ahead.front().job == i) {
       readAhead = std::move(ahead.front());
       ahead.pop_front();
     }
@@ -332,8 +343,6 @@ int runBatch(const RenderOptions& o, const std::vector<BatchJob>& allJobs) {
       // Folders the template names are made as needed.
       const fs::path first = expandTemplate(pattern, job, 0);
       if (first.has_parent_path()) fs::create_directories(first.parent_path());
-      for (; started < jobs.size() && started <= i + std::size_t(limit.threads()); ++started)
-        ahead.push_back(startReadAhead(o, jobs[started], pattern, limit.threads()));
       const JobResult r = renderJob(o, job, input, pattern, renderer, cache, std::move(readAhead));
       line["output"] = r.outputs.size() == 1 ? nlohmann::json(r.outputs[0]) : nlohmann::json(r.outputs);
       line["ok"] = true;
