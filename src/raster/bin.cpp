@@ -19,14 +19,18 @@ PixelRect TileBins::tileRect(int tile) const {
           std::min(height_, (ty + 1) * kTileSize) - 1};
 }
 
-void TileBins::bin(const RecordArena& records) {
-  for (std::size_t i = 0; i < records.size(); ++i) {
-    const DrawRecord& r = records[i];
-    const TriangleSetup& t = r.setup;
-    for (int ty = t.minY / kTileSize; ty <= t.maxY / kTileSize; ++ty)
-      for (int tx = t.minX / kTileSize; tx <= t.maxX / kTileSize; ++tx)
-        bins_[std::size_t(ty * tilesX_ + tx)].push_back(&r);
-  }
+void TileBins::addRecord(const TriangleSetup& t, std::uint32_t index) {
+  for (int ty = t.minY / kTileSize; ty <= t.maxY / kTileSize; ++ty)
+    for (int tx = t.minX / kTileSize; tx <= t.maxX / kTileSize; ++tx)
+      bins_[std::size_t(ty * tilesX_ + tx)].push_back(BinEntry::record(index));
+}
+
+void EntryList::grow(std::size_t least) {
+  const std::size_t capacity = std::max<std::size_t>({least, 2 * capacity_, 64});
+  std::unique_ptr<BinEntry[]> grown(new BinEntry[capacity]);
+  std::copy(begin(), end(), grown.get());
+  data_ = std::move(grown);
+  capacity_ = capacity;
 }
 
 void TileBins::clear() {

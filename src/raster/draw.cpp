@@ -18,12 +18,14 @@ DrawTarget::DrawTarget(const FrameContext& frame, const Scene& scene, Framebuffe
     : frame(frame), scene(scene), fb(fb), probe(probe) {
   // (Multisample passes shade at the pixel centre, not where the surface is sampled.)
   litFromSurface = sizeof(Real) == 4 && !probe && frame.shading == Shading::Phong && !frame.multisampled;
+  colorsInDepthPass = sizeof(Real) == 4 && !probe && frame.shading != Shading::Phong && !frame.multisampled;
   for (const Object& o : scene.objects) {
     layouts.push_back(AttributeLayout::forObject(frame, o, probe != nullptr));
     setups.push_back({frame.lights, frame.lightModel, modelOf(o.material, frame.model), o.material});
     colored.push_back(!o.mesh->colors.empty());
     translucent.push_back(frame.blend && isTranslucent(o));
     if (drawnTexture(o) || mapsDrawn(frame, o)) litFromSurface = false;
+    tinyColored.push_back(colorsInDepthPass && !translucent.back() && !drawnTexture(o));
   }
 }
 

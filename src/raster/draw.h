@@ -65,6 +65,11 @@ struct DrawTarget {
   // to the fragment itself, and so its interpolated alpha, a few ulps from 1, cannot blend at all.
   std::vector<std::uint8_t> translucent;
   ShadedPixelCache* shadedPixels = nullptr;  // multisampling: colours of earlier passes (Phong)
+  // Flat and Gouraud pixels coloured in the depth pass itself (tile_raster.h): float channels, one
+  // sample, no watched pixel. Then, per object (opaque, untextured): its tiny triangles coloured
+  // at setup, without records.
+  bool colorsInDepthPass = false;
+  std::vector<std::uint8_t> tinyColored;
 
   DrawTarget(const FrameContext& frame, const Scene& scene, Framebuffer& fb, PixelProbe* probe);
   const AttributeLayout& layout(const DrawRecord& r) const { return layouts[r.object]; }

@@ -62,10 +62,11 @@ void packVertex(const ShadedVertex& v, bool back, const AttributeLayout& l, Real
 
 std::size_t setupTriangles(const FrameContext& frame, const Object& object, std::uint32_t objectIndex,
                            const std::vector<ShadedVertex>& vertices, std::size_t first, std::size_t last,
-                           RecordArena& out) {
-  const std::size_t before = out.size();
+                           RecordArena& out, const SetupBinning* binning) {
+  std::size_t drawn = 0;
   const AttributeLayout& layout = out.layout();
   const auto& indices = object.mesh->indices;
+  [[maybe_unused]] const bool tinyColored = binning && binning->tinyColored;
   ClippedPolygon polygon;
   for (std::size_t t = first; t < last; ++t) {
     const std::size_t i = 3 * t;
@@ -79,18 +80,35 @@ std::size_t setupTriangles(const FrameContext& frame, const Object& object, std:
         out.drop();
         return;
       }
+      ++drawn;
       const bool back = frame.lightModel.twoSided && !r.setup.frontFacing;
+      // Counter-clockwise on screen: setup swapped the last two when the triangle came clockwise.
+      const ShadedVertex* ordered[3] = {&v0, r.setup.swapped ? &v2 : &v1, r.setup.swapped ? &v1 : &v2};
+#if !ILLUM_USE_DOUBLE
+      if (tinyColored && isTiny(r.setup)) {
+        EntryList& list = binning->bins.listAt(r.setup.minX, r.setup.minY);
+        BinEntry* room = list.room(kTinyRoom);
+        if (frame.shading == Shading::Flat) {
+          list.commit(coverTinyFlat(r.setup, packUnorm8(back ? c.back : c.front), room));
+        } else {
+          const Color4 lit[3] = {back ? ordered[0]->back : ordered[0]->front, back ? ordered[1]->back : ordered[1]->front,
+                                 back ? ordered[2]->back : ordered[2]->front};
+          list.commit(coverTinyGouraud(r.setup, lit, room));
+        }
+        out.drop();
+        return;
+      }
+#endif
       r.flat = back ? c.back : c.front;
       r.object = objectIndex;
       r.triangle = std::uint32_t(t);
       r.piece = piece;
-      // Counter-clockwise on screen: setup swapped the last two when the triangle came clockwise.
-      const ShadedVertex* ordered[3] = {&v0, r.setup.swapped ? &v2 : &v1, r.setup.swapped ? &v1 : &v2};
       for (int k = 0; k < 3; ++k) packVertex(*ordered[k], back, layout, r.vertex(k, layout));
       if (layout.probe) {
         Real* p = r.vertex(3, layout);
         for (int k = 0; k < 3; ++k) p[k] = c.eyePosition[k], p[3 + k] = c.eyeNormal[k];
       }
+      if (binning) binning->bins.addRecord(r.setup, std::uint32_t(out.size() - 1));
     };
     if (kind == ClipResult::Inside) {
       emit(a, b, c, 0);
@@ -101,7 +119,7 @@ std::size_t setupTriangles(const FrameContext& frame, const Object& object, std:
     const auto& v = polygon.vertex;
     for (std::size_t k = 1; k + 1 < polygon.size; ++k) emit(v[0], v[k], v[k + 1], std::uint32_t(k));
   }
-  return out.size() - before;
+  return drawn;
 }
 
 }  // namespace illum

@@ -8,6 +8,7 @@
 #include <illum/render.h>
 #include <illum/texture.h>
 
+#include "raster/bin.h"
 #include "raster/frame_context.h"
 #include "raster/setup.h"
 #include "raster/vertex.h"
@@ -90,11 +91,20 @@ class RecordArena {
   AttributeLayout layout_;
 };
 
+// How the binned pipeline takes a chunk's output: each record binned to the tiles it touches as
+// soon as it is set up and, with `tinyColored` (the object's flat or Gouraud pixels are coloured
+// in the depth pass: DrawTarget::tinyColored), each tiny triangle (isTiny) coloured at once into
+// fragments binned by pixel, instead of becoming a record.
+struct SetupBinning {
+  TileBins& bins;
+  bool tinyColored = false;
+};
+
 // Clips and sets up triangles [first, last) of `object` (its vertices already through the vertex
-// stage), appending a record for each drawn (clipped) piece to `out` in submission order. Returns
-// how many were appended.
+// stage), appending a record for each drawn (clipped) piece to `out` in submission order, binned
+// as it goes when `binning` is given. Returns how many pieces were drawn (records and tiny ones).
 std::size_t setupTriangles(const FrameContext& frame, const Object& object, std::uint32_t objectIndex,
                            const std::vector<ShadedVertex>& vertices, std::size_t first, std::size_t last,
-                           RecordArena& out);
+                           RecordArena& out, const SetupBinning* binning = nullptr);
 
 }  // namespace illum

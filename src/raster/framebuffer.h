@@ -29,6 +29,12 @@ inline std::uint8_t toUnorm8(Real c) {
   else return std::uint8_t(std::lround(x));
 }
 
+// A colour as the framebuffer stores it: RGBA8, R in the lowest byte.
+inline std::uint32_t packUnorm8(const Color4& c) {
+  return std::uint32_t(toUnorm8(c.r)) | std::uint32_t(toUnorm8(c.g)) << 8 | std::uint32_t(toUnorm8(c.b)) << 16 |
+         std::uint32_t(toUnorm8(c.a)) << 24;
+}
+
 class Framebuffer {
  public:
   Framebuffer() = default;

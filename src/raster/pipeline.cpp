@@ -41,9 +41,16 @@ struct Renderer::State {
   struct Chunk {
     RecordArena records;  // moving a Chunk keeps the records in place
     TileBins bins;
+    std::size_t drawn = 0;  // pieces drawn: records and tiny triangles
   };
   std::vector<Chunk> pool;
-  tbb::enumerable_thread_specific<std::vector<const DrawRecord*>> tileRecords;  // one tile's, gathered
+  // One tile's list, gathered from the chunks: its records, and every entry in order (a record's
+  // entry indexes `records`).
+  struct TileList {
+    std::vector<const DrawRecord*> records;
+    std::vector<BinEntry> entries;
+  };
+  tbb::enumerable_thread_specific<TileList> tileLists;
   tbb::affinity_partitioner tileAffinity;
   ShadedPixelCache shadedPixels;  // multisampling: what earlier passes shaded
 };
@@ -83,14 +90,14 @@ class BinnedFrame {
        for (std::size_t c = range.begin(); c < range.end(); ++c) {
         Renderer::State::Chunk& chunk = s_.pool[used_ + (c - c0)];
         chunk.records.reset(target_.layouts[index]);
-        setupTriangles(frame_, object, index, vertices, c * kTriangleChunk, std::min(triangles, (c + 1) * kTriangleChunk),
-                       chunk.records);
         chunk.bins.reset(frame_.width, frame_.height);
-        chunk.bins.bin(chunk.records);
+        const SetupBinning binning{chunk.bins, target_.tinyColored[index] != 0};
+        chunk.drawn = setupTriangles(frame_, object, index, vertices, c * kTriangleChunk,
+                                     std::min(triangles, (c + 1) * kTriangleChunk), chunk.records, &binning);
        }
       }, tbb::static_partitioner());
       for (std::size_t c = c0; c < c1; ++c) {
-        const std::size_t n = s_.pool[used_++].records.size();
+        const std::size_t n = s_.pool[used_++].drawn;
         batched_ += n;
         stats_.trianglesDrawn += n;
       }
@@ -115,22 +122,38 @@ class BinnedFrame {
   }
 
   void drawTile(int tile) {
-    auto& records = s_.tileRecords.local();
-    records.clear();
+    auto& list = s_.tileLists.local();
+    list.records.clear();
+    list.entries.clear();
     for (std::size_t c = 0; c < used_; ++c) {
-      const auto& part = s_.pool[c].bins.records(tile);
-      records.insert(records.end(), part.begin(), part.end());
+      const Renderer::State::Chunk& chunk = s_.pool[c];
+      for (const BinEntry& e : chunk.bins.entries(tile)) {
+        if (e.isFragment()) {
+          list.entries.push_back(e);
+          continue;
+        }
+        list.entries.push_back(BinEntry::record(std::uint32_t(list.records.size())));
+        list.records.push_back(&chunk.records[e.index()]);
+      }
     }
-    if (records.empty()) return;
+    if (list.entries.empty()) return;
     const PixelRect rect = tiles_.tileRect(tile);
     s_.fb.clearTile(rect.minX, rect.minY);
     std::size_t& fragments = s_.tileFragments[std::size_t(tile)];
     // The opaque objects come first (drawingOrder): each visible pixel shaded once
-    // (shade_tile.h); then the translucent ones, blended fragment by fragment.
-    std::size_t opaque = 0;
-    while (opaque < records.size() && !target_.blends(*records[opaque])) ++opaque;
-    if (opaque > 0) fragments += drawOpaqueTile(target_, std::span(records).first(opaque), rect, s_.scratch.local());
-    for (std::size_t i = opaque; i < records.size(); ++i) drawRecord(target_, *records[i], rect, fragments);
+    // (shade_tile.h); then the translucent ones, blended fragment by fragment (tiny triangles'
+    // fragments are all opaque).
+    std::size_t opaque = 0, opaqueRecords = 0;
+    for (; opaque < list.entries.size(); ++opaque) {
+      const BinEntry& e = list.entries[opaque];
+      if (e.isFragment()) continue;
+      if (target_.blends(*list.records[e.index()])) break;
+      ++opaqueRecords;
+    }
+    if (opaque > 0)
+      fragments += drawOpaqueTile(target_, std::span(list.records).first(opaqueRecords),
+                                  std::span(list.entries).first(opaque), rect, s_.scratch.local());
+    for (std::size_t i = opaqueRecords; i < list.records.size(); ++i) drawRecord(target_, *list.records[i], rect, fragments);
   }
 
   RenderStats stats() const {

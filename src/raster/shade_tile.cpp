@@ -148,9 +148,7 @@ class PhongBatch {
 std::size_t drawColored(const DrawTarget& target, const DrawRecord& r, const PixelRect& rect, Real* depth,
                         std::uint32_t* color, std::uint32_t* winners) {
   if (target.frame.shading == Shading::Flat) {
-    const std::uint32_t packed = std::uint32_t(toUnorm8(r.flat.r)) | std::uint32_t(toUnorm8(r.flat.g)) << 8 |
-                                 std::uint32_t(toUnorm8(r.flat.b)) << 16 | std::uint32_t(toUnorm8(r.flat.a)) << 24;
-    return rasterizeFlat(r.setup, rect, depth, color, winners, packed);
+    return rasterizeFlat(r.setup, rect, depth, color, winners, packUnorm8(r.flat));
   }
   const AttributeLayout& l = target.layout(r);
   const Color4 lit[3] = {VertexValues{r.vertex(0, l), l}.lit(), VertexValues{r.vertex(1, l), l}.lit(),
@@ -195,33 +193,42 @@ std::size_t drawLitSurface(const DrawTarget& target, std::span<const DrawRecord*
 
 }  // namespace
 
-std::size_t drawOpaqueTile(const DrawTarget& target, std::span<const DrawRecord* const> records, const PixelRect& rect,
-                           TileScratch& scratch) {
+std::size_t drawOpaqueTile(const DrawTarget& target, std::span<const DrawRecord* const> records,
+                           std::span<const BinEntry> entries, const PixelRect& rect, TileScratch& scratch) {
   Real* depth = target.fb.depthTile(rect.minX, rect.minY);
   auto* color = reinterpret_cast<std::uint32_t*>(target.fb.colorTile(rect.minX, rect.minY));
 #if !ILLUM_USE_DOUBLE
   if (target.litFromSurface) return drawLitSurface(target, records, rect, depth, color, scratch);
 #endif
-  const Shading shading = target.frame.shading;
   // Flat and Gouraud colour their pixels in the depth pass itself, unless a texel or the probe
   // needs the second pass (or the channels are double, which the SIMD conversion does not take).
-  const bool direct = sizeof(Real) == 4 && !target.probe && shading != Shading::Phong && !target.frame.multisampled;
   std::uint32_t* winners = scratch.winners.data();
   bool anyWinner = false;
   std::size_t fragments = 0;
-  for (std::size_t i = 0; i < records.size(); ++i) {
+  for (const BinEntry& e : entries) {
+    if (e.isFragment()) {
+      // A tiny triangle's pixel, coloured at setup: only the depth test is left.
+      const std::uint32_t at = e.index();
+      if (!(e.z < depth[at])) continue;
+      depth[at] = e.z;
+      color[at] = e.color;
+      if (anyWinner) winners[at] = kNoWinner;
+      ++fragments;
+      continue;
+    }
+    const std::uint32_t i = e.index();
     const DrawRecord& r = *records[i];
 #if !ILLUM_USE_DOUBLE
-    if (direct && !drawnTexture(target.scene.objects[r.object])) {
+    if (target.colorsInDepthPass && !drawnTexture(target.scene.objects[r.object])) {
       fragments += drawColored(target, r, rect, depth, color, anyWinner ? winners : nullptr);
       continue;
     }
 #endif
-    fragments += rasterizeDepth(r.setup, rect, depth, std::uint32_t(i), winners);
+    fragments += rasterizeDepth(r.setup, rect, depth, i, winners);
     anyWinner = true;
   }
   if (!anyWinner) return fragments;
-  if (shading == Shading::Phong) {
+  if (target.frame.shading == Shading::Phong) {
     PhongBatch batch(target, records, rect, scratch);
     for (int i = 0; i < kTileSize * kTileSize; ++i)
       if (scratch.winners[std::size_t(i)] != kNoWinner) batch.add(i, scratch.winners[std::size_t(i)]);

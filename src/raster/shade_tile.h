@@ -7,6 +7,7 @@
 // with the same formulas.
 #pragma once
 
+#include "raster/bin.h"
 #include "raster/draw.h"
 #include "raster/tile_raster.h"
 
@@ -33,9 +34,10 @@ struct TileScratch {
   }
 };
 
-// Draws `records` (the tile's, in submission order) into the tile `rect` without blending.
-// Returns the fragments that passed the depth test.
-std::size_t drawOpaqueTile(const DrawTarget& target, std::span<const DrawRecord* const> records, const PixelRect& rect,
-                           TileScratch& scratch);
+// Draws the tile's `entries` (bin.h: records, which index `records`, and tiny triangles'
+// fragments, in submission order) into the tile `rect` without blending. Returns the fragments
+// that passed the depth test.
+std::size_t drawOpaqueTile(const DrawTarget& target, std::span<const DrawRecord* const> records,
+                           std::span<const BinEntry> entries, const PixelRect& rect, TileScratch& scratch);
 
 }  // namespace illum

@@ -209,31 +209,38 @@ HWY_INLINE std::size_t DepthPassTwoRows(const TriangleSetup& t, const PixelRect&
 }
 #endif
 
-// A triangle of a few pixels (most of a dense mesh's): each pixel alone, in one-lane vectors, which
-// costs far less than setting full vectors up for it. The same values as DepthPass: an edge value
-// converts to Real as the double lanes' demotion rounds it, and every formula is the same.
-template <class Write>
-HWY_INLINE std::size_t DepthPassFewPixels(const TriangleSetup& t, int minX, int maxX, int minY, int maxY,
-                                          const PixelRect& tile, Real* depth, const Write& write) {
-  const hn::CappedTag<Real, 1> d1;
+// The covered pixels of a triangle of a few pixels (most of a dense mesh's), each alone, in
+// one-lane vectors, which costs far less than setting full vectors up for it: visit(x, y, l0, l1,
+// l2, z) in rows from the bottom. The same values as DepthPass: an edge value converts to Real as
+// the double lanes' demotion rounds it, and every formula is the same.
+template <class Visit>
+HWY_INLINE void VisitFewPixels(const TriangleSetup& t, int minX, int maxX, int minY, int maxY, const Visit& visit) {
   const std::int64_t half = kSubpixelOne / 2;
-  std::size_t passed = 0;
   for (int y = minY; y <= maxY; ++y) {
     const std::int64_t fy = std::int64_t(y) * kSubpixelOne + half;
-    const int row = (y - tile.minY) * kTileSize - tile.minX;
     for (int x = minX; x <= maxX; ++x) {
       const std::int64_t fx = std::int64_t(x) * kSubpixelOne + half;
       const std::int64_t e0 = t.edge[0].at(fx, fy), e1 = t.edge[1].at(fx, fy), e2 = t.edge[2].at(fx, fy);
       if (e0 + t.edge[0].bias < 0 || e1 + t.edge[1].bias < 0 || e2 + t.edge[2].bias < 0) continue;
       const Real l0 = Real(e0) * t.invArea, l1 = Real(e1) * t.invArea, l2 = Real(e2) * t.invArea;
-      const Real z = l0 * t.z[0] + l1 * t.z[1] + l2 * t.z[2];
-      Real& stored = depth[row + x];
-      if (!(z < stored)) continue;
-      stored = z;
-      write(row + x, hn::FirstN(d1, 1), hn::Set(d1, l0), hn::Set(d1, l1), hn::Set(d1, l2));
-      ++passed;
+      visit(x, y, l0, l1, l2, l0 * t.z[0] + l1 * t.z[1] + l2 * t.z[2]);
     }
   }
+}
+
+template <class Write>
+HWY_INLINE std::size_t DepthPassFewPixels(const TriangleSetup& t, int minX, int maxX, int minY, int maxY,
+                                          const PixelRect& tile, Real* depth, const Write& write) {
+  const hn::CappedTag<Real, 1> d1;
+  std::size_t passed = 0;
+  VisitFewPixels(t, minX, maxX, minY, maxY, [&](int x, int y, Real l0, Real l1, Real l2, Real z) {
+    const int at = (y - tile.minY) * kTileSize + (x - tile.minX);
+    Real& stored = depth[at];
+    if (!(z < stored)) return;
+    stored = z;
+    write(at, hn::FirstN(d1, 1), hn::Set(d1, l0), hn::Set(d1, l1), hn::Set(d1, l2));
+    ++passed;
+  });
   return passed;
 }
 
@@ -279,25 +286,103 @@ std::size_t RasterizeFlat(const TriangleSetup& t, const PixelRect& tile, Real* d
   });
 }
 
+// perspectiveWeights (fragment.h) and gouraudColor, lane by lane, as RGBA8 pixels. Three alphas
+// of exactly 1 (`opaque`) blend to within a few ulps of 1, which converts to 255 every time.
+template <class V>
+HWY_INLINE auto GouraudPixels(const TriangleSetup& t, const Color4* lit, bool opaque, V l0, V l1, V l2) {
+  const hn::DFromV<V> dr;
+  const V q0 = l0 * hn::Set(dr, t.invW[0]), q1 = l1 * hn::Set(dr, t.invW[1]), q2 = l2 * hn::Set(dr, t.invW[2]);
+  const V inv = hn::Set(dr, Real(1)) / (q0 + q1 + q2);
+  const V p0 = q0 * inv, p1 = q1 * inv, p2 = q2 * inv;
+  V c[4];
+  for (int k = 0; k < (opaque ? 3 : 4); ++k)
+    c[k] = p0 * hn::Set(dr, lit[0][k]) + p1 * hn::Set(dr, lit[1][k]) + p2 * hn::Set(dr, lit[2][k]);
+  return opaque ? PackUnorm8(dr, c[0], c[1], c[2], 255u) : PackUnorm8(dr, c[0], c[1], c[2], c[3]);
+}
+
+HWY_INLINE bool Opaque(const Color4* lit) { return lit[0].a == 1 && lit[1].a == 1 && lit[2].a == 1; }
+
 std::size_t RasterizeGouraud(const TriangleSetup& t, const PixelRect& tile, Real* depth, std::uint32_t* color,
                              std::uint32_t* winners, const Color4* lit) {
-  // Three alphas of exactly 1 blend to within a few ulps of 1, which converts to 255 every time.
-  const bool opaque = lit[0].a == 1 && lit[1].a == 1 && lit[2].a == 1;
+  const bool opaque = Opaque(lit);
   return DepthPass(t, tile, depth, [&](int at, auto pass, auto l0, auto l1, auto l2) {
-    using V = decltype(l0);
-    const hn::DFromV<V> dr;
-    const hn::Rebind<std::uint32_t, decltype(dr)> du;
-    // perspectiveWeights (fragment.h) and gouraudColor, lane by lane.
-    const V q0 = l0 * hn::Set(dr, t.invW[0]), q1 = l1 * hn::Set(dr, t.invW[1]), q2 = l2 * hn::Set(dr, t.invW[2]);
-    const V inv = hn::Set(dr, Real(1)) / (q0 + q1 + q2);
-    const V p0 = q0 * inv, p1 = q1 * inv, p2 = q2 * inv;
-    V c[4];
-    for (int k = 0; k < (opaque ? 3 : 4); ++k)
-      c[k] = p0 * hn::Set(dr, lit[0][k]) + p1 * hn::Set(dr, lit[1][k]) + p2 * hn::Set(dr, lit[2][k]);
-    const auto pixels = opaque ? PackUnorm8(dr, c[0], c[1], c[2], 255u) : PackUnorm8(dr, c[0], c[1], c[2], c[3]);
-    hn::BlendedStore(pixels, hn::RebindMask(du, pass), du, color + at);
+    const hn::Rebind<std::uint32_t, hn::DFromV<decltype(l0)>> du;
+    hn::BlendedStore(GouraudPixels(t, lit, opaque, l0, l1, l2), hn::RebindMask(du, pass), du, color + at);
     ClearWinners(du, winners, at, pass);
   });
+}
+
+// Lane k of a tiny triangle's bounds, w pixels wide: column k mod w, row k / w, and twice its
+// offset in the tile from the bounds' first pixel (a fragment entry's tag, bin_entry.h).
+struct TinyLanes {
+  float column[kTinyPixels + 1][kTinyPixels], row[kTinyPixels + 1][kTinyPixels];
+  std::uint32_t tag[kTinyPixels + 1][kTinyPixels];
+};
+constexpr TinyLanes MakeTinyLanes() {
+  TinyLanes lanes{};
+  for (int w = 1; w <= kTinyPixels; ++w)
+    for (int k = 0; k < kTinyPixels; ++k) {
+      lanes.column[w][k] = float(k % w), lanes.row[w][k] = float(k / w);
+      lanes.tag[w][k] = std::uint32_t((k / w) * kTileSize + k % w) << 1;
+    }
+  return lanes;
+}
+constexpr TinyLanes kTinyLanes = MakeTinyLanes();
+
+// A tiny triangle's covered pixels as fragment entries, coloured as RasterizeFlat (lit null) or
+// RasterizeGouraud colour them, without a depth test. Its whole bounds are one or two vectors:
+// lane k is the pixel (k mod w, k / w) from the bottom-left one, whose edge values differ from
+// that pixel's by c·A + r·B (A = 256a, B = 256b): as in DepthPassTwoRows, exact in float inside
+// the bounds of a float-exact triangle, the lanes past the bounds masked. The covered lanes are
+// compressed and stored without a branch, so that the work of consecutive triangles overlaps.
+// Others (a long sliver whose bounds the viewport cut small) go pixel by pixel, to the same values.
+std::size_t CoverTiny(const TriangleSetup& t, const Color4* lit, std::uint32_t packed, BinEntry* out) {
+  const bool opaque = lit && Opaque(lit);
+  const std::uint32_t first = std::uint32_t((t.minY % kTileSize) * kTileSize + t.minX % kTileSize);
+  std::size_t n = 0;
+  if (sizeof(Real) != 4 || !t.floatExact || HWY_TARGET == HWY_SCALAR) {
+    const hn::CappedTag<Real, 1> d1;
+    VisitFewPixels(t, t.minX, t.maxX, t.minY, t.maxY, [&](int x, int y, Real l0, Real l1, Real l2, Real z) {
+      const std::uint32_t c =
+          lit ? hn::GetLane(GouraudPixels(t, lit, opaque, hn::Set(d1, l0), hn::Set(d1, l1), hn::Set(d1, l2))) : packed;
+      out[n++] = BinEntry::fragment(first + std::uint32_t((y - t.minY) * kTileSize + (x - t.minX)), z, c);
+    });
+    return n;
+  }
+#if HWY_TARGET != HWY_SCALAR
+  const DR dr;
+  const DU du;
+  const int w = t.maxX - t.minX + 1, count = w * (t.maxY - t.minY + 1);
+  const std::int64_t half = kSubpixelOne / 2;
+  const std::int64_t fx = std::int64_t(t.minX) * kSubpixelOne + half, fy = std::int64_t(t.minY) * kSubpixelOne + half;
+  VR base[3], A[3], B[3], bias[3];
+  for (int i = 0; i < 3; ++i) {
+    base[i] = hn::Set(dr, Real(t.edge[i].at(fx, fy)));
+    A[i] = hn::Set(dr, Real(t.edge[i].a) * Real(kSubpixelOne));
+    B[i] = hn::Set(dr, Real(t.edge[i].b) * Real(kSubpixelOne));
+    bias[i] = hn::Set(dr, Real(t.edge[i].bias));
+  }
+  const VR invArea = hn::Set(dr, t.invArea), zero = hn::Zero(dr);
+  const VR z0 = hn::Set(dr, t.z[0]), z1 = hn::Set(dr, t.z[1]), z2 = hn::Set(dr, t.z[2]);
+  const auto firstTag = hn::Set(du, first << 1 | 1);
+  const int lanes = int(hn::Lanes(dr));
+  for (int k0 = 0; k0 < count; k0 += lanes) {
+    const VR column = hn::LoadU(dr, kTinyLanes.column[w] + k0), row = hn::LoadU(dr, kTinyLanes.row[w] + k0);
+    VR E[3];
+    for (int i = 0; i < 3; ++i) E[i] = base[i] + hn::MulAdd(column, A[i], row * B[i]);
+    const MR inside = hn::And(hn::And(hn::FirstN(dr, std::size_t(count - k0)), E[0] + bias[0] >= zero),
+                              hn::And(E[1] + bias[1] >= zero, E[2] + bias[2] >= zero));
+    const VR l0 = E[0] * invArea, l1 = E[1] * invArea, l2 = E[2] * invArea;
+    const VR z = l0 * z0 + l1 * z1 + l2 * z2;
+    const auto color = lit ? GouraudPixels(t, lit, opaque, l0, l1, l2) : hn::Set(du, packed);
+    const auto tag = firstTag + hn::LoadU(du, kTinyLanes.tag[w] + k0);
+    const auto keep = hn::RebindMask(du, inside);
+    hn::StoreInterleaved3(hn::Compress(tag, keep), hn::Compress(hn::BitCast(du, z), keep), hn::Compress(color, keep), du,
+                          reinterpret_cast<std::uint32_t*>(out + n));
+    n += hn::CountTrue(dr, inside);
+  }
+#endif
+  return n;
 }
 
 std::size_t RasterizeSurface(const TriangleSetup& t, const PixelRect& tile, Real* depth, const SurfaceVertices& v,
@@ -344,6 +429,7 @@ HWY_EXPORT(RasterizeDepth);
 HWY_EXPORT(RasterizeFlat);
 HWY_EXPORT(RasterizeGouraud);
 HWY_EXPORT(RasterizeSurface);
+HWY_EXPORT(CoverTiny);
 
 std::size_t rasterizeDepth(const TriangleSetup& t, const PixelRect& tile, Real* depth, std::uint32_t slot,
                            std::uint32_t* winners) {
@@ -363,6 +449,14 @@ std::size_t rasterizeGouraud(const TriangleSetup& t, const PixelRect& tile, Real
 std::size_t rasterizeSurface(const TriangleSetup& t, const PixelRect& tile, Real* depth, const SurfaceVertices& v,
                              const SurfaceTile& out) {
   return HWY_DYNAMIC_DISPATCH(RasterizeSurface)(t, tile, depth, v, out);
+}
+
+std::size_t coverTinyFlat(const TriangleSetup& t, std::uint32_t packed, BinEntry* out) {
+  return HWY_DYNAMIC_DISPATCH(CoverTiny)(t, nullptr, packed, out);
+}
+
+std::size_t coverTinyGouraud(const TriangleSetup& t, const Color4* lit, BinEntry* out) {
+  return HWY_DYNAMIC_DISPATCH(CoverTiny)(t, lit, 0, out);
 }
 
 }  // namespace illum

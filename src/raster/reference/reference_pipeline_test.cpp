@@ -6,6 +6,9 @@
 #include <illum/render.h>
 #include <illum/scene.h>
 
+#include <illum/texture.h>
+
+#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 #include <hwy/targets.h>
@@ -32,6 +35,36 @@ Image withThreads(int threads, const Scene& scene) {
   return renderScene(scene);
 }
 
+// Dense meshes, whose triangles cover a pixel or two (tiny ones are coloured at setup, without a
+// record: tile_raster.h), lit on both sides (the back faces show through a cut-away), beside a
+// textured object (whose pixels are coloured after the depth pass) and, with blending, a
+// translucent one.
+Scene denseScene(bool blend) {
+  Scene scene = defaultScene();
+  scene.width = 300, scene.height = 200, scene.blend = blend;
+  scene.lightModel.twoSided = true;
+  for (std::size_t i = 0; i < scene.objects.size(); ++i)
+    scene.objects[i].mesh = std::make_shared<Mesh>(makeSphere(1, 160 + 20 * int(i), 90));
+  Image checker(8, 8);
+  for (int y = 0; y < 8; ++y)
+    for (int x = 0; x < 8; ++x)
+      for (int c = 0; c < 4; ++c) checker.pixel(x, y)[c] = (x + y) % 2 || c == 3 ? 255 : 40;
+  Object textured = scene.objects.front();
+  Mesh cube = makeCube(Real(1.2));
+  for (const Vec3& p : cube.positions) cube.uvs.push_back({p.x + p.z, p.y - p.z});
+  textured.mesh = std::make_shared<Mesh>(std::move(cube));
+  textured.diffuseTexture = std::make_shared<Texture>(checker);
+  textured.worldFromObject = glm::translate(Mat4(1), Vec3(0.4f, 0.2f, 0.5f));
+  scene.objects.push_back(textured);
+  if (blend) {
+    Object glass = scene.objects.front();
+    glass.material.diffuse.a = 0.5f;
+    glass.worldFromObject = glm::translate(Mat4(1), Vec3(-0.5f, -0.3f, 0.8f)) * glm::scale(Mat4(1), Vec3(0.6f));
+    scene.objects.push_back(glass);
+  }
+  return scene;
+}
+
 TEST(BinnedPipeline, EqualsTheReferenceAndEveryThreadCount) {
   std::vector<std::pair<std::string, Scene>> scenes = {{"built-in", defaultScene()}};
   for (const fs::path& f : sceneFiles()) scenes.push_back({f.filename().string(), loadSceneFile(f)});
@@ -41,6 +74,8 @@ TEST(BinnedPipeline, EqualsTheReferenceAndEveryThreadCount) {
   wide.width = 1000, wide.height = 700, wide.blend = true;
   for (Object& o : wide.objects) o.material.diffuse.a = 0.6f;
   scenes.push_back({"blended 1000x700", wide});
+  scenes.push_back({"dense", denseScene(false)});
+  scenes.push_back({"dense, blended", denseScene(true)});
   for (auto& [name, scene] : scenes)
     for (Shading shading : {Shading::Flat, Shading::Gouraud, Shading::Phong}) {
       scene.shading = shading;
@@ -61,6 +96,7 @@ TEST(BinnedPipeline, EverySimdTargetDrawsTheSameBytes) {
   std::vector<std::pair<std::string, Scene>> scenes = {{"built-in", defaultScene()}};
   for (const char* file : {"examples/first_light.json", "tests/scenes/parity/near_clip_two_sided.json", "tests/scenes/parity/coloured_lights.json"})
     scenes.push_back({file, loadSceneFile(fs::path(ILLUM_REPO_DIR) / file)});
+  scenes.push_back({"dense", denseScene(true)});
   int targets = 0;
   for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
     hwy::SetSupportedTargetsForTest(target);
