@@ -9,7 +9,7 @@ void TileBins::reset(int width, int height) {
   height_ = height;
   tilesX_ = (width + kTileSize - 1) / kTileSize;
   tilesY_ = (height + kTileSize - 1) / kTileSize;
-  bins_.resize(std::size_t(tilesX_) * std::size_t(tilesY_));
+  tiles_.resize(std::size_t(tilesX_) * std::size_t(tilesY_));
   clear();
 }
 
@@ -22,19 +22,19 @@ PixelRect TileBins::tileRect(int tile) const {
 void TileBins::addRecord(const TriangleSetup& t, std::uint32_t index) {
   for (int ty = t.minY / kTileSize; ty <= t.maxY / kTileSize; ++ty)
     for (int tx = t.minX / kTileSize; tx <= t.maxX / kTileSize; ++tx)
-      bins_[std::size_t(ty * tilesX_ + tx)].push_back(BinEntry::record(index));
+      tiles_[std::size_t(ty * tilesX_ + tx)].records.push_back(index);
 }
 
-void EntryList::grow(std::size_t least) {
-  const std::size_t capacity = std::max<std::size_t>({least, 2 * capacity_, 64});
-  std::unique_ptr<BinEntry[]> grown(new BinEntry[capacity]);
+void FragmentList::grow(std::size_t least) {
+  const std::size_t capacity = std::max(least, 2 * capacity_);
+  std::unique_ptr<TinyFragment[]> grown(new TinyFragment[capacity]);
   std::copy(begin(), end(), grown.get());
   data_ = std::move(grown);
   capacity_ = capacity;
 }
 
 void TileBins::clear() {
-  for (auto& b : bins_) b.clear();
+  for (Tile& t : tiles_) t.records.clear(), t.fragments.clear();
 }
 
 }  // namespace illum

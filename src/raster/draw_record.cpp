@@ -1,6 +1,7 @@
 #include "raster/draw_record.h"
 
 #include "raster/clip.h"
+#include "raster/tile_raster.h"
 
 #include <cstring>
 
@@ -86,14 +87,15 @@ std::size_t setupTriangles(const FrameContext& frame, const Object& object, std:
       const ShadedVertex* ordered[3] = {&v0, r.setup.swapped ? &v2 : &v1, r.setup.swapped ? &v1 : &v2};
 #if !ILLUM_USE_DOUBLE
       if (tinyColored && isTiny(r.setup)) {
-        EntryList& list = binning->bins.listAt(r.setup.minX, r.setup.minY);
-        BinEntry* room = list.room(kTinyRoom);
+        TileBins::Tile& tile = binning->bins.tileAt(r.setup.minX, r.setup.minY);
+        TinyFragment* room = tile.fragments.room(kTinyRoom);
+        const auto before = std::uint32_t(tile.records.size());
         if (frame.shading == Shading::Flat) {
-          list.commit(coverTinyFlat(r.setup, packUnorm8(back ? c.back : c.front), room));
+          tile.fragments.commit(coverTinyFlat(r.setup, packUnorm8(back ? c.back : c.front), before, room));
         } else {
           const Color4 lit[3] = {back ? ordered[0]->back : ordered[0]->front, back ? ordered[1]->back : ordered[1]->front,
                                  back ? ordered[2]->back : ordered[2]->front};
-          list.commit(coverTinyGouraud(r.setup, lit, room));
+          tile.fragments.commit(coverTinyGouraud(r.setup, lit, before, room));
         }
         out.drop();
         return;

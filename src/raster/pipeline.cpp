@@ -44,11 +44,11 @@ struct Renderer::State {
     std::size_t drawn = 0;  // pieces drawn: records and tiny triangles
   };
   std::vector<Chunk> pool;
-  // One tile's list, gathered from the chunks: its records, and every entry in order (a record's
-  // entry indexes `records`).
+  // One tile's lists, gathered from the chunks: its records, and its tiny triangles' fragments,
+  // each counting the records before it in `records`.
   struct TileList {
     std::vector<const DrawRecord*> records;
-    std::vector<BinEntry> entries;
+    std::vector<TinyFragment> fragments;
   };
   tbb::enumerable_thread_specific<TileList> tileLists;
   tbb::affinity_partitioner tileAffinity;
@@ -124,36 +124,28 @@ class BinnedFrame {
   void drawTile(int tile) {
     auto& list = s_.tileLists.local();
     list.records.clear();
-    list.entries.clear();
+    list.fragments.clear();
     for (std::size_t c = 0; c < used_; ++c) {
       const Renderer::State::Chunk& chunk = s_.pool[c];
-      for (const BinEntry& e : chunk.bins.entries(tile)) {
-        if (e.isFragment()) {
-          list.entries.push_back(e);
-          continue;
-        }
-        list.entries.push_back(BinEntry::record(std::uint32_t(list.records.size())));
-        list.records.push_back(&chunk.records[e.index()]);
-      }
+      const TileBins::Tile& part = chunk.bins.tile(tile);
+      // (A batch holds far fewer records than a fragment's tag can count: kBatchRecords plus a slice.)
+      const auto before = std::uint32_t(list.records.size());
+      for (const TinyFragment& f : part.fragments)
+        list.fragments.push_back({f.tag + (before << TinyFragment::kPixelBits), f.z, f.color});
+      for (std::uint32_t index : part.records) list.records.push_back(&chunk.records[index]);
     }
-    if (list.entries.empty()) return;
+    if (list.records.empty() && list.fragments.empty()) return;
     const PixelRect rect = tiles_.tileRect(tile);
     s_.fb.clearTile(rect.minX, rect.minY);
     std::size_t& fragments = s_.tileFragments[std::size_t(tile)];
     // The opaque objects come first (drawingOrder): each visible pixel shaded once
-    // (shade_tile.h); then the translucent ones, blended fragment by fragment (tiny triangles'
-    // fragments are all opaque).
-    std::size_t opaque = 0, opaqueRecords = 0;
-    for (; opaque < list.entries.size(); ++opaque) {
-      const BinEntry& e = list.entries[opaque];
-      if (e.isFragment()) continue;
-      if (target_.blends(*list.records[e.index()])) break;
-      ++opaqueRecords;
-    }
-    if (opaque > 0)
-      fragments += drawOpaqueTile(target_, std::span(list.records).first(opaqueRecords),
-                                  std::span(list.entries).first(opaque), rect, s_.scratch.local());
-    for (std::size_t i = opaqueRecords; i < list.records.size(); ++i) drawRecord(target_, *list.records[i], rect, fragments);
+    // (shade_tile.h); then the translucent ones, blended fragment by fragment (tiny triangles
+    // are all opaque).
+    std::size_t opaque = 0;
+    while (opaque < list.records.size() && !target_.blends(*list.records[opaque])) ++opaque;
+    if (opaque > 0 || !list.fragments.empty())
+      fragments += drawOpaqueTile(target_, std::span(list.records).first(opaque), list.fragments, rect, s_.scratch.local());
+    for (std::size_t i = opaque; i < list.records.size(); ++i) drawRecord(target_, *list.records[i], rect, fragments);
   }
 
   RenderStats stats() const {

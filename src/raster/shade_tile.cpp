@@ -194,7 +194,7 @@ std::size_t drawLitSurface(const DrawTarget& target, std::span<const DrawRecord*
 }  // namespace
 
 std::size_t drawOpaqueTile(const DrawTarget& target, std::span<const DrawRecord* const> records,
-                           std::span<const BinEntry> entries, const PixelRect& rect, TileScratch& scratch) {
+                           std::span<const TinyFragment> tiny, const PixelRect& rect, TileScratch& scratch) {
   Real* depth = target.fb.depthTile(rect.minX, rect.minY);
   auto* color = reinterpret_cast<std::uint32_t*>(target.fb.colorTile(rect.minX, rect.minY));
 #if !ILLUM_USE_DOUBLE
@@ -205,18 +205,21 @@ std::size_t drawOpaqueTile(const DrawTarget& target, std::span<const DrawRecord*
   std::uint32_t* winners = scratch.winners.data();
   bool anyWinner = false;
   std::size_t fragments = 0;
-  for (const BinEntry& e : entries) {
-    if (e.isFragment()) {
-      // A tiny triangle's pixel, coloured at setup: only the depth test is left.
-      const std::uint32_t at = e.index();
-      if (!(e.z < depth[at])) continue;
-      depth[at] = e.z;
-      color[at] = e.color;
+  std::size_t nextTiny = 0;
+  // A tiny triangle's pixels, coloured at setup: only the depth test is left.
+  const auto drawTinyUpTo = [&](std::size_t record) {
+    for (; nextTiny < tiny.size() && tiny[nextTiny].recordsBefore() <= record; ++nextTiny) {
+      const TinyFragment& f = tiny[nextTiny];
+      const std::uint32_t at = f.pixel();
+      if (!(f.z < depth[at])) continue;
+      depth[at] = f.z;
+      color[at] = f.color;
       if (anyWinner) winners[at] = kNoWinner;
       ++fragments;
-      continue;
     }
-    const std::uint32_t i = e.index();
+  };
+  for (std::size_t i = 0; i < records.size(); ++i) {
+    drawTinyUpTo(i);
     const DrawRecord& r = *records[i];
 #if !ILLUM_USE_DOUBLE
     if (target.colorsInDepthPass && !drawnTexture(target.scene.objects[r.object])) {
@@ -224,9 +227,10 @@ std::size_t drawOpaqueTile(const DrawTarget& target, std::span<const DrawRecord*
       continue;
     }
 #endif
-    fragments += rasterizeDepth(r.setup, rect, depth, i, winners);
+    fragments += rasterizeDepth(r.setup, rect, depth, std::uint32_t(i), winners);
     anyWinner = true;
   }
+  drawTinyUpTo(records.size());
   if (!anyWinner) return fragments;
   if (target.frame.shading == Shading::Phong) {
     PhongBatch batch(target, records, rect, scratch);

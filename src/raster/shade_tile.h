@@ -7,9 +7,9 @@
 // with the same formulas.
 #pragma once
 
-#include "raster/bin.h"
 #include "raster/draw.h"
 #include "raster/tile_raster.h"
+#include "raster/tiny_fragment.h"
 
 #include <array>
 #include <cstdint>
@@ -34,10 +34,10 @@ struct TileScratch {
   }
 };
 
-// Draws the tile's `entries` (bin.h: records, which index `records`, and tiny triangles'
-// fragments, in submission order) into the tile `rect` without blending. Returns the fragments
-// that passed the depth test.
+// Draws `records` (the tile's, in submission order) and tiny triangles' `fragments` (each where
+// its count of records before it puts it) into the tile `rect` without blending. Returns the
+// fragments that passed the depth test.
 std::size_t drawOpaqueTile(const DrawTarget& target, std::span<const DrawRecord* const> records,
-                           std::span<const BinEntry> entries, const PixelRect& rect, TileScratch& scratch);
+                           std::span<const TinyFragment> fragments, const PixelRect& rect, TileScratch& scratch);
 
 }  // namespace illum

@@ -312,40 +312,42 @@ std::size_t RasterizeGouraud(const TriangleSetup& t, const PixelRect& tile, Real
   });
 }
 
-// Lane k of a tiny triangle's bounds, w pixels wide: column k mod w, row k / w, and twice its
-// offset in the tile from the bounds' first pixel (a fragment entry's tag, bin_entry.h).
+// Lane k of a tiny triangle's bounds, w pixels wide: column k mod w, row k / w, and its offset in
+// the tile from the bounds' first pixel.
 struct TinyLanes {
   float column[kTinyPixels + 1][kTinyPixels], row[kTinyPixels + 1][kTinyPixels];
-  std::uint32_t tag[kTinyPixels + 1][kTinyPixels];
+  std::uint32_t offset[kTinyPixels + 1][kTinyPixels];
 };
 constexpr TinyLanes MakeTinyLanes() {
   TinyLanes lanes{};
   for (int w = 1; w <= kTinyPixels; ++w)
     for (int k = 0; k < kTinyPixels; ++k) {
       lanes.column[w][k] = float(k % w), lanes.row[w][k] = float(k / w);
-      lanes.tag[w][k] = std::uint32_t((k / w) * kTileSize + k % w) << 1;
+      lanes.offset[w][k] = std::uint32_t((k / w) * kTileSize + k % w);
     }
   return lanes;
 }
 constexpr TinyLanes kTinyLanes = MakeTinyLanes();
 
-// A tiny triangle's covered pixels as fragment entries, coloured as RasterizeFlat (lit null) or
+// A tiny triangle's covered pixels as fragments, coloured as RasterizeFlat (lit null) or
 // RasterizeGouraud colour them, without a depth test. Its whole bounds are one or two vectors:
 // lane k is the pixel (k mod w, k / w) from the bottom-left one, whose edge values differ from
 // that pixel's by c·A + r·B (A = 256a, B = 256b): as in DepthPassTwoRows, exact in float inside
 // the bounds of a float-exact triangle, the lanes past the bounds masked. The covered lanes are
 // compressed and stored without a branch, so that the work of consecutive triangles overlaps.
 // Others (a long sliver whose bounds the viewport cut small) go pixel by pixel, to the same values.
-std::size_t CoverTiny(const TriangleSetup& t, const Color4* lit, std::uint32_t packed, BinEntry* out) {
+std::size_t CoverTiny(const TriangleSetup& t, const Color4* lit, std::uint32_t packed, std::uint32_t recordsBefore,
+                      TinyFragment* out) {
   const bool opaque = lit && Opaque(lit);
-  const std::uint32_t first = std::uint32_t((t.minY % kTileSize) * kTileSize + t.minX % kTileSize);
+  const std::uint32_t first =
+      TinyFragment::tagOf(recordsBefore, std::uint32_t((t.minY % kTileSize) * kTileSize + t.minX % kTileSize));
   std::size_t n = 0;
   if (sizeof(Real) != 4 || !t.floatExact || HWY_TARGET == HWY_SCALAR) {
     const hn::CappedTag<Real, 1> d1;
     VisitFewPixels(t, t.minX, t.maxX, t.minY, t.maxY, [&](int x, int y, Real l0, Real l1, Real l2, Real z) {
       const std::uint32_t c =
           lit ? hn::GetLane(GouraudPixels(t, lit, opaque, hn::Set(d1, l0), hn::Set(d1, l1), hn::Set(d1, l2))) : packed;
-      out[n++] = BinEntry::fragment(first + std::uint32_t((y - t.minY) * kTileSize + (x - t.minX)), z, c);
+      out[n++] = {first + std::uint32_t((y - t.minY) * kTileSize + (x - t.minX)), z, c};
     });
     return n;
   }
@@ -364,7 +366,7 @@ std::size_t CoverTiny(const TriangleSetup& t, const Color4* lit, std::uint32_t p
   }
   const VR invArea = hn::Set(dr, t.invArea), zero = hn::Zero(dr);
   const VR z0 = hn::Set(dr, t.z[0]), z1 = hn::Set(dr, t.z[1]), z2 = hn::Set(dr, t.z[2]);
-  const auto firstTag = hn::Set(du, first << 1 | 1);
+  const auto firstTag = hn::Set(du, first);
   const int lanes = int(hn::Lanes(dr));
   for (int k0 = 0; k0 < count; k0 += lanes) {
     const VR column = hn::LoadU(dr, kTinyLanes.column[w] + k0), row = hn::LoadU(dr, kTinyLanes.row[w] + k0);
@@ -375,7 +377,7 @@ std::size_t CoverTiny(const TriangleSetup& t, const Color4* lit, std::uint32_t p
     const VR l0 = E[0] * invArea, l1 = E[1] * invArea, l2 = E[2] * invArea;
     const VR z = l0 * z0 + l1 * z1 + l2 * z2;
     const auto color = lit ? GouraudPixels(t, lit, opaque, l0, l1, l2) : hn::Set(du, packed);
-    const auto tag = firstTag + hn::LoadU(du, kTinyLanes.tag[w] + k0);
+    const auto tag = firstTag + hn::LoadU(du, kTinyLanes.offset[w] + k0);
     const auto keep = hn::RebindMask(du, inside);
     hn::StoreInterleaved3(hn::Compress(tag, keep), hn::Compress(hn::BitCast(du, z), keep), hn::Compress(color, keep), du,
                           reinterpret_cast<std::uint32_t*>(out + n));
@@ -451,12 +453,12 @@ std::size_t rasterizeSurface(const TriangleSetup& t, const PixelRect& tile, Real
   return HWY_DYNAMIC_DISPATCH(RasterizeSurface)(t, tile, depth, v, out);
 }
 
-std::size_t coverTinyFlat(const TriangleSetup& t, std::uint32_t packed, BinEntry* out) {
-  return HWY_DYNAMIC_DISPATCH(CoverTiny)(t, nullptr, packed, out);
+std::size_t coverTinyFlat(const TriangleSetup& t, std::uint32_t packed, std::uint32_t recordsBefore, TinyFragment* out) {
+  return HWY_DYNAMIC_DISPATCH(CoverTiny)(t, nullptr, packed, recordsBefore, out);
 }
 
-std::size_t coverTinyGouraud(const TriangleSetup& t, const Color4* lit, BinEntry* out) {
-  return HWY_DYNAMIC_DISPATCH(CoverTiny)(t, lit, 0, out);
+std::size_t coverTinyGouraud(const TriangleSetup& t, const Color4* lit, std::uint32_t recordsBefore, TinyFragment* out) {
+  return HWY_DYNAMIC_DISPATCH(CoverTiny)(t, lit, 0, recordsBefore, out);
 }
 
 }  // namespace illum

@@ -4,9 +4,9 @@
 // bit for bit as the scalar rasterizer (rasterize.h) computes them.
 #pragma once
 
-#include "raster/bin_entry.h"
 #include "raster/framebuffer.h"
 #include "raster/rasterize.h"
+#include "raster/tiny_fragment.h"
 
 #include <illum/lighting.h>
 
@@ -26,11 +26,11 @@ std::size_t rasterizeDepth(const TriangleSetup& t, const PixelRect& tile, Real* 
                            std::uint32_t* winners);
 
 // A tiny triangle (isTiny: a few pixels, all in one tile) is coloured as soon as it is set up,
-// without a record: coverTiny* write its covered pixels as fragment entries of its tile (bin.h),
-// with depths and RGBA8 colours exactly as rasterizeFlat (`packed`) or rasterizeGouraud would
-// write them, to be depth-tested later. `out` must have room for kTinyRoom entries (whole vectors
-// are stored); they return how many they wrote (at most kTinyPixels), in rows from the bottom.
-// Float channels only.
+// without a record: coverTiny* write its covered pixels as fragments of its tile (bin.h), with
+// depths and RGBA8 colours exactly as rasterizeFlat (`packed`) or rasterizeGouraud would write
+// them, to be depth-tested later, each tagged with `recordsBefore`. `out` must have room for
+// kTinyRoom fragments (whole vectors are stored); they return how many they wrote (at most
+// kTinyPixels), in rows from the bottom. Float channels only.
 constexpr int kTinyPixels = 8;
 constexpr std::size_t kTinyRoom = 32;
 inline bool isTiny(const TriangleSetup& t) {
@@ -49,8 +49,8 @@ std::size_t rasterizeFlat(const TriangleSetup& t, const PixelRect& tile, Real* d
 std::size_t rasterizeGouraud(const TriangleSetup& t, const PixelRect& tile, Real* depth, std::uint32_t* color,
                              std::uint32_t* winners, const Color4* lit);
 
-std::size_t coverTinyFlat(const TriangleSetup& t, std::uint32_t packed, BinEntry* out);
-std::size_t coverTinyGouraud(const TriangleSetup& t, const Color4* lit, BinEntry* out);
+std::size_t coverTinyFlat(const TriangleSetup& t, std::uint32_t packed, std::uint32_t recordsBefore, TinyFragment* out);
+std::size_t coverTinyGouraud(const TriangleSetup& t, const Color4* lit, std::uint32_t recordsBefore, TinyFragment* out);
 
 // Phong shading's first pass: the visible surface of one tile, kept as planes in the tile's
 // layout (kTileBlock values each), to be lit once per pixel afterwards (shadeSurfaces).
