@@ -9,8 +9,10 @@ void TileBins::reset(int width, int height) {
   height_ = height;
   tilesX_ = (width + kTileSize - 1) / kTileSize;
   tilesY_ = (height + kTileSize - 1) / kTileSize;
-  tiles_.resize(std::size_t(tilesX_) * std::size_t(tilesY_));
-  clear();
+  recordCount_.assign(std::size_t(tileCount()), 0);
+  recordTiles_.clear();
+  fragmentCount_ = 0;
+  fragmentTiles_.clear();
 }
 
 PixelRect TileBins::tileRect(int tile) const {
@@ -21,20 +23,41 @@ PixelRect TileBins::tileRect(int tile) const {
 
 void TileBins::addRecord(const TriangleSetup& t, std::uint32_t index) {
   for (int ty = t.minY / kTileSize; ty <= t.maxY / kTileSize; ++ty)
-    for (int tx = t.minX / kTileSize; tx <= t.maxX / kTileSize; ++tx)
-      tiles_[std::size_t(ty * tilesX_ + tx)].records.push_back(index);
+    for (int tx = t.minX / kTileSize; tx <= t.maxX / kTileSize; ++tx) {
+      const auto tile = std::uint32_t(ty * tilesX_ + tx);
+      recordTiles_.emplace_back(tile, index);
+      ++recordCount_[tile];
+    }
 }
 
-void FragmentList::grow(std::size_t least) {
-  const std::size_t capacity = std::max(least, 2 * capacity_);
+void TileBins::growFragments(std::size_t least) {
+  const std::size_t capacity = std::max(least, 2 * fragmentCapacity_);
   std::unique_ptr<TinyFragment[]> grown(new TinyFragment[capacity]);
-  std::copy(begin(), end(), grown.get());
-  data_ = std::move(grown);
-  capacity_ = capacity;
+  std::copy(fragments_.get(), fragments_.get() + fragmentCount_, grown.get());
+  fragments_ = std::move(grown);
+  fragmentCapacity_ = capacity;
 }
 
-void TileBins::clear() {
-  for (Tile& t : tiles_) t.records.clear(), t.fragments.clear();
+void TileBins::finish() {
+  const std::size_t tiles = std::size_t(tileCount());
+  // Records: the counts are known; starts by prefix sum, then each pair to its place.
+  recordStart_.resize(tiles);
+  std::uint32_t at = 0;
+  for (std::size_t t = 0; t < tiles; ++t) recordStart_[t] = at, at += recordCount_[t];
+  sortedRecords_.resize(recordTiles_.size());
+  std::vector<std::uint32_t>& next = recordCount_;  // reused as cursors, then restored
+  for (std::size_t t = 0; t < tiles; ++t) next[t] = recordStart_[t];
+  for (const auto& [tile, index] : recordTiles_) sortedRecords_[next[tile]++] = index;
+  for (std::size_t t = 0; t < tiles; ++t) next[t] -= recordStart_[t];
+  // Fragments: counted, then placed the same way.
+  fragmentStart_.assign(tiles + 1, 0);
+  for (std::uint32_t tile : fragmentTiles_) ++fragmentStart_[tile + 1];
+  for (std::size_t t = 0; t < tiles; ++t) fragmentStart_[t + 1] += fragmentStart_[t];
+  sortedFragments_.resize(fragmentCount_);
+  for (std::size_t i = 0; i < fragmentCount_; ++i) sortedFragments_[fragmentStart_[fragmentTiles_[i]]++] = fragments_[i];
+  // Each start was moved to its end: shift back by one tile.
+  for (std::size_t t = tiles; t > 0; --t) fragmentStart_[t] = fragmentStart_[t - 1];
+  fragmentStart_[0] = 0;
 }
 
 }  // namespace illum

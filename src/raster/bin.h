@@ -1,8 +1,10 @@
 // Bin stage: what touches which 64×64 tile, in submission order, so that each tile can be drawn
 // by one thread at a time (llvmpipe's scheme): no locks on the framebuffer, and every pixel sees
-// its fragments in the order GL would draw them. A tile's list holds its records (by index in
-// their chunk's arena, draw_record.h) and, apart, the fragments of tiny triangles coloured at
-// setup, each knowing how many of the tile's records came before it (tiny_fragment.h).
+// its fragments in the order GL would draw them. One chunk's bins hold, per tile, its records (by
+// index in the chunk's arena, draw_record.h) and, apart, the fragments of tiny triangles coloured
+// at setup, each knowing how many of the tile's records came before it (tiny_fragment.h).
+// Everything is appended in submission order and sorted by tile once the chunk is set up (a
+// stable counting sort), so a chunk's memory is its own content, whichever tiles it touched.
 #pragma once
 
 #include "raster/framebuffer.h"
@@ -12,54 +14,59 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <vector>
 
 namespace illum {
 
-// Fragments in one growable block that can hand out room for a few before they are counted (a
-// tiny triangle's fragments are stored whole vectors at a time).
-class FragmentList {
- public:
-  void clear() { size_ = 0; }
-  std::size_t size() const { return size_; }
-  const TinyFragment* begin() const { return data_.get(); }
-  const TinyFragment* end() const { return data_.get() + size_; }
-  // Room for `n` fragments after the last; commit(k) then counts the first k of them.
-  TinyFragment* room(std::size_t n) {
-    if (size_ + n > capacity_) grow(size_ + n);
-    return data_.get() + size_;
-  }
-  void commit(std::size_t k) { size_ += k; }
-
- private:
-  void grow(std::size_t least);
-  std::unique_ptr<TinyFragment[]> data_;
-  std::size_t size_ = 0, capacity_ = 0;
-};
-
 class TileBins {
  public:
-  struct Tile {
-    std::vector<std::uint32_t> records;  // indices into the chunk's arena
-    FragmentList fragments;
-  };
-
   TileBins() = default;
   // Tiles for a width × height viewport, all empty (their memory kept).
   void reset(int width, int height);
 
   int tileCount() const { return tilesX_ * tilesY_; }
   PixelRect tileRect(int tile) const;
+  int tileOf(int x, int y) const { return (y / kTileSize) * tilesX_ + x / kTileSize; }
+
   // Appends record `index` (whose triangle is `t`) to every tile its pixel bounding box overlaps.
   void addRecord(const TriangleSetup& t, std::uint32_t index);
-  // The tile that holds the pixel (x, y).
-  Tile& tileAt(int x, int y) { return tiles_[std::size_t((y / kTileSize) * tilesX_ + x / kTileSize)]; }
-  const Tile& tile(int index) const { return tiles_[std::size_t(index)]; }
-  void clear();
+  // How many records `tile` has so far.
+  std::uint32_t recordsIn(int tile) const { return recordCount_[std::size_t(tile)]; }
+  // Room for `n` fragments after the last; commitFragments(k, tile) then appends the first k of
+  // them to `tile`.
+  TinyFragment* fragmentRoom(std::size_t n) {
+    if (fragmentCount_ + n > fragmentCapacity_) growFragments(fragmentCount_ + n);
+    return fragments_.get() + fragmentCount_;
+  }
+  void commitFragments(std::size_t k, int tile) {
+    fragmentCount_ += k;
+    fragmentTiles_.insert(fragmentTiles_.end(), k, std::uint32_t(tile));
+  }
+
+  // Sorts what was appended by tile; then records(tile) and fragments(tile) hold it.
+  void finish();
+  std::span<const std::uint32_t> records(int tile) const {
+    return std::span(sortedRecords_).subspan(recordStart_[std::size_t(tile)], recordCount_[std::size_t(tile)]);
+  }
+  std::span<const TinyFragment> fragments(int tile) const {
+    return std::span(sortedFragments_).subspan(fragmentStart_[std::size_t(tile)],
+                                               fragmentStart_[std::size_t(tile) + 1] - fragmentStart_[std::size_t(tile)]);
+  }
 
  private:
+  void growFragments(std::size_t least);
+
   int width_ = 0, height_ = 0, tilesX_ = 0, tilesY_ = 0;
-  std::vector<Tile> tiles_;
+  // As appended: (tile, record) pairs, and fragments with their tiles.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> recordTiles_;
+  std::unique_ptr<TinyFragment[]> fragments_;
+  std::size_t fragmentCount_ = 0, fragmentCapacity_ = 0;
+  std::vector<std::uint32_t> fragmentTiles_;
+  // Sorted by tile: per tile, where its entries start (fragments: and end, at tile + 1).
+  std::vector<std::uint32_t> recordCount_, recordStart_, sortedRecords_;
+  std::vector<std::uint32_t> fragmentStart_;
+  std::vector<TinyFragment> sortedFragments_;
 };
 
 }  // namespace illum

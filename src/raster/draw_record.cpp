@@ -87,16 +87,18 @@ std::size_t setupTriangles(const FrameContext& frame, const Object& object, std:
       const ShadedVertex* ordered[3] = {&v0, r.setup.swapped ? &v2 : &v1, r.setup.swapped ? &v1 : &v2};
 #if !ILLUM_USE_DOUBLE
       if (tinyColored && isTiny(r.setup)) {
-        TileBins::Tile& tile = binning->bins.tileAt(r.setup.minX, r.setup.minY);
-        TinyFragment* room = tile.fragments.room(kTinyRoom);
-        const auto before = std::uint32_t(tile.records.size());
+        TileBins& bins = binning->bins;
+        const int tile = bins.tileOf(r.setup.minX, r.setup.minY);
+        TinyFragment* room = bins.fragmentRoom(kTinyRoom);
+        std::size_t n;
         if (frame.shading == Shading::Flat) {
-          tile.fragments.commit(coverTinyFlat(r.setup, packUnorm8(back ? c.back : c.front), before, room));
+          n = coverTinyFlat(r.setup, packUnorm8(back ? c.back : c.front), bins.recordsIn(tile), room);
         } else {
           const Color4 lit[3] = {back ? ordered[0]->back : ordered[0]->front, back ? ordered[1]->back : ordered[1]->front,
                                  back ? ordered[2]->back : ordered[2]->front};
-          tile.fragments.commit(coverTinyGouraud(r.setup, lit, before, room));
+          n = coverTinyGouraud(r.setup, lit, bins.recordsIn(tile), room);
         }
+        bins.commitFragments(n, tile);
         out.drop();
         return;
       }

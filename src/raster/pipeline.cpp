@@ -94,6 +94,7 @@ class BinnedFrame {
         const SetupBinning binning{chunk.bins, target_.tinyColored[index] != 0};
         chunk.drawn = setupTriangles(frame_, object, index, vertices, c * kTriangleChunk,
                                      std::min(triangles, (c + 1) * kTriangleChunk), chunk.records, &binning);
+        chunk.bins.finish();
        }
       }, tbb::static_partitioner());
       for (std::size_t c = c0; c < c1; ++c) {
@@ -127,12 +128,11 @@ class BinnedFrame {
     list.fragments.clear();
     for (std::size_t c = 0; c < used_; ++c) {
       const Renderer::State::Chunk& chunk = s_.pool[c];
-      const TileBins::Tile& part = chunk.bins.tile(tile);
       // (A batch holds far fewer records than a fragment's tag can count: kBatchRecords plus a slice.)
       const auto before = std::uint32_t(list.records.size());
-      for (const TinyFragment& f : part.fragments)
+      for (const TinyFragment& f : chunk.bins.fragments(tile))
         list.fragments.push_back({f.tag + (before << TinyFragment::kPixelBits), f.z, f.color});
-      for (std::uint32_t index : part.records) list.records.push_back(&chunk.records[index]);
+      for (std::uint32_t index : chunk.bins.records(tile)) list.records.push_back(&chunk.records[index]);
     }
     if (list.records.empty() && list.fragments.empty()) return;
     const PixelRect rect = tiles_.tileRect(tile);
