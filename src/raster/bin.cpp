@@ -12,7 +12,7 @@ void TileBins::reset(int width, int height) {
   recordCount_.assign(std::size_t(tileCount()), 0);
   recordTiles_.clear();
   fragmentCount_ = 0;
-  fragmentTiles_.clear();
+  runs_.clear();
 }
 
 PixelRect TileBins::tileRect(int tile) const {
@@ -49,15 +49,15 @@ void TileBins::finish() {
   for (std::size_t t = 0; t < tiles; ++t) next[t] = recordStart_[t];
   for (const auto& [tile, index] : recordTiles_) sortedRecords_[next[tile]++] = index;
   for (std::size_t t = 0; t < tiles; ++t) next[t] -= recordStart_[t];
-  // Fragments: counted, then placed the same way.
-  fragmentStart_.assign(tiles + 1, 0);
-  for (std::uint32_t tile : fragmentTiles_) ++fragmentStart_[tile + 1];
-  for (std::size_t t = 0; t < tiles; ++t) fragmentStart_[t + 1] += fragmentStart_[t];
-  sortedFragments_.resize(fragmentCount_);
-  for (std::size_t i = 0; i < fragmentCount_; ++i) sortedFragments_[fragmentStart_[fragmentTiles_[i]]++] = fragments_[i];
+  // Runs of fragments: counted, then placed the same way.
+  runStart_.assign(tiles + 1, 0);
+  for (const Run& r : runs_) ++runStart_[r.tile + 1];
+  for (std::size_t t = 0; t < tiles; ++t) runStart_[t + 1] += runStart_[t];
+  sortedRuns_.resize(runs_.size());
+  for (const Run& r : runs_) sortedRuns_[runStart_[r.tile]++] = r;
   // Each start was moved to its end: shift back by one tile.
-  for (std::size_t t = tiles; t > 0; --t) fragmentStart_[t] = fragmentStart_[t - 1];
-  fragmentStart_[0] = 0;
+  for (std::size_t t = tiles; t > 0; --t) runStart_[t] = runStart_[t - 1];
+  runStart_[0] = 0;
 }
 
 }  // namespace illum

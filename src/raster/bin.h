@@ -4,7 +4,9 @@
 // index in the chunk's arena, draw_record.h) and, apart, the fragments of tiny triangles coloured
 // at setup, each knowing how many of the tile's records came before it (tiny_fragment.h).
 // Everything is appended in submission order and sorted by tile once the chunk is set up (a
-// stable counting sort), so a chunk's memory is its own content, whichever tiles it touched.
+// stable counting sort; fragments stay where they are, only their runs, one per stretch of
+// consecutive fragments of one tile, are sorted), so a chunk's memory is its own content,
+// whichever tiles it touched.
 #pragma once
 
 #include "raster/framebuffer.h"
@@ -40,8 +42,10 @@ class TileBins {
     return fragments_.get() + fragmentCount_;
   }
   void commitFragments(std::size_t k, int tile) {
+    if (k == 0) return;
+    if (!runs_.empty() && runs_.back().tile == std::uint32_t(tile)) runs_.back().count += std::uint32_t(k);
+    else runs_.push_back({std::uint32_t(tile), std::uint32_t(fragmentCount_), std::uint32_t(k)});
     fragmentCount_ += k;
-    fragmentTiles_.insert(fragmentTiles_.end(), k, std::uint32_t(tile));
   }
 
   // Sorts what was appended by tile; then records(tile) and fragments(tile) hold it.
@@ -49,24 +53,32 @@ class TileBins {
   std::span<const std::uint32_t> records(int tile) const {
     return std::span(sortedRecords_).subspan(recordStart_[std::size_t(tile)], recordCount_[std::size_t(tile)]);
   }
-  std::span<const TinyFragment> fragments(int tile) const {
-    return std::span(sortedFragments_).subspan(fragmentStart_[std::size_t(tile)],
-                                               fragmentStart_[std::size_t(tile) + 1] - fragmentStart_[std::size_t(tile)]);
+  // f(fragment) for each of the tile's fragments, in order.
+  template <class F>
+  void forEachFragment(int tile, F&& f) const {
+    for (std::uint32_t r = runStart_[std::size_t(tile)]; r < runStart_[std::size_t(tile) + 1]; ++r) {
+      const TinyFragment* first = fragments_.get() + sortedRuns_[r].first;
+      for (std::uint32_t k = 0; k < sortedRuns_[r].count; ++k) f(first[k]);
+    }
   }
 
  private:
   void growFragments(std::size_t least);
 
   int width_ = 0, height_ = 0, tilesX_ = 0, tilesY_ = 0;
-  // As appended: (tile, record) pairs, and fragments with their tiles.
+  // As appended: (tile, record) pairs, and fragments in runs of one tile.
+  struct Run {
+    std::uint32_t tile, first, count;
+  };
   std::vector<std::pair<std::uint32_t, std::uint32_t>> recordTiles_;
   std::unique_ptr<TinyFragment[]> fragments_;
   std::size_t fragmentCount_ = 0, fragmentCapacity_ = 0;
-  std::vector<std::uint32_t> fragmentTiles_;
-  // Sorted by tile: per tile, where its entries start (fragments: and end, at tile + 1).
+  std::vector<Run> runs_;
+  // Sorted by tile: per tile, where its records start, and where its runs start (and end, at
+  // tile + 1).
   std::vector<std::uint32_t> recordCount_, recordStart_, sortedRecords_;
-  std::vector<std::uint32_t> fragmentStart_;
-  std::vector<TinyFragment> sortedFragments_;
+  std::vector<std::uint32_t> runStart_;
+  std::vector<Run> sortedRuns_;
 };
 
 }  // namespace illum

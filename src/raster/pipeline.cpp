@@ -130,8 +130,9 @@ class BinnedFrame {
       const Renderer::State::Chunk& chunk = s_.pool[c];
       // (A batch holds far fewer records than a fragment's tag can count: kBatchRecords plus a slice.)
       const auto before = std::uint32_t(list.records.size());
-      for (const TinyFragment& f : chunk.bins.fragments(tile))
+      chunk.bins.forEachFragment(tile, [&](const TinyFragment& f) {
         list.fragments.push_back({f.tag + (before << TinyFragment::kPixelBits), f.z, f.color});
+      });
       for (std::uint32_t index : chunk.bins.records(tile)) list.records.push_back(&chunk.records[index]);
     }
     if (list.records.empty() && list.fragments.empty()) return;
