@@ -11,8 +11,8 @@ void TileBins::reset(int width, int height) {
   tilesY_ = (height + kTileSize - 1) / kTileSize;
   recordCount_.assign(std::size_t(tileCount()), 0);
   recordTiles_.clear();
-  fragmentCount_ = 0;
-  runs_.clear();
+  fragments.clear();
+  surfaces.clear();
 }
 
 PixelRect TileBins::tileRect(int tile) const {
@@ -30,14 +30,6 @@ void TileBins::addRecord(const TriangleSetup& t, std::uint32_t index) {
     }
 }
 
-void TileBins::growFragments(std::size_t least) {
-  const std::size_t capacity = std::max(least, 2 * fragmentCapacity_);
-  std::unique_ptr<TinyFragment[]> grown(new TinyFragment[capacity]);
-  std::copy(fragments_.get(), fragments_.get() + fragmentCount_, grown.get());
-  fragments_ = std::move(grown);
-  fragmentCapacity_ = capacity;
-}
-
 void TileBins::finish() {
   const std::size_t tiles = std::size_t(tileCount());
   // Records: the counts are known; starts by prefix sum, then each pair to its place.
@@ -49,15 +41,8 @@ void TileBins::finish() {
   for (std::size_t t = 0; t < tiles; ++t) next[t] = recordStart_[t];
   for (const auto& [tile, index] : recordTiles_) sortedRecords_[next[tile]++] = index;
   for (std::size_t t = 0; t < tiles; ++t) next[t] -= recordStart_[t];
-  // Runs of fragments: counted, then placed the same way.
-  runStart_.assign(tiles + 1, 0);
-  for (const Run& r : runs_) ++runStart_[r.tile + 1];
-  for (std::size_t t = 0; t < tiles; ++t) runStart_[t + 1] += runStart_[t];
-  sortedRuns_.resize(runs_.size());
-  for (const Run& r : runs_) sortedRuns_[runStart_[r.tile]++] = r;
-  // Each start was moved to its end: shift back by one tile.
-  for (std::size_t t = tiles; t > 0; --t) runStart_[t] = runStart_[t - 1];
-  runStart_[0] = 0;
+  fragments.finish(tiles);
+  surfaces.finish(tiles);
 }
 
 }  // namespace illum

@@ -1,11 +1,11 @@
 // Bin stage: what touches which 64×64 tile, in submission order, so that each tile can be drawn
 // by one thread at a time (llvmpipe's scheme): no locks on the framebuffer, and every pixel sees
 // its fragments in the order GL would draw them. One chunk's bins hold, per tile, its records (by
-// index in the chunk's arena, draw_record.h) and, apart, the fragments of tiny triangles coloured
+// index in the chunk's arena, draw_record.h) and, apart, the pixels of tiny triangles worked out
 // at setup, each knowing how many of the tile's records came before it (tiny_fragment.h).
 // Everything is appended in submission order and sorted by tile once the chunk is set up (a
-// stable counting sort; fragments stay where they are, only their runs, one per stretch of
-// consecutive fragments of one tile, are sorted), so a chunk's memory is its own content,
+// stable counting sort; tiny pixels stay where they are, only their runs, one per stretch of
+// consecutive pixels of one tile, are sorted), so a chunk's memory is its own content,
 // whichever tiles it touched.
 #pragma once
 
@@ -13,6 +13,7 @@
 #include "raster/rasterize.h"
 #include "raster/tiny_fragment.h"
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -20,6 +21,59 @@
 #include <vector>
 
 namespace illum {
+
+// One chunk's tiny pixels of one kind, in runs of one tile.
+template <class Pixel>
+class TinyRuns {
+ public:
+  void clear() { count_ = 0, runs_.clear(); }
+  // Room for `n` pixels after the last; commit(k, tile) then appends the first k of them to `tile`.
+  Pixel* room(std::size_t n) {
+    if (count_ + n > capacity_) grow(count_ + n);
+    return pixels_.get() + count_;
+  }
+  void commit(std::size_t k, int tile) {
+    if (k == 0) return;
+    if (!runs_.empty() && runs_.back().tile == std::uint32_t(tile)) runs_.back().count += std::uint32_t(k);
+    else runs_.push_back({std::uint32_t(tile), std::uint32_t(count_), std::uint32_t(k)});
+    count_ += k;
+  }
+  // Sorts the runs by tile (of `tiles`).
+  void finish(std::size_t tiles) {
+    start_.assign(tiles + 1, 0);
+    for (const Run& r : runs_) ++start_[r.tile + 1];
+    for (std::size_t t = 0; t < tiles; ++t) start_[t + 1] += start_[t];
+    sorted_.resize(runs_.size());
+    for (const Run& r : runs_) sorted_[start_[r.tile]++] = r;
+    // Each start was moved to its end: shift back by one tile.
+    for (std::size_t t = tiles; t > 0; --t) start_[t] = start_[t - 1];
+    start_[0] = 0;
+  }
+  // f(pixel) for each of the tile's pixels, in order.
+  template <class F>
+  void forEach(int tile, F&& f) const {
+    for (std::uint32_t r = start_[std::size_t(tile)]; r < start_[std::size_t(tile) + 1]; ++r) {
+      const Pixel* first = pixels_.get() + sorted_[r].first;
+      for (std::uint32_t k = 0; k < sorted_[r].count; ++k) f(first[k]);
+    }
+  }
+
+ private:
+  struct Run {
+    std::uint32_t tile, first, count;
+  };
+  void grow(std::size_t least) {
+    const std::size_t capacity = std::max(least, 2 * capacity_);
+    std::unique_ptr<Pixel[]> grown(new Pixel[capacity]);
+    std::copy(pixels_.get(), pixels_.get() + count_, grown.get());
+    pixels_ = std::move(grown);
+    capacity_ = capacity;
+  }
+  std::unique_ptr<Pixel[]> pixels_;
+  std::size_t count_ = 0, capacity_ = 0;
+  std::vector<Run> runs_, sorted_;
+  std::vector<std::uint32_t> start_;  // per tile, its first sorted run (and its end at tile + 1)
+};
 
 class TileBins {
  public:
@@ -35,50 +89,21 @@ class TileBins {
   void addRecord(const TriangleSetup& t, std::uint32_t index);
   // How many records `tile` has so far.
   std::uint32_t recordsIn(int tile) const { return recordCount_[std::size_t(tile)]; }
-  // Room for `n` fragments after the last; commitFragments(k, tile) then appends the first k of
-  // them to `tile`.
-  TinyFragment* fragmentRoom(std::size_t n) {
-    if (fragmentCount_ + n > fragmentCapacity_) growFragments(fragmentCount_ + n);
-    return fragments_.get() + fragmentCount_;
-  }
-  void commitFragments(std::size_t k, int tile) {
-    if (k == 0) return;
-    if (!runs_.empty() && runs_.back().tile == std::uint32_t(tile)) runs_.back().count += std::uint32_t(k);
-    else runs_.push_back({std::uint32_t(tile), std::uint32_t(fragmentCount_), std::uint32_t(k)});
-    fragmentCount_ += k;
-  }
+  // Tiny triangles' pixels: coloured (flat, Gouraud) or surfaces (Phong).
+  TinyRuns<TinyFragment> fragments;
+  TinyRuns<TinySurface> surfaces;
 
-  // Sorts what was appended by tile; then records(tile) and fragments(tile) hold it.
+  // Sorts what was appended by tile; then records(tile) and the tiny pixels' forEach hold it.
   void finish();
   std::span<const std::uint32_t> records(int tile) const {
     return std::span(sortedRecords_).subspan(recordStart_[std::size_t(tile)], recordCount_[std::size_t(tile)]);
   }
-  // f(fragment) for each of the tile's fragments, in order.
-  template <class F>
-  void forEachFragment(int tile, F&& f) const {
-    for (std::uint32_t r = runStart_[std::size_t(tile)]; r < runStart_[std::size_t(tile) + 1]; ++r) {
-      const TinyFragment* first = fragments_.get() + sortedRuns_[r].first;
-      for (std::uint32_t k = 0; k < sortedRuns_[r].count; ++k) f(first[k]);
-    }
-  }
 
  private:
-  void growFragments(std::size_t least);
-
   int width_ = 0, height_ = 0, tilesX_ = 0, tilesY_ = 0;
-  // As appended: (tile, record) pairs, and fragments in runs of one tile.
-  struct Run {
-    std::uint32_t tile, first, count;
-  };
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> recordTiles_;
-  std::unique_ptr<TinyFragment[]> fragments_;
-  std::size_t fragmentCount_ = 0, fragmentCapacity_ = 0;
-  std::vector<Run> runs_;
-  // Sorted by tile: per tile, where its records start, and where its runs start (and end, at
-  // tile + 1).
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> recordTiles_;  // (tile, record), as appended
+  // Sorted by tile: per tile, where its records start.
   std::vector<std::uint32_t> recordCount_, recordStart_, sortedRecords_;
-  std::vector<std::uint32_t> runStart_;
-  std::vector<Run> sortedRuns_;
 };
 
 }  // namespace illum

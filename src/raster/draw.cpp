@@ -25,7 +25,10 @@ DrawTarget::DrawTarget(const FrameContext& frame, const Scene& scene, Framebuffe
     colored.push_back(!o.mesh->colors.empty());
     translucent.push_back(frame.blend && isTranslucent(o));
     if (drawnTexture(o) || mapsDrawn(frame, o)) litFromSurface = false;
-    tinyColored.push_back(colorsInDepthPass && !translucent.back() && !drawnTexture(o));
+  }
+  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+    const Object& o = scene.objects[i];
+    tiny.push_back(!translucent[i] && ((colorsInDepthPass && !drawnTexture(o)) || (litFromSurface && !colored[i])));
   }
 }
 

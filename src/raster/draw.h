@@ -66,10 +66,12 @@ struct DrawTarget {
   std::vector<std::uint8_t> translucent;
   ShadedPixelCache* shadedPixels = nullptr;  // multisampling: colours of earlier passes (Phong)
   // Flat and Gouraud pixels coloured in the depth pass itself (tile_raster.h): float channels, one
-  // sample, no watched pixel. Then, per object (opaque, untextured): its tiny triangles coloured
-  // at setup, without records.
+  // sample, no watched pixel.
   bool colorsInDepthPass = false;
-  std::vector<std::uint8_t> tinyColored;
+  // Per object: its tiny triangles worked out at setup, without records (tile_raster.h): coloured
+  // when colorsInDepthPass (opaque, untextured objects), or as visible surface when litFromSurface
+  // (opaque objects without vertex colours).
+  std::vector<std::uint8_t> tiny;
 
   DrawTarget(const FrameContext& frame, const Scene& scene, Framebuffer& fb, PixelProbe* probe);
   const AttributeLayout& layout(const DrawRecord& r) const { return layouts[r.object]; }

@@ -67,7 +67,7 @@ std::size_t setupTriangles(const FrameContext& frame, const Object& object, std:
   std::size_t drawn = 0;
   const AttributeLayout& layout = out.layout();
   const auto& indices = object.mesh->indices;
-  [[maybe_unused]] const bool tinyColored = binning && binning->tinyColored;
+  [[maybe_unused]] const bool tiny = binning && binning->tiny;
   ClippedPolygon polygon;
   for (std::size_t t = first; t < last; ++t) {
     const std::size_t i = 3 * t;
@@ -86,19 +86,24 @@ std::size_t setupTriangles(const FrameContext& frame, const Object& object, std:
       // Counter-clockwise on screen: setup swapped the last two when the triangle came clockwise.
       const ShadedVertex* ordered[3] = {&v0, r.setup.swapped ? &v2 : &v1, r.setup.swapped ? &v1 : &v2};
 #if !ILLUM_USE_DOUBLE
-      if (tinyColored && isTiny(r.setup)) {
+      if (tiny && isTiny(r.setup)) {
         TileBins& bins = binning->bins;
         const int tile = bins.tileOf(r.setup.minX, r.setup.minY);
-        TinyFragment* room = bins.fragmentRoom(kTinyRoom);
-        std::size_t n;
-        if (frame.shading == Shading::Flat) {
-          n = coverTinyFlat(r.setup, packUnorm8(back ? c.back : c.front), bins.recordsIn(tile), room);
+        if (frame.shading == Shading::Phong) {
+          SurfaceVertices s;
+          for (int k = 0; k < 3; ++k) s.position[k] = ordered[k]->eyePosition, s.normal[k] = ordered[k]->eyeNormal;
+          s.negate = frame.lightModel.twoSided && !r.setup.frontFacing;
+          s.owner = objectIndex;
+          bins.surfaces.commit(coverTinySurface(r.setup, s, bins.recordsIn(tile), bins.surfaces.room(kTinyRoom)), tile);
+        } else if (frame.shading == Shading::Flat) {
+          bins.fragments.commit(coverTinyFlat(r.setup, packUnorm8(back ? c.back : c.front), bins.recordsIn(tile),
+                                              bins.fragments.room(kTinyRoom)),
+                                tile);
         } else {
           const Color4 lit[3] = {back ? ordered[0]->back : ordered[0]->front, back ? ordered[1]->back : ordered[1]->front,
                                  back ? ordered[2]->back : ordered[2]->front};
-          n = coverTinyGouraud(r.setup, lit, bins.recordsIn(tile), room);
+          bins.fragments.commit(coverTinyGouraud(r.setup, lit, bins.recordsIn(tile), bins.fragments.room(kTinyRoom)), tile);
         }
-        bins.commitFragments(n, tile);
         out.drop();
         return;
       }

@@ -92,12 +92,12 @@ class RecordArena {
 };
 
 // How the binned pipeline takes a chunk's output: each record binned to the tiles it touches as
-// soon as it is set up and, with `tinyColored` (the object's flat or Gouraud pixels are coloured
-// in the depth pass: DrawTarget::tinyColored), each tiny triangle (isTiny) coloured at once into
-// fragments binned by pixel, instead of becoming a record.
+// soon as it is set up and, with `tiny` (DrawTarget::tiny), each tiny triangle (isTiny) worked out
+// at once into pixels of its tile (coloured, or for Phong shading the visible surface) instead
+// of becoming a record.
 struct SetupBinning {
   TileBins& bins;
-  bool tinyColored = false;
+  bool tiny = false;
 };
 
 // Clips and sets up triangles [first, last) of `object` (its vertices already through the vertex

@@ -44,11 +44,12 @@ struct Renderer::State {
     std::size_t drawn = 0;  // pieces drawn: records and tiny triangles
   };
   std::vector<Chunk> pool;
-  // One tile's lists, gathered from the chunks: its records, and its tiny triangles' fragments,
+  // One tile's lists, gathered from the chunks: its records, and its tiny triangles' pixels,
   // each counting the records before it in `records`.
   struct TileList {
     std::vector<const DrawRecord*> records;
     std::vector<TinyFragment> fragments;
+    std::vector<TinySurface> surfaces;
   };
   tbb::enumerable_thread_specific<TileList> tileLists;
   tbb::affinity_partitioner tileAffinity;
@@ -91,7 +92,7 @@ class BinnedFrame {
         Renderer::State::Chunk& chunk = s_.pool[used_ + (c - c0)];
         chunk.records.reset(target_.layouts[index]);
         chunk.bins.reset(frame_.width, frame_.height);
-        const SetupBinning binning{chunk.bins, target_.tinyColored[index] != 0};
+        const SetupBinning binning{chunk.bins, target_.tiny[index] != 0};
         chunk.drawn = setupTriangles(frame_, object, index, vertices, c * kTriangleChunk,
                                      std::min(triangles, (c + 1) * kTriangleChunk), chunk.records, &binning);
         chunk.bins.finish();
@@ -126,16 +127,24 @@ class BinnedFrame {
     auto& list = s_.tileLists.local();
     list.records.clear();
     list.fragments.clear();
+    list.surfaces.clear();
     for (std::size_t c = 0; c < used_; ++c) {
       const Renderer::State::Chunk& chunk = s_.pool[c];
       // (A batch holds far fewer records than a fragment's tag can count: kBatchRecords plus a slice.)
       const auto before = std::uint32_t(list.records.size());
-      chunk.bins.forEachFragment(tile, [&](const TinyFragment& f) {
-        list.fragments.push_back({f.tag + (before << TinyFragment::kPixelBits), f.z, f.color});
+      const std::uint32_t shift = before << TinyTag::kPixelBits;
+      chunk.bins.fragments.forEach(tile, [&](TinyFragment f) {
+        f.tag += shift;
+        list.fragments.push_back(f);
+      });
+      chunk.bins.surfaces.forEach(tile, [&](TinySurface f) {
+        f.tag += shift;
+        list.surfaces.push_back(f);
       });
       for (std::uint32_t index : chunk.bins.records(tile)) list.records.push_back(&chunk.records[index]);
     }
-    if (list.records.empty() && list.fragments.empty()) return;
+    const TinyPixels tiny{list.fragments, list.surfaces};
+    if (list.records.empty() && tiny.empty()) return;
     const PixelRect rect = tiles_.tileRect(tile);
     s_.fb.clearTile(rect.minX, rect.minY);
     std::size_t& fragments = s_.tileFragments[std::size_t(tile)];
@@ -144,8 +153,8 @@ class BinnedFrame {
     // are all opaque).
     std::size_t opaque = 0;
     while (opaque < list.records.size() && !target_.blends(*list.records[opaque])) ++opaque;
-    if (opaque > 0 || !list.fragments.empty())
-      fragments += drawOpaqueTile(target_, std::span(list.records).first(opaque), list.fragments, rect, s_.scratch.local());
+    if (opaque > 0 || !tiny.empty())
+      fragments += drawOpaqueTile(target_, std::span(list.records).first(opaque), tiny, rect, s_.scratch.local());
     for (std::size_t i = opaque; i < list.records.size(); ++i) drawRecord(target_, *list.records[i], rect, fragments);
   }
 

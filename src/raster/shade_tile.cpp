@@ -156,17 +156,51 @@ std::size_t drawColored(const DrawTarget& target, const DrawRecord& r, const Pix
   return rasterizeGouraud(r.setup, rect, depth, color, winners, lit);
 }
 
+// Where a tiny triangle's pixel passes the depth test: depth[at] = z, and then write(at).
+template <class Pixel, class Write>
+class TinyDrawer {
+ public:
+  TinyDrawer(std::span<const Pixel> pixels, Real* depth, const Write& write) : pixels_(pixels), depth_(depth), write_(write) {}
+  // The pixels that come before the tile's record `record`; returns how many passed.
+  std::size_t drawUpTo(std::size_t record) {
+    std::size_t passed = 0;
+    for (; next_ < pixels_.size() && TinyTag::recordsBefore(pixels_[next_].tag) <= record; ++next_) {
+      const Pixel& p = pixels_[next_];
+      const std::uint32_t at = TinyTag::pixel(p.tag);
+      if (!(p.z < depth_[at])) continue;
+      depth_[at] = p.z;
+      write_(at, p);
+      ++passed;
+    }
+    return passed;
+  }
+
+ private:
+  std::span<const Pixel> pixels_;
+  Real* depth_;
+  const Write& write_;
+  std::size_t next_ = 0;
+};
+
 // Phong from the tile's visible surface: interpolated in the depth pass, lit once per pixel.
-std::size_t drawLitSurface(const DrawTarget& target, std::span<const DrawRecord* const> records, const PixelRect& rect,
-                           Real* depth, std::uint32_t* color, TileScratch& scratch) {
+std::size_t drawLitSurface(const DrawTarget& target, std::span<const DrawRecord* const> records,
+                           std::span<const TinySurface> tiny, const PixelRect& rect, Real* depth, std::uint32_t* color,
+                           TileScratch& scratch) {
   Real (&plane)[10][kTileBlock] = scratch.surface;
   const SurfaceTile out{{plane[0], plane[1], plane[2]},
                         {plane[3], plane[4], plane[5]},
                         {plane[6], plane[7], plane[8], plane[9]},
                         scratch.owner.data()};
+  const auto keep = [&](std::uint32_t at, const TinySurface& p) {
+    for (int c = 0; c < 3; ++c) out.position[c][at] = p.position[c], out.normal[c][at] = p.normal[c];
+    out.owner[at] = p.owner;
+  };
+  TinyDrawer<TinySurface, decltype(keep)> tinyPixels(tiny, depth, keep);
   const bool twoSided = target.frame.lightModel.twoSided;
   std::size_t fragments = 0;
-  for (const DrawRecord* r : records) {
+  for (std::size_t i = 0; i < records.size(); ++i) {
+    fragments += tinyPixels.drawUpTo(i);
+    const DrawRecord* r = records[i];
     const AttributeLayout& l = target.layout(*r);
     SurfaceVertices v;
     for (int k = 0; k < 3; ++k) {
@@ -180,6 +214,7 @@ std::size_t drawLitSurface(const DrawTarget& target, std::span<const DrawRecord*
     v.owner = r->object;
     fragments += rasterizeSurface(r->setup, rect, depth, v, out);
   }
+  fragments += tinyPixels.drawUpTo(records.size());
   if (fragments == 0) return 0;
   SurfacePoints points;
   points.count = std::size_t(kTileSize) * kTileSize;
@@ -193,33 +228,26 @@ std::size_t drawLitSurface(const DrawTarget& target, std::span<const DrawRecord*
 
 }  // namespace
 
-std::size_t drawOpaqueTile(const DrawTarget& target, std::span<const DrawRecord* const> records,
-                           std::span<const TinyFragment> tiny, const PixelRect& rect, TileScratch& scratch) {
+std::size_t drawOpaqueTile(const DrawTarget& target, std::span<const DrawRecord* const> records, const TinyPixels& tiny,
+                           const PixelRect& rect, TileScratch& scratch) {
   Real* depth = target.fb.depthTile(rect.minX, rect.minY);
   auto* color = reinterpret_cast<std::uint32_t*>(target.fb.colorTile(rect.minX, rect.minY));
 #if !ILLUM_USE_DOUBLE
-  if (target.litFromSurface) return drawLitSurface(target, records, rect, depth, color, scratch);
+  if (target.litFromSurface) return drawLitSurface(target, records, tiny.surfaces, rect, depth, color, scratch);
 #endif
   // Flat and Gouraud colour their pixels in the depth pass itself, unless a texel or the probe
   // needs the second pass (or the channels are double, which the SIMD conversion does not take).
   std::uint32_t* winners = scratch.winners.data();
   bool anyWinner = false;
   std::size_t fragments = 0;
-  std::size_t nextTiny = 0;
-  // A tiny triangle's pixels, coloured at setup: only the depth test is left.
-  const auto drawTinyUpTo = [&](std::size_t record) {
-    for (; nextTiny < tiny.size() && tiny[nextTiny].recordsBefore() <= record; ++nextTiny) {
-      const TinyFragment& f = tiny[nextTiny];
-      const std::uint32_t at = f.pixel();
-      if (!(f.z < depth[at])) continue;
-      depth[at] = f.z;
-      color[at] = f.color;
-      if (anyWinner) winners[at] = kNoWinner;
-      ++fragments;
-    }
+  // A tiny triangle's pixel, coloured at setup: only the depth test is left.
+  const auto write = [&](std::uint32_t at, const TinyFragment& f) {
+    color[at] = f.color;
+    if (anyWinner) winners[at] = kNoWinner;
   };
+  TinyDrawer<TinyFragment, decltype(write)> tinyPixels(tiny.fragments, depth, write);
   for (std::size_t i = 0; i < records.size(); ++i) {
-    drawTinyUpTo(i);
+    fragments += tinyPixels.drawUpTo(i);
     const DrawRecord& r = *records[i];
 #if !ILLUM_USE_DOUBLE
     if (target.colorsInDepthPass && !drawnTexture(target.scene.objects[r.object])) {
@@ -230,7 +258,7 @@ std::size_t drawOpaqueTile(const DrawTarget& target, std::span<const DrawRecord*
     fragments += rasterizeDepth(r.setup, rect, depth, std::uint32_t(i), winners);
     anyWinner = true;
   }
-  drawTinyUpTo(records.size());
+  fragments += tinyPixels.drawUpTo(records.size());
   if (!anyWinner) return fragments;
   if (target.frame.shading == Shading::Phong) {
     PhongBatch batch(target, records, rect, scratch);

@@ -34,10 +34,17 @@ struct TileScratch {
   }
 };
 
-// Draws `records` (the tile's, in submission order) and tiny triangles' `fragments` (each where
-// its count of records before it puts it) into the tile `rect` without blending. Returns the
-// fragments that passed the depth test.
-std::size_t drawOpaqueTile(const DrawTarget& target, std::span<const DrawRecord* const> records,
-                           std::span<const TinyFragment> fragments, const PixelRect& rect, TileScratch& scratch);
+// A tile's pixels of tiny triangles (tile_raster.h), each where its count of records before it
+// puts it: coloured, or surfaces for Phong shading.
+struct TinyPixels {
+  std::span<const TinyFragment> fragments;
+  std::span<const TinySurface> surfaces;
+  bool empty() const { return fragments.empty() && surfaces.empty(); }
+};
+
+// Draws `records` (the tile's, in submission order) and `tiny` into the tile `rect` without
+// blending. Returns the fragments that passed the depth test.
+std::size_t drawOpaqueTile(const DrawTarget& target, std::span<const DrawRecord* const> records, const TinyPixels& tiny,
+                           const PixelRect& rect, TileScratch& scratch);
 
 }  // namespace illum

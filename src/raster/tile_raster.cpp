@@ -286,18 +286,58 @@ std::size_t RasterizeFlat(const TriangleSetup& t, const PixelRect& tile, Real* d
   });
 }
 
-// perspectiveWeights (fragment.h) and gouraudColor, lane by lane, as RGBA8 pixels. Three alphas
-// of exactly 1 (`opaque`) blend to within a few ulps of 1, which converts to 255 every time.
+// perspectiveWeights (fragment.h), lane by lane.
 template <class V>
-HWY_INLINE auto GouraudPixels(const TriangleSetup& t, const Color4* lit, bool opaque, V l0, V l1, V l2) {
+HWY_INLINE void PerspectiveWeights(const TriangleSetup& t, V l0, V l1, V l2, V (&p)[3]) {
   const hn::DFromV<V> dr;
   const V q0 = l0 * hn::Set(dr, t.invW[0]), q1 = l1 * hn::Set(dr, t.invW[1]), q2 = l2 * hn::Set(dr, t.invW[2]);
   const V inv = hn::Set(dr, Real(1)) / (q0 + q1 + q2);
-  const V p0 = q0 * inv, p1 = q1 * inv, p2 = q2 * inv;
+  p[0] = q0 * inv, p[1] = q1 * inv, p[2] = q2 * inv;
+}
+
+// gouraudColor, lane by lane, as RGBA8 pixels. Three alphas of exactly 1 (`opaque`) blend to
+// within a few ulps of 1, which converts to 255 every time.
+template <class V>
+HWY_INLINE auto GouraudPixels(const TriangleSetup& t, const Color4* lit, bool opaque, V l0, V l1, V l2) {
+  const hn::DFromV<V> dr;
+  V p[3];
+  PerspectiveWeights(t, l0, l1, l2, p);
   V c[4];
   for (int k = 0; k < (opaque ? 3 : 4); ++k)
-    c[k] = p0 * hn::Set(dr, lit[0][k]) + p1 * hn::Set(dr, lit[1][k]) + p2 * hn::Set(dr, lit[2][k]);
+    c[k] = p[0] * hn::Set(dr, lit[0][k]) + p[1] * hn::Set(dr, lit[1][k]) + p[2] * hn::Set(dr, lit[2][k]);
   return opaque ? PackUnorm8(dr, c[0], c[1], c[2], 255u) : PackUnorm8(dr, c[0], c[1], c[2], c[3]);
+}
+
+// Σ p_i · a_i in phongSurface's order (broadcasts from memory, folded into the multiplies).
+template <class V>
+HWY_INLINE V Blend(const V (&p)[3], Real a0, Real a1, Real a2) {
+  const hn::DFromV<V> dr;
+  return p[0] * hn::Set(dr, a0) + p[1] * hn::Set(dr, a1) + p[2] * hn::Set(dr, a2);
+}
+
+// phongSurface's position and renormalized normal (negated for a back face under two-sided
+// lighting), lane by lane, from the perspective weights p.
+template <class V>
+struct SurfaceLanes {
+  V position[3], normal[3];
+};
+template <class V>
+HWY_INLINE SurfaceLanes<V> SurfaceAt(const SurfaceVertices& v, const V (&p)[3]) {
+  const hn::DFromV<V> dr;
+  SurfaceLanes<V> s;
+  V n[3];
+  for (int c = 0; c < 3; ++c) {
+    s.position[c] = Blend(p, v.position[0][c], v.position[1][c], v.position[2][c]);
+    n[c] = Blend(p, v.normal[0][c], v.normal[1][c], v.normal[2][c]);
+  }
+  const V len = hn::Sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  const auto positive = len > hn::Zero(dr);
+  const V inverse = hn::Set(dr, Real(1)) / len;
+  for (int c = 0; c < 3; ++c) {
+    s.normal[c] = hn::IfThenElse(positive, n[c] * inverse, hn::Set(dr, Real(c == 2 ? 1 : 0)));
+    if (v.negate) s.normal[c] = hn::Neg(s.normal[c]);
+  }
+  return s;
 }
 
 HWY_INLINE bool Opaque(const Color4* lit) { return lit[0].a == 1 && lit[1].a == 1 && lit[2].a == 1; }
@@ -329,27 +369,23 @@ constexpr TinyLanes MakeTinyLanes() {
 }
 constexpr TinyLanes kTinyLanes = MakeTinyLanes();
 
-// A tiny triangle's covered pixels as fragments, coloured as RasterizeFlat (lit null) or
-// RasterizeGouraud colour them, without a depth test. Its whole bounds are one or two vectors:
-// lane k is the pixel (k mod w, k / w) from the bottom-left one, whose edge values differ from
-// that pixel's by c·A + r·B (A = 256a, B = 256b): as in DepthPassTwoRows, exact in float inside
-// the bounds of a float-exact triangle, the lanes past the bounds masked. The covered lanes are
-// compressed and stored without a branch, so that the work of consecutive triangles overlaps.
-// Others (a long sliver whose bounds the viewport cut small) go pixel by pixel, to the same values.
-std::size_t CoverTiny(const TriangleSetup& t, const Color4* lit, std::uint32_t packed, std::uint32_t recordsBefore,
-                      TinyFragment* out) {
-  const bool opaque = lit && Opaque(lit);
-  const std::uint32_t first =
-      TinyFragment::tagOf(recordsBefore, std::uint32_t((t.minY % kTileSize) * kTileSize + t.minX % kTileSize));
-  std::size_t n = 0;
+// A tiny triangle's covered pixels, without a depth test: visit(d, inside, l0, l1, l2, z, offset)
+// for each vector of them, `offset` holding each lane's pixel from the bounds' first pixel in the
+// tile. The whole bounds are one or two vectors: lane k is the pixel (k mod w, k / w) from the
+// bottom-left one, whose edge values differ from that pixel's by c·A + r·B (A = 256a, B = 256b):
+// as in DepthPassTwoRows, exact in float inside the bounds of a float-exact triangle, the lanes
+// past the bounds masked. Others (a long sliver whose bounds the viewport cut small) go pixel by
+// pixel in one-lane vectors, to the same values.
+template <class Visit>
+HWY_INLINE void VisitTiny(const TriangleSetup& t, const Visit& visit) {
   if (sizeof(Real) != 4 || !t.floatExact || HWY_TARGET == HWY_SCALAR) {
     const hn::CappedTag<Real, 1> d1;
+    const hn::Rebind<std::uint32_t, decltype(d1)> du1;
     VisitFewPixels(t, t.minX, t.maxX, t.minY, t.maxY, [&](int x, int y, Real l0, Real l1, Real l2, Real z) {
-      const std::uint32_t c =
-          lit ? hn::GetLane(GouraudPixels(t, lit, opaque, hn::Set(d1, l0), hn::Set(d1, l1), hn::Set(d1, l2))) : packed;
-      out[n++] = {first + std::uint32_t((y - t.minY) * kTileSize + (x - t.minX)), z, c};
+      visit(d1, hn::FirstN(d1, 1), hn::Set(d1, l0), hn::Set(d1, l1), hn::Set(d1, l2), hn::Set(d1, z),
+            hn::Set(du1, std::uint32_t((y - t.minY) * kTileSize + (x - t.minX))));
     });
-    return n;
+    return;
   }
 #if HWY_TARGET != HWY_SCALAR
   const DR dr;
@@ -366,7 +402,6 @@ std::size_t CoverTiny(const TriangleSetup& t, const Color4* lit, std::uint32_t p
   }
   const VR invArea = hn::Set(dr, t.invArea), zero = hn::Zero(dr);
   const VR z0 = hn::Set(dr, t.z[0]), z1 = hn::Set(dr, t.z[1]), z2 = hn::Set(dr, t.z[2]);
-  const auto firstTag = hn::Set(du, first);
   const int lanes = int(hn::Lanes(dr));
   for (int k0 = 0; k0 < count; k0 += lanes) {
     const VR column = hn::LoadU(dr, kTinyLanes.column[w] + k0), row = hn::LoadU(dr, kTinyLanes.row[w] + k0);
@@ -375,15 +410,64 @@ std::size_t CoverTiny(const TriangleSetup& t, const Color4* lit, std::uint32_t p
     const MR inside = hn::And(hn::And(hn::FirstN(dr, std::size_t(count - k0)), E[0] + bias[0] >= zero),
                               hn::And(E[1] + bias[1] >= zero, E[2] + bias[2] >= zero));
     const VR l0 = E[0] * invArea, l1 = E[1] * invArea, l2 = E[2] * invArea;
-    const VR z = l0 * z0 + l1 * z1 + l2 * z2;
-    const auto color = lit ? GouraudPixels(t, lit, opaque, l0, l1, l2) : hn::Set(du, packed);
-    const auto tag = firstTag + hn::LoadU(du, kTinyLanes.offset[w] + k0);
-    const auto keep = hn::RebindMask(du, inside);
-    hn::StoreInterleaved3(hn::Compress(tag, keep), hn::Compress(hn::BitCast(du, z), keep), hn::Compress(color, keep), du,
-                          reinterpret_cast<std::uint32_t*>(out + n));
-    n += hn::CountTrue(dr, inside);
+    visit(dr, inside, l0, l1, l2, l0 * z0 + l1 * z1 + l2 * z2, hn::LoadU(du, kTinyLanes.offset[w] + k0));
   }
 #endif
+}
+
+// Lanes of a tiny triangle's vectors kept in memory, so that its covered pixels can be written one
+// by one: write(k) for each lane k set in `inside`.
+constexpr std::size_t kTinyLanesMax = 16;
+template <class D, class M, class Write>
+HWY_INLINE void ForEachCovered(D d, M inside, const Write& write) {
+  static_assert(hn::MaxLanes(D()) <= kTinyLanesMax);
+  std::uint8_t bits[(kTinyLanesMax + 7) / 8] = {};
+  hn::StoreMaskBits(d, inside, bits);
+  for (unsigned m = unsigned(bits[0]) | unsigned(bits[1]) << 8; m != 0; m &= m - 1) write(__builtin_ctz(m));
+}
+
+// A tiny triangle's covered pixels as fragments coloured as RasterizeFlat (lit null) or
+// RasterizeGouraud colour them.
+std::size_t CoverTiny(const TriangleSetup& t, const Color4* lit, std::uint32_t packed, std::uint32_t recordsBefore,
+                      TinyFragment* out) {
+  const bool opaque = lit && Opaque(lit);
+  const std::uint32_t first =
+      TinyTag::of(recordsBefore, std::uint32_t((t.minY % kTileSize) * kTileSize + t.minX % kTileSize));
+  std::size_t n = 0;
+  VisitTiny(t, [&](auto d, auto inside, auto l0, auto l1, auto l2, auto z, auto offset) {
+    const hn::Rebind<std::uint32_t, decltype(d)> du;
+    HWY_ALIGN Real depth[kTinyLanesMax];
+    HWY_ALIGN std::uint32_t color[kTinyLanesMax], pixel[kTinyLanesMax];
+    hn::Store(z, d, depth);
+    hn::Store(lit ? GouraudPixels(t, lit, opaque, l0, l1, l2) : hn::Set(du, packed), du, color);
+    hn::Store(offset, du, pixel);
+    ForEachCovered(d, inside, [&](int k) { out[n++] = {first + pixel[k], depth[k], color[k]}; });
+  });
+  return n;
+}
+
+// A tiny triangle's covered pixels as Phong's visible surface, as RasterizeSurface keeps it (no
+// vertex colours).
+std::size_t CoverTinySurface(const TriangleSetup& t, const SurfaceVertices& v, std::uint32_t recordsBefore,
+                             TinySurface* out) {
+  const std::uint32_t first =
+      TinyTag::of(recordsBefore, std::uint32_t((t.minY % kTileSize) * kTileSize + t.minX % kTileSize));
+  std::size_t n = 0;
+  VisitTiny(t, [&](auto d, auto inside, auto l0, auto l1, auto l2, auto z, auto offset) {
+    using V = decltype(l0);
+    HWY_ALIGN Real depth[kTinyLanesMax], position[3][kTinyLanesMax], normal[3][kTinyLanesMax];
+    HWY_ALIGN std::uint32_t pixel[kTinyLanesMax];
+    V p[3];
+    PerspectiveWeights(t, l0, l1, l2, p);
+    const SurfaceLanes<V> s = SurfaceAt(v, p);
+    hn::Store(z, d, depth);
+    hn::Store(offset, hn::Rebind<std::uint32_t, decltype(d)>(), pixel);
+    for (int c = 0; c < 3; ++c) hn::Store(s.position[c], d, position[c]), hn::Store(s.normal[c], d, normal[c]);
+    ForEachCovered(d, inside, [&](int k) {
+      out[n++] = {first + pixel[k], depth[k], v.owner, {position[0][k], position[1][k], position[2][k]},
+                  {normal[0][k], normal[1][k], normal[2][k]}};
+    });
+  });
   return n;
 }
 
@@ -393,30 +477,16 @@ std::size_t RasterizeSurface(const TriangleSetup& t, const PixelRect& tile, Real
     using V = decltype(l0);
     const hn::DFromV<V> dr;
     const hn::Rebind<std::uint32_t, decltype(dr)> du;
-    // Σ p_i · a_i in phongSurface's order (broadcasts from memory, folded into the multiplies).
-    const auto blend = [&](V p0, V p1, V p2, Real a0, Real a1, Real a2) {
-      return p0 * hn::Set(dr, a0) + p1 * hn::Set(dr, a1) + p2 * hn::Set(dr, a2);
-    };
-    const V q0 = l0 * hn::Set(dr, t.invW[0]), q1 = l1 * hn::Set(dr, t.invW[1]), q2 = l2 * hn::Set(dr, t.invW[2]);
-    const V inv = hn::Set(dr, Real(1)) / (q0 + q1 + q2);
-    const V p0 = q0 * inv, p1 = q1 * inv, p2 = q2 * inv;
-    V n[3];
+    V p[3];
+    PerspectiveWeights(t, l0, l1, l2, p);
+    const SurfaceLanes<V> s = SurfaceAt(v, p);
     for (int c = 0; c < 3; ++c) {
-      hn::BlendedStore(blend(p0, p1, p2, v.position[0][c], v.position[1][c], v.position[2][c]), pass, dr,
-                       out.position[c] + at);
-      n[c] = blend(p0, p1, p2, v.normal[0][c], v.normal[1][c], v.normal[2][c]);
-    }
-    const V len = hn::Sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    const auto positive = len > hn::Zero(dr);
-    const V inverse = hn::Set(dr, Real(1)) / len;
-    for (int c = 0; c < 3; ++c) {
-      V unit = hn::IfThenElse(positive, n[c] * inverse, hn::Set(dr, Real(c == 2 ? 1 : 0)));
-      if (v.negate) unit = hn::Neg(unit);
-      hn::BlendedStore(unit, pass, dr, out.normal[c] + at);
+      hn::BlendedStore(s.position[c], pass, dr, out.position[c] + at);
+      hn::BlendedStore(s.normal[c], pass, dr, out.normal[c] + at);
     }
     if (v.colors)
       for (int c = 0; c < 4; ++c)
-        hn::BlendedStore(blend(p0, p1, p2, v.color[0][c], v.color[1][c], v.color[2][c]), pass, dr, out.color[c] + at);
+        hn::BlendedStore(Blend(p, v.color[0][c], v.color[1][c], v.color[2][c]), pass, dr, out.color[c] + at);
     hn::BlendedStore(hn::Set(du, v.owner), hn::RebindMask(du, pass), du, out.owner + at);
   });
 }
@@ -432,6 +502,7 @@ HWY_EXPORT(RasterizeFlat);
 HWY_EXPORT(RasterizeGouraud);
 HWY_EXPORT(RasterizeSurface);
 HWY_EXPORT(CoverTiny);
+HWY_EXPORT(CoverTinySurface);
 
 std::size_t rasterizeDepth(const TriangleSetup& t, const PixelRect& tile, Real* depth, std::uint32_t slot,
                            std::uint32_t* winners) {
@@ -459,6 +530,11 @@ std::size_t coverTinyFlat(const TriangleSetup& t, std::uint32_t packed, std::uin
 
 std::size_t coverTinyGouraud(const TriangleSetup& t, const Color4* lit, std::uint32_t recordsBefore, TinyFragment* out) {
   return HWY_DYNAMIC_DISPATCH(CoverTiny)(t, lit, 0, recordsBefore, out);
+}
+
+std::size_t coverTinySurface(const TriangleSetup& t, const SurfaceVertices& v, std::uint32_t recordsBefore,
+                             TinySurface* out) {
+  return HWY_DYNAMIC_DISPATCH(CoverTinySurface)(t, v, recordsBefore, out);
 }
 
 }  // namespace illum

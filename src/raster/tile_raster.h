@@ -25,14 +25,15 @@ constexpr std::uint32_t kNoWinner = 0xFFFFFFFF;
 std::size_t rasterizeDepth(const TriangleSetup& t, const PixelRect& tile, Real* depth, std::uint32_t slot,
                            std::uint32_t* winners);
 
-// A tiny triangle (isTiny: a few pixels, all in one tile) is coloured as soon as it is set up,
-// without a record: coverTiny* write its covered pixels as fragments of its tile (bin.h), with
-// depths and RGBA8 colours exactly as rasterizeFlat (`packed`) or rasterizeGouraud would write
-// them, to be depth-tested later, each tagged with `recordsBefore`. `out` must have room for
-// kTinyRoom fragments (whole vectors are stored); they return how many they wrote (at most
-// kTinyPixels), in rows from the bottom. Float channels only.
+// A tiny triangle (isTiny: a few pixels, all in one tile) is worked out as soon as it is set up,
+// without a record: coverTiny* write its covered pixels to `out` (room for kTinyRoom) for its tile
+// (bin.h), to be depth-tested later, each tagged with `recordsBefore`: with depths and RGBA8
+// colours exactly as rasterizeFlat (`packed`) or rasterizeGouraud would write them, or with the
+// visible surface as rasterizeSurface would keep it (coverTinySurface, for a triangle without
+// vertex colours). They return how many they wrote (at most kTinyPixels), in rows from the
+// bottom. Float channels only.
 constexpr int kTinyPixels = 8;
-constexpr std::size_t kTinyRoom = 32;
+constexpr std::size_t kTinyRoom = kTinyPixels;
 inline bool isTiny(const TriangleSetup& t) {
   return (t.maxX - t.minX + 1) * (t.maxY - t.minY + 1) <= kTinyPixels && t.minX / kTileSize == t.maxX / kTileSize &&
          t.minY / kTileSize == t.maxY / kTileSize;
@@ -74,6 +75,8 @@ struct SurfaceVertices {
 // colour (exactly as phongSurface in fragment.h computes them) and the owner.
 std::size_t rasterizeSurface(const TriangleSetup& t, const PixelRect& tile, Real* depth, const SurfaceVertices& v,
                              const SurfaceTile& out);
+std::size_t coverTinySurface(const TriangleSetup& t, const SurfaceVertices& v, std::uint32_t recordsBefore,
+                             TinySurface* out);
 #endif  // !ILLUM_USE_DOUBLE
 
 }  // namespace illum

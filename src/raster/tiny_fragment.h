@@ -1,6 +1,7 @@
-// A pixel of a tiny triangle, coloured at setup (tile_raster.h) and kept in its tile's list
+// A pixel of a tiny triangle, worked out at setup (tile_raster.h) and kept in its tile's list
 // (bin.h) with its place among the tile's records, so that the tile draws everything in
-// submission order.
+// submission order: for flat and Gouraud shading its colour, for Phong shading the visible
+// surface there, to be lit with the tile's other pixels.
 #pragma once
 
 #include <illum/real.h>
@@ -9,18 +10,27 @@
 
 namespace illum {
 
-struct TinyFragment {
+// Where a tiny triangle's pixel goes, its tag: its pixel in the tile and how many of the tile's
+// records come before it.
+struct TinyTag {
   static constexpr int kPixelBits = 12;  // a 64×64 tile's pixels
-  std::uint32_t tag;    // recordsBefore << kPixelBits | pixel (tile-local)
+  static std::uint32_t of(std::uint32_t recordsBefore, std::uint32_t pixel) { return recordsBefore << kPixelBits | pixel; }
+  static std::uint32_t pixel(std::uint32_t tag) { return tag & ((1u << kPixelBits) - 1); }
+  static std::uint32_t recordsBefore(std::uint32_t tag) { return tag >> kPixelBits; }
+};
+
+struct TinyFragment {
+  std::uint32_t tag;
   Real z;
   std::uint32_t color;  // RGBA8, as the framebuffer stores it
+};
 
-  std::uint32_t pixel() const { return tag & ((1u << kPixelBits) - 1); }
-  // How many of the tile's records come before it.
-  std::uint32_t recordsBefore() const { return tag >> kPixelBits; }
-  static std::uint32_t tagOf(std::uint32_t recordsBefore, std::uint32_t pixel) {
-    return recordsBefore << kPixelBits | pixel;
-  }
+// Phong: what rasterizeSurface keeps of a pixel (objects without vertex colours).
+struct TinySurface {
+  std::uint32_t tag;
+  Real z;
+  std::uint32_t owner;
+  Real position[3], normal[3];
 };
 
 }  // namespace illum
