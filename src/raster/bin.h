@@ -49,13 +49,11 @@ class TinyRuns {
     for (std::size_t t = tiles; t > 0; --t) start_[t] = start_[t - 1];
     start_[0] = 0;
   }
-  // f(pixel) for each of the tile's pixels, in order.
+  // f(first, count) for each run of the tile's pixels, in order.
   template <class F>
-  void forEach(int tile, F&& f) const {
-    for (std::uint32_t r = start_[std::size_t(tile)]; r < start_[std::size_t(tile) + 1]; ++r) {
-      const Pixel* first = pixels_.get() + sorted_[r].first;
-      for (std::uint32_t k = 0; k < sorted_[r].count; ++k) f(first[k]);
-    }
+  void forEachRun(int tile, F&& f) const {
+    for (std::uint32_t r = start_[std::size_t(tile)]; r < start_[std::size_t(tile) + 1]; ++r)
+      f(pixels_.get() + sorted_[r].first, sorted_[r].count);
   }
 
  private:

@@ -48,8 +48,8 @@ struct Renderer::State {
   // each counting the records before it in `records`.
   struct TileList {
     std::vector<const DrawRecord*> records;
-    std::vector<TinyFragment> fragments;
-    std::vector<TinySurface> surfaces;
+    std::vector<TinyRun<TinyFragment>> fragments;
+    std::vector<TinyRun<TinySurface>> surfaces;
   };
   tbb::enumerable_thread_specific<TileList> tileLists;
   tbb::affinity_partitioner tileAffinity;
@@ -132,14 +132,11 @@ class BinnedFrame {
       const Renderer::State::Chunk& chunk = s_.pool[c];
       // (A batch holds far fewer records than a fragment's tag can count: kBatchRecords plus a slice.)
       const auto before = std::uint32_t(list.records.size());
-      const std::uint32_t shift = before << TinyTag::kPixelBits;
-      chunk.bins.fragments.forEach(tile, [&](TinyFragment f) {
-        f.tag += shift;
-        list.fragments.push_back(f);
+      chunk.bins.fragments.forEachRun(tile, [&](const TinyFragment* first, std::uint32_t count) {
+        list.fragments.push_back({first, count, before});
       });
-      chunk.bins.surfaces.forEach(tile, [&](TinySurface f) {
-        f.tag += shift;
-        list.surfaces.push_back(f);
+      chunk.bins.surfaces.forEachRun(tile, [&](const TinySurface* first, std::uint32_t count) {
+        list.surfaces.push_back({first, count, before});
       });
       for (std::uint32_t index : chunk.bins.records(tile)) list.records.push_back(&chunk.records[index]);
     }

@@ -156,35 +156,42 @@ std::size_t drawColored(const DrawTarget& target, const DrawRecord& r, const Pix
   return rasterizeGouraud(r.setup, rect, depth, color, winners, lit);
 }
 
-// Where a tiny triangle's pixel passes the depth test: depth[at] = z, and then write(at).
+// Where a tiny triangle's pixel passes the depth test: depth[at] = z, and then write(at, pixel).
 template <class Pixel, class Write>
 class TinyDrawer {
  public:
-  TinyDrawer(std::span<const Pixel> pixels, Real* depth, const Write& write) : pixels_(pixels), depth_(depth), write_(write) {}
+  TinyDrawer(std::span<const TinyRun<Pixel>> runs, Real* depth, const Write& write)
+      : runs_(runs), depth_(depth), write_(write) {}
   // The pixels that come before the tile's record `record`; returns how many passed.
   std::size_t drawUpTo(std::size_t record) {
     std::size_t passed = 0;
-    for (; next_ < pixels_.size() && TinyTag::recordsBefore(pixels_[next_].tag) <= record; ++next_) {
-      const Pixel& p = pixels_[next_];
-      const std::uint32_t at = TinyTag::pixel(p.tag);
-      if (!(p.z < depth_[at])) continue;
-      depth_[at] = p.z;
-      write_(at, p);
-      ++passed;
+    for (; run_ < runs_.size(); ++run_, next_ = 0) {
+      const TinyRun<Pixel>& run = runs_[run_];
+      for (; next_ < run.count; ++next_) {
+        const Pixel& p = run.first[next_];
+        if (run.recordsBefore + TinyTag::recordsBefore(p.tag) > record) return passed;
+        const std::uint32_t at = TinyTag::pixel(p.tag);
+        if (!(p.z < depth_[at])) continue;
+        depth_[at] = p.z;
+        write_(at, p);
+        ++passed;
+      }
     }
     return passed;
   }
 
  private:
-  std::span<const Pixel> pixels_;
+  std::span<const TinyRun<Pixel>> runs_;
   Real* depth_;
   const Write& write_;
-  std::size_t next_ = 0;
+  std::size_t run_ = 0;
+  std::uint32_t next_ = 0;
 };
 
 // Phong from the tile's visible surface: interpolated in the depth pass, lit once per pixel.
 std::size_t drawLitSurface(const DrawTarget& target, std::span<const DrawRecord* const> records,
-                           std::span<const TinySurface> tiny, const PixelRect& rect, Real* depth, std::uint32_t* color,
+                           std::span<const TinyRun<TinySurface>> tiny, const PixelRect& rect, Real* depth,
+                           std::uint32_t* color,
                            TileScratch& scratch) {
   Real (&plane)[10][kTileBlock] = scratch.surface;
   const SurfaceTile out{{plane[0], plane[1], plane[2]},

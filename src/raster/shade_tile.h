@@ -37,8 +37,8 @@ struct TileScratch {
 // A tile's pixels of tiny triangles (tile_raster.h), each where its count of records before it
 // puts it: coloured, or surfaces for Phong shading.
 struct TinyPixels {
-  std::span<const TinyFragment> fragments;
-  std::span<const TinySurface> surfaces;
+  std::span<const TinyRun<TinyFragment>> fragments;
+  std::span<const TinyRun<TinySurface>> surfaces;
   bool empty() const { return fragments.empty() && surfaces.empty(); }
 };
 

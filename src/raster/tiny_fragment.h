@@ -33,4 +33,13 @@ struct TinySurface {
   Real position[3], normal[3];
 };
 
+// A stretch of one tile's tiny pixels stored together (one chunk's), and how many of the tile's
+// records (gathered from every chunk) come before that chunk's.
+template <class Pixel>
+struct TinyRun {
+  const Pixel* first;
+  std::uint32_t count;
+  std::uint32_t recordsBefore;
+};
+
 }  // namespace illum
