@@ -10,8 +10,8 @@ namespace {
 using Plane = Vec4;
 
 std::array<Plane, 6> clipPlanes(int width, int height) {
-  const Real gx = 1 + Real(2 * kGuardBandPixels) / Real(width);
-  const Real gy = 1 + Real(2 * kGuardBandPixels) / Real(height);
+  const Vec2 g = guardBandScale(width, height);
+  const Real gx = g.x, gy = g.y;
   return {{
       {0, 0, 1, 1},    // near: z ≥ −w
       {0, 0, -1, 1},   // far: z ≤ w
@@ -23,6 +23,10 @@ std::array<Plane, 6> clipPlanes(int width, int height) {
 }
 
 }  // namespace
+
+Vec2 guardBandScale(int width, int height) {
+  return {1 + Real(2 * kGuardBandPixels) / Real(width), 1 + Real(2 * kGuardBandPixels) / Real(height)};
+}
 
 unsigned clipOutcode(const Vec4& clip, int width, int height) {
   // A vertex pushed to infinity (an overflowing transform) has no place on screen.

@@ -18,6 +18,8 @@ enum class ClipResult { Outside, Inside, Clipped };
 // Which clip planes a clip-space position is beyond (bit p for plane p: near, far, −x, +x, −y,
 // +y of the guard band), and kNotFinite for a position no plane can judge. 0 is inside.
 constexpr unsigned kNotFinite = 1u << 6;
+// The guard band's half extents in NDC units: x within ±gx·w, y within ±gy·w.
+Vec2 guardBandScale(int width, int height);
 unsigned clipOutcode(const Vec4& clip, int width, int height);
 
 // Trivial accept and reject: Outside (wholly beyond one plane, or not finite), Inside (needs no

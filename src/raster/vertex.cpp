@@ -3,6 +3,7 @@
 #include "math/transform.h"
 #include "raster/clip.h"
 #include "raster/setup.h"
+#include "raster/vertex_transform.h"
 #include "shading/shade_points.h"
 
 #include <algorithm>
@@ -11,37 +12,28 @@ namespace illum {
 
 namespace {
 
-constexpr std::size_t kLightingBatch = 256;  // vertices lit together, as structure of arrays
-
-// Lights vertices [first, last) of `out` (eye position, normal and colour already set) in
-// batches: front colours with N, and under two-sided lighting back colours with −N.
-void lightVertices(const FrameContext& frame, const Object& object, std::vector<ShadedVertex>& out, std::size_t first,
-                   std::size_t last) {
+// Lights a batch of transformed vertices: front colours with N, and under two-sided lighting back
+// colours with −N, into out[0, n).
+void lightBatch(const FrameContext& frame, const Object& object, TransformedVertices& batch, const Color4* colors,
+                std::size_t n, ShadedVertex* out) {
   const ShadeSetup setup{frame.lights, frame.lightModel, modelOf(object.material, frame.model), object.material};
-  const bool hasColors = !object.mesh->colors.empty();
-  Real soa[14][kLightingBatch];  // position xyz, normal xyz, colour rgba, result rgba
-  for (std::size_t b = first; b < last; b += kLightingBatch) {
-    const std::size_t n = std::min(kLightingBatch, last - b);
-    for (std::size_t k = 0; k < n; ++k) {
-      const ShadedVertex& v = out[b + k];
-      for (int c = 0; c < 3; ++c) soa[c][k] = v.eyePosition[c], soa[3 + c][k] = v.eyeNormal[c];
-      if (hasColors)
-        for (int c = 0; c < 4; ++c) soa[6 + c][k] = v.color[c];
-    }
-    SurfacePoints points;
-    points.count = n;
-    for (int c = 0; c < 3; ++c) points.position[c] = soa[c], points.normal[c] = soa[3 + c];
-    if (hasColors)
-      for (int c = 0; c < 4; ++c) points.color[c] = soa[6 + c];
-    Real* const result[4] = {soa[10], soa[11], soa[12], soa[13]};
-    shadePoints(setup, points, result);
-    for (std::size_t k = 0; k < n; ++k) out[b + k].front = {soa[10][k], soa[11][k], soa[12][k], soa[13][k]};
-    if (!frame.lightModel.twoSided) continue;
-    for (int c = 3; c < 6; ++c)
-      for (std::size_t k = 0; k < n; ++k) soa[c][k] = -soa[c][k];
-    shadePoints(setup, points, result);
-    for (std::size_t k = 0; k < n; ++k) out[b + k].back = {soa[10][k], soa[11][k], soa[12][k], soa[13][k]};
+  Real color[4][kVertexBatch], result[4][kVertexBatch];
+  SurfacePoints points;
+  points.count = n;
+  for (int c = 0; c < 3; ++c) points.position[c] = batch.eye[c], points.normal[c] = batch.normal[c];
+  if (colors) {
+    for (std::size_t k = 0; k < n; ++k)
+      for (int c = 0; c < 4; ++c) color[c][k] = colors[k][c];
+    for (int c = 0; c < 4; ++c) points.color[c] = color[c];
   }
+  Real* const lit[4] = {result[0], result[1], result[2], result[3]};
+  shadePoints(setup, points, lit);
+  for (std::size_t k = 0; k < n; ++k) out[k].front = {result[0][k], result[1][k], result[2][k], result[3][k]};
+  if (!frame.lightModel.twoSided) return;
+  for (int c = 0; c < 3; ++c)
+    for (std::size_t k = 0; k < n; ++k) batch.normal[c][k] = -batch.normal[c][k];
+  shadePoints(setup, points, lit);
+  for (std::size_t k = 0; k < n; ++k) out[k].back = {result[0][k], result[1][k], result[2][k], result[3][k]};
 }
 
 }  // namespace
@@ -49,25 +41,30 @@ void lightVertices(const FrameContext& frame, const Object& object, std::vector<
 void runVertexStage(const FrameContext& frame, const Object& object, std::vector<ShadedVertex>& out,
                     std::size_t first, std::size_t last) {
   const Mesh& mesh = *object.mesh;
-  const Mat4 viewFromObject = frame.viewFromWorld * object.worldFromObject;  // GL_MODELVIEW
-  const Mat4 clipFromObject = frame.clipFromView * viewFromObject;
-  const Mat3 normalFromObject = normalMatrix(viewFromObject);
+  VertexTransform transform;
+  transform.viewFromObject = frame.viewFromWorld * object.worldFromObject;  // GL_MODELVIEW
+  transform.clipFromObject = frame.clipFromView * transform.viewFromObject;
+  transform.normalFromObject = normalMatrix(transform.viewFromObject);
+  transform.width = frame.width, transform.height = frame.height;
   const bool hasUvs = !mesh.uvs.empty(), hasColors = !mesh.colors.empty();
-  for (std::size_t i = first; i < last; ++i) {
-    ShadedVertex& v = out[i];
-    const Vec4 p(mesh.positions[i], 1);
-    v.clip = clipFromObject * p;
-    v.outcode = clipOutcode(v.clip, frame.width, frame.height);
-    v.hasWindow = v.outcode == 0;
-    if (v.hasWindow) v.window = toWindow(v.clip, frame.width, frame.height);
-    v.eyePosition = Vec3(viewFromObject * p);
-    const Vec3 n = normalFromObject * mesh.normals[i];
-    const Real len = glm::length(n);
-    v.eyeNormal = len > 0 ? n / len : n;
-    if (hasUvs) v.uv = mesh.uvs[i];
-    if (hasColors) v.color = mesh.colors[i];
+  TransformedVertices batch;
+  for (std::size_t b = first; b < last; b += kVertexBatch) {
+    const std::size_t n = std::min(kVertexBatch, last - b);
+    transformVertices(transform, &mesh.positions[b], &mesh.normals[b], n, batch);
+    for (std::size_t k = 0; k < n; ++k) {
+      ShadedVertex& v = out[b + k];
+      v.clip = {batch.clip[0][k], batch.clip[1][k], batch.clip[2][k], batch.clip[3][k]};
+      v.outcode = batch.outcode[k];
+      v.hasWindow = v.outcode == 0;
+      if (v.hasWindow) v.window = {batch.windowX[k], batch.windowY[k], batch.windowZ[k], batch.invW[k]};
+      v.eyePosition = {batch.eye[0][k], batch.eye[1][k], batch.eye[2][k]};
+      v.eyeNormal = {batch.normal[0][k], batch.normal[1][k], batch.normal[2][k]};
+      if (hasUvs) v.uv = mesh.uvs[b + k];
+      if (hasColors) v.color = mesh.colors[b + k];
+    }
+    if (frame.shading != Shading::Phong)
+      lightBatch(frame, object, batch, hasColors ? &mesh.colors[b] : nullptr, n, &out[b]);
   }
-  if (frame.shading != Shading::Phong) lightVertices(frame, object, out, first, last);
 }
 
 ShadedVertex lerp(const ShadedVertex& a, const ShadedVertex& b, Real t) {
