@@ -27,7 +27,10 @@ namespace {
 
 constexpr std::size_t kVertexGrain = 4096;       // vertices per parallel task
 constexpr std::size_t kTriangleChunk = 1024;     // triangles set up per parallel task
-constexpr std::size_t kBatchRecords = 1 << 13;   // records gathered before they are binned and drawn
+// What is gathered before it is binned and drawn: records, or tiny triangles (whose pixels take
+// less memory than a record, but whose chunks each keep per-tile lists).
+constexpr std::size_t kBatchRecords = 1 << 15;
+constexpr std::size_t kBatchTiny = 1 << 14;
 
 }  // namespace
 
@@ -82,7 +85,7 @@ class BinnedFrame {
     const std::size_t chunks = (triangles + kTriangleChunk - 1) / kTriangleChunk;
     // A slice of chunks is set up and binned in parallel, each chunk into an arena and bins of its
     // own; a tile then draws its records chunk by chunk, in submission order.
-    const std::size_t slice = std::max<std::size_t>(1, kBatchRecords / kTriangleChunk);
+    const std::size_t slice = std::max<std::size_t>(1, kBatchTiny / kTriangleChunk);
     for (std::size_t c0 = 0; c0 < chunks; c0 += slice) {
       const std::size_t c1 = std::min(chunks, c0 + slice);
       if (s_.pool.size() < used_ + (c1 - c0)) s_.pool.resize(used_ + (c1 - c0));
@@ -99,11 +102,12 @@ class BinnedFrame {
        }
       }, tbb::static_partitioner());
       for (std::size_t c = c0; c < c1; ++c) {
-        const std::size_t n = s_.pool[used_++].drawn;
-        batched_ += n;
-        stats_.trianglesDrawn += n;
+        const Renderer::State::Chunk& chunk = s_.pool[used_++];
+        batchedRecords_ += chunk.records.size();
+        batchedTiny_ += chunk.drawn - chunk.records.size();
+        stats_.trianglesDrawn += chunk.drawn;
       }
-      if (batched_ >= kBatchRecords) flush();
+      if (batchedRecords_ >= kBatchRecords || batchedTiny_ >= kBatchTiny) flush();
     }
   }
 
@@ -112,7 +116,7 @@ class BinnedFrame {
   // The affinity partitioner gives a tile to the thread that drew it in the previous flush, while
   // its pixels are still in that core's cache.
   void flush() {
-    if (batched_ == 0) return;
+    if (used_ == 0) return;
     tbb::parallel_for(
         tbb::blocked_range<int>(0, tiles_.tileCount()),
         [&](const tbb::blocked_range<int>& range) {
@@ -120,7 +124,7 @@ class BinnedFrame {
         },
         s_.tileAffinity);
     used_ = 0;
-    batched_ = 0;
+    batchedRecords_ = batchedTiny_ = 0;
   }
 
   void drawTile(int tile) {
@@ -130,7 +134,8 @@ class BinnedFrame {
     list.surfaces.clear();
     for (std::size_t c = 0; c < used_; ++c) {
       const Renderer::State::Chunk& chunk = s_.pool[c];
-      // (A batch holds far fewer records than a fragment's tag can count: kBatchRecords plus a slice.)
+      // (A batch holds far fewer records than a tiny pixel's tag can count: kBatchRecords plus a
+      // slice of chunks.)
       const auto before = std::uint32_t(list.records.size());
       chunk.bins.fragments.forEachRun(tile, [&](const TinyFragment* first, std::uint32_t count) {
         list.fragments.push_back({first, count, before});
@@ -166,7 +171,7 @@ class BinnedFrame {
   const FrameContext& frame_;
   DrawTarget target_;
   TileBins tiles_;  // only its tile rectangles: the records are binned per chunk
-  std::size_t used_ = 0, batched_ = 0;
+  std::size_t used_ = 0, batchedRecords_ = 0, batchedTiny_ = 0;
   RenderStats stats_;
 };
 
