@@ -37,6 +37,8 @@ std::size_t rasterizeDepth(const TriangleSetup& t, const PixelRect& tile, Real* 
 #include "raster/tile_raster.h"
 
 #include <algorithm>
+#include <cstddef>
+#include <type_traits>
 
 HWY_BEFORE_NAMESPACE();
 namespace illum::HWY_NAMESPACE {
@@ -132,9 +134,13 @@ HWY_INLINE std::size_t DepthPass(const TriangleSetup& t, const PixelRect& tile, 
 // A small triangle's depth pass two rows at a time: a float vector holds twice as many lanes as a
 // double one, so each vector is a block of two rows of Lanes(DR) pixels, tested and depth-compared
 // whole, then handed to `write` one row at a time. Same values as DepthPass<true>.
-template <class Write>
+//
+// With `wide`, wide(at0, at1, pass0, pass1, l0, l1, l2) is handed the whole block instead: its
+// lower half is the row at tile index at0, its upper half the row at at1, pass0 and pass1 the
+// halves' masks (the work per pixel then runs on twice the lanes).
+template <class Write, class Wide = std::nullptr_t>
 HWY_INLINE std::size_t DepthPassTwoRows(const TriangleSetup& t, const PixelRect& tile, Real* depth,
-                                        const Write& write) {
+                                        const Write& write, const Wide& wide = nullptr) {
   const int minX = std::max(t.minX, tile.minX), maxX = std::min(t.maxX, tile.maxX);
   const int minY = std::max(t.minY, tile.minY), maxY = std::min(t.maxY, tile.maxY);
   if (minX > maxX || minY > maxY) return 0;
@@ -194,6 +200,13 @@ HWY_INLINE std::size_t DepthPassTwoRows(const TriangleSetup& t, const PixelRect&
       if (hn::AllFalse(df, pass)) continue;
       MR pass0, pass1;
       halves(pass, pass0, pass1);
+      if constexpr (!std::is_same_v<Wide, std::nullptr_t>) {
+        hn::BlendedStore(hn::LowerHalf(dh, z), pass0, dh, depth + row0 + x);
+        hn::BlendedStore(hn::UpperHalf(dh, z), pass1, dh, depth + row1 + x);
+        wide(row0 + x, row1 + x, pass0, pass1, l0, l1, l2);
+        passed += hn::CountTrue(df, pass);
+        continue;
+      }
       const int rowOfHalf[2] = {row0, row1};
       const MR passOfHalf[2] = {pass0, pass1};
       for (int h = 0; h < 2; ++h) {
@@ -247,8 +260,9 @@ HWY_INLINE std::size_t DepthPassFewPixels(const TriangleSetup& t, int minX, int 
 // Triangles whose pixels in the tile are at most this many go one pixel at a time.
 constexpr int kFewPixels = 4;
 
-template <class Write>
-HWY_INLINE std::size_t DepthPass(const TriangleSetup& t, const PixelRect& tile, Real* depth, const Write& write) {
+template <class Write, class Wide = std::nullptr_t>
+HWY_INLINE std::size_t DepthPass(const TriangleSetup& t, const PixelRect& tile, Real* depth, const Write& write,
+                                 const Wide& wide = nullptr) {
   {
     const int minX = std::max(t.minX, tile.minX), maxX = std::min(t.maxX, tile.maxX);
     const int minY = std::max(t.minY, tile.minY), maxY = std::min(t.maxY, tile.maxY);
@@ -257,7 +271,9 @@ HWY_INLINE std::size_t DepthPass(const TriangleSetup& t, const PixelRect& tile, 
       return DepthPassFewPixels(t, minX, maxX, minY, maxY, tile, depth, write);
   }
 #if HWY_TARGET != HWY_SCALAR
-  if (sizeof(Real) == 4 && t.floatExact) return DepthPassTwoRows(t, tile, depth, write);
+  if (sizeof(Real) == 4 && t.floatExact) return DepthPassTwoRows(t, tile, depth, write, wide);
+#else
+  (void)wide;
 #endif
   if (sizeof(Real) == 4 && t.floatExact) return DepthPass<true>(t, tile, depth, write);
   return DepthPass<false>(t, tile, depth, write);
@@ -295,17 +311,28 @@ HWY_INLINE void PerspectiveWeights(const TriangleSetup& t, V l0, V l1, V l2, V (
   p[0] = q0 * inv, p[1] = q1 * inv, p[2] = q2 * inv;
 }
 
-// gouraudColor, lane by lane, as RGBA8 pixels. Three alphas of exactly 1 (`opaque`) blend to
-// within a few ulps of 1, which converts to 255 every time.
+// gouraudColor, lane by lane (c[3] only unless `opaque`).
 template <class V>
-HWY_INLINE auto GouraudPixels(const TriangleSetup& t, const Color4* lit, bool opaque, V l0, V l1, V l2) {
+HWY_INLINE void GouraudColors(const TriangleSetup& t, const Color4* lit, bool opaque, V l0, V l1, V l2, V (&c)[4]) {
   const hn::DFromV<V> dr;
   V p[3];
   PerspectiveWeights(t, l0, l1, l2, p);
-  V c[4];
   for (int k = 0; k < (opaque ? 3 : 4); ++k)
     c[k] = p[0] * hn::Set(dr, lit[0][k]) + p[1] * hn::Set(dr, lit[1][k]) + p[2] * hn::Set(dr, lit[2][k]);
+}
+
+// Colours as RGBA8 pixels. Three alphas of exactly 1 (`opaque`) blend to within a few ulps of 1,
+// which converts to 255 every time.
+template <class D, class V>
+HWY_INLINE auto PackColors(D dr, bool opaque, const V (&c)[4]) {
   return opaque ? PackUnorm8(dr, c[0], c[1], c[2], 255u) : PackUnorm8(dr, c[0], c[1], c[2], c[3]);
+}
+
+template <class V>
+HWY_INLINE auto GouraudPixels(const TriangleSetup& t, const Color4* lit, bool opaque, V l0, V l1, V l2) {
+  V c[4];
+  GouraudColors(t, lit, opaque, l0, l1, l2, c);
+  return PackColors(hn::DFromV<V>(), opaque, c);
 }
 
 // Σ p_i · a_i in phongSurface's order (broadcasts from memory, folded into the multiplies).
@@ -345,11 +372,31 @@ HWY_INLINE bool Opaque(const Color4* lit) { return lit[0].a == 1 && lit[1].a == 
 std::size_t RasterizeGouraud(const TriangleSetup& t, const PixelRect& tile, Real* depth, std::uint32_t* color,
                              std::uint32_t* winners, const Color4* lit) {
   const bool opaque = Opaque(lit);
-  return DepthPass(t, tile, depth, [&](int at, auto pass, auto l0, auto l1, auto l2) {
+  const auto narrow = [&](int at, auto pass, auto l0, auto l1, auto l2) {
     const hn::Rebind<std::uint32_t, hn::DFromV<decltype(l0)>> du;
     hn::BlendedStore(GouraudPixels(t, lit, opaque, l0, l1, l2), hn::RebindMask(du, pass), du, color + at);
     ClearWinners(du, winners, at, pass);
+  };
+#if HWY_TARGET == HWY_SCALAR
+  return DepthPass(t, tile, depth, narrow);
+#else
+  // Colours on the whole block, converted half by half (the conversion runs in double lanes).
+  return DepthPass(t, tile, depth, narrow, [&](int at0, int at1, MR pass0, MR pass1, auto l0, auto l1, auto l2) {
+    const DR dh;
+    const DU du;
+    using V = decltype(l0);
+    V c[4];
+    GouraudColors(t, lit, opaque, l0, l1, l2, c);
+    const VR low[4] = {hn::LowerHalf(dh, c[0]), hn::LowerHalf(dh, c[1]), hn::LowerHalf(dh, c[2]),
+                       opaque ? VR() : hn::LowerHalf(dh, c[3])};
+    const VR high[4] = {hn::UpperHalf(dh, c[0]), hn::UpperHalf(dh, c[1]), hn::UpperHalf(dh, c[2]),
+                        opaque ? VR() : hn::UpperHalf(dh, c[3])};
+    hn::BlendedStore(PackColors(dh, opaque, low), hn::RebindMask(du, pass0), du, color + at0);
+    hn::BlendedStore(PackColors(dh, opaque, high), hn::RebindMask(du, pass1), du, color + at1);
+    ClearWinners(du, winners, at0, pass0);
+    ClearWinners(du, winners, at1, pass1);
   });
+#endif
 }
 
 // Lane k of a tiny triangle's bounds, w pixels wide: column k mod w, row k / w, and its offset in
@@ -473,22 +520,40 @@ std::size_t CoverTinySurface(const TriangleSetup& t, const SurfaceVertices& v, s
 
 std::size_t RasterizeSurface(const TriangleSetup& t, const PixelRect& tile, Real* depth, const SurfaceVertices& v,
                              const SurfaceTile& out) {
-  return DepthPass(t, tile, depth, [&](int at, auto pass, auto l0, auto l1, auto l2) {
+  // The planes of the pixels where `pass` (per half: StoreRows) holds.
+  const auto keep = [&](const auto& store, auto l0, auto l1, auto l2) {
     using V = decltype(l0);
-    const hn::DFromV<V> dr;
-    const hn::Rebind<std::uint32_t, decltype(dr)> du;
     V p[3];
     PerspectiveWeights(t, l0, l1, l2, p);
     const SurfaceLanes<V> s = SurfaceAt(v, p);
-    for (int c = 0; c < 3; ++c) {
-      hn::BlendedStore(s.position[c], pass, dr, out.position[c] + at);
-      hn::BlendedStore(s.normal[c], pass, dr, out.normal[c] + at);
-    }
+    for (int c = 0; c < 3; ++c) store(s.position[c], out.position[c]), store(s.normal[c], out.normal[c]);
     if (v.colors)
-      for (int c = 0; c < 4; ++c)
-        hn::BlendedStore(Blend(p, v.color[0][c], v.color[1][c], v.color[2][c]), pass, dr, out.color[c] + at);
+      for (int c = 0; c < 4; ++c) store(Blend(p, v.color[0][c], v.color[1][c], v.color[2][c]), out.color[c]);
+  };
+  const auto owner = [&](auto dr, int at, auto pass) {
+    const hn::Rebind<std::uint32_t, decltype(dr)> du;
     hn::BlendedStore(hn::Set(du, v.owner), hn::RebindMask(du, pass), du, out.owner + at);
+  };
+  const auto narrow = [&](int at, auto pass, auto l0, auto l1, auto l2) {
+    const hn::DFromV<decltype(l0)> dr;
+    keep([&](auto value, Real* plane) { hn::BlendedStore(value, pass, dr, plane + at); }, l0, l1, l2);
+    owner(dr, at, pass);
+  };
+#if HWY_TARGET == HWY_SCALAR
+  return DepthPass(t, tile, depth, narrow);
+#else
+  return DepthPass(t, tile, depth, narrow, [&](int at0, int at1, MR pass0, MR pass1, auto l0, auto l1, auto l2) {
+    const DR dh;
+    keep(
+        [&](auto value, Real* plane) {
+          hn::BlendedStore(hn::LowerHalf(dh, value), pass0, dh, plane + at0);
+          hn::BlendedStore(hn::UpperHalf(dh, value), pass1, dh, plane + at1);
+        },
+        l0, l1, l2);
+    owner(dh, at0, pass0);
+    owner(dh, at1, pass1);
   });
+#endif
 }
 
 }  // namespace illum::HWY_NAMESPACE
