@@ -143,19 +143,6 @@ class PhongBatch {
   std::uint32_t object_ = 0;
 };
 
-#if !ILLUM_USE_DOUBLE
-// Flat and Gouraud coloured in the depth pass itself; `winners` (or null) cleared where drawn.
-std::size_t drawColored(const DrawTarget& target, const DrawRecord& r, const PixelRect& rect, Real* depth,
-                        std::uint32_t* color, std::uint32_t* winners) {
-  if (target.frame.shading == Shading::Flat) {
-    return rasterizeFlat(r.setup, rect, depth, color, winners, packUnorm8(r.flat));
-  }
-  const AttributeLayout& l = target.layout(r);
-  const Color4 lit[3] = {VertexValues{r.vertex(0, l), l}.lit(), VertexValues{r.vertex(1, l), l}.lit(),
-                         VertexValues{r.vertex(2, l), l}.lit()};
-  return rasterizeGouraud(r.setup, rect, depth, color, winners, lit);
-}
-
 // Where a tiny triangle's pixel passes the depth test: depth[at] = z, and then write(at, pixel).
 template <class Pixel, class Write>
 class TinyDrawer {
@@ -187,6 +174,19 @@ class TinyDrawer {
   std::size_t run_ = 0;
   std::uint32_t next_ = 0;
 };
+
+#if !ILLUM_USE_DOUBLE
+// Flat and Gouraud coloured in the depth pass itself; `winners` (or null) cleared where drawn.
+std::size_t drawColored(const DrawTarget& target, const DrawRecord& r, const PixelRect& rect, Real* depth,
+                        std::uint32_t* color, std::uint32_t* winners) {
+  if (target.frame.shading == Shading::Flat) {
+    return rasterizeFlat(r.setup, rect, depth, color, winners, packUnorm8(r.flat));
+  }
+  const AttributeLayout& l = target.layout(r);
+  const Color4 lit[3] = {VertexValues{r.vertex(0, l), l}.lit(), VertexValues{r.vertex(1, l), l}.lit(),
+                         VertexValues{r.vertex(2, l), l}.lit()};
+  return rasterizeGouraud(r.setup, rect, depth, color, winners, lit);
+}
 
 // Phong from the tile's visible surface: interpolated in the depth pass, lit once per pixel.
 std::size_t drawLitSurface(const DrawTarget& target, std::span<const DrawRecord* const> records,

@@ -45,7 +45,6 @@ HWY_INLINE hn::VFromD<hn::Rebind<std::int64_t, DD>> FixedPoint(V v) {
 void TransformVertices(const VertexTransform& t, const Vec3* positions, const Vec3* normals, std::size_t n,
                        TransformedVertices& out) {
   const DR d;
-  const hn::Rebind<std::uint32_t, DR> du;
   const std::size_t lanes = hn::Lanes(d);
   const Vec2 guard = guardBandScale(t.width, t.height);
   const VR gx = hn::Set(d, guard.x), gy = hn::Set(d, guard.y), zero = hn::Zero(d), one = hn::Set(d, Real(1));
@@ -84,12 +83,15 @@ void TransformVertices(const VertexTransform& t, const Vec3* positions, const Ve
     const VR& cz = clip[2];
     const VR& cw = clip[3];
     const auto finite = hn::And(hn::And(hn::IsFinite(cx), hn::IsFinite(cy)), hn::And(hn::IsFinite(cz), hn::IsFinite(cw)));
-    const auto bit = [&](auto beyond, unsigned b) { return hn::IfThenElseZero(hn::RebindMask(du, beyond), hn::Set(du, b)); };
+    // Each plane's bit as a Real (distinct powers of two add exactly), whatever the lane width.
+    const auto bit = [&](auto beyond, unsigned b) { return hn::IfThenElseZero(beyond, hn::Set(d, Real(b))); };
     const VR gxw = gx * cw, gyw = gy * cw;
-    const auto code = hn::Or(hn::Or(hn::Or(bit(cz + cw < zero, 1u), bit(hn::Neg(cz) + cw < zero, 2u)),
-                                    hn::Or(bit(cx + gxw < zero, 4u), bit(hn::Neg(cx) + gxw < zero, 8u))),
-                             hn::Or(bit(cy + gyw < zero, 16u), bit(hn::Neg(cy) + gyw < zero, 32u)));
-    hn::StoreU(hn::IfThenElse(hn::RebindMask(du, finite), code, hn::Set(du, kNotFinite)), du, out.outcode + i);
+    const VR code = ((bit(cz + cw < zero, 1u) + bit(hn::Neg(cz) + cw < zero, 2u)) +
+                     (bit(cx + gxw < zero, 4u) + bit(hn::Neg(cx) + gxw < zero, 8u))) +
+                    (bit(cy + gyw < zero, 16u) + bit(hn::Neg(cy) + gyw < zero, 32u));
+    HWY_ALIGN Real codes[hn::MaxLanes(DR())];
+    hn::Store(hn::IfThenElse(finite, code, hn::Set(d, Real(kNotFinite))), d, codes);
+    for (std::size_t k = 0; k < lanes; ++k) out.outcode[i + k] = std::uint32_t(codes[k]);
 
     // toWindow.
     const VR invW = one / cw;
