@@ -15,6 +15,7 @@
 #include <stb_image.h>
 
 #include <algorithm>
+#include <utility>
 #include <cmath>
 #include <map>
 #include <optional>
@@ -65,18 +66,37 @@ void dropUnusedVertices(Mesh& mesh) {
     for (std::uint32_t& i : *list) i = remap[i];
 }
 
-// One assimp mesh as an illum mesh, with normals chosen by `options`.
-Mesh convertMesh(const aiMesh& m, const fs::path& path, const ImportOptions& options, bool normalsArePerFace) {
+// Hands an assimp mesh's per-vertex and per-face arrays back once they are copied: a big mesh's
+// peak memory is then illum's copy, not both (the mesh keeps its name and material).
+void releaseMeshArrays(aiMesh& m) {
+  delete[] std::exchange(m.mVertices, nullptr);
+  delete[] std::exchange(m.mNormals, nullptr);
+  delete[] std::exchange(m.mTangents, nullptr);
+  delete[] std::exchange(m.mBitangents, nullptr);
+  for (auto& uv : m.mTextureCoords) delete[] std::exchange(uv, nullptr);
+  for (auto& c : m.mColors) delete[] std::exchange(c, nullptr);
+  delete[] std::exchange(m.mFaces, nullptr);
+  m.mNumVertices = 0;
+  m.mNumFaces = 0;
+}
+
+// One assimp mesh as an illum mesh, with normals chosen by `options`; the assimp mesh's arrays
+// are released (releaseMeshArrays) once copied.
+Mesh convertMesh(aiMesh& m, const fs::path& path, const ImportOptions& options, bool normalsArePerFace) {
   const std::string where = path.string() + ": mesh \"" + m.mName.C_Str() + "\"";
   Mesh mesh;
   mesh.positions.reserve(m.mNumVertices);
-  bool fileNormalsUsable = m.mNormals != nullptr;  // present, finite and non-zero everywhere
+  // Per-face normals (STL's) are replaced by generated ones unless the file's are asked for: not
+  // even copied then.
+  const aiVector3D* fileNormals = normalsArePerFace && options.normals == NormalMode::Auto ? nullptr : m.mNormals;
+  if (fileNormals) mesh.normals.reserve(m.mNumVertices);
+  bool fileNormalsUsable = fileNormals != nullptr;  // present, finite and non-zero everywhere
   for (unsigned v = 0; v < m.mNumVertices; ++v) {
     if (!finite(m.mVertices[v]))
       throw InputError(where + " vertex " + std::to_string(v) + ": expected a finite position");
     mesh.positions.push_back({m.mVertices[v].x, m.mVertices[v].y, m.mVertices[v].z});
-    if (m.mNormals) {
-      const aiVector3D& n = m.mNormals[v];
+    if (fileNormals) {
+      const aiVector3D& n = fileNormals[v];
       const Vec3 nv(n.x, n.y, n.z);
       const Real len = finite(n) ? glm::length(nv) : Real(0);
       fileNormalsUsable = fileNormalsUsable && len > Real(1e-12) && std::isfinite(len);
@@ -95,6 +115,7 @@ Mesh convertMesh(const aiMesh& m, const fs::path& path, const ImportOptions& opt
     }
   }
   // Triangles, line segments and points (SortByPType gives each kind a mesh of its own).
+  if (m.mPrimitiveTypes == aiPrimitiveType_TRIANGLE) mesh.indices.reserve(3 * std::size_t(m.mNumFaces));
   for (unsigned f = 0; f < m.mNumFaces; ++f) {
     const aiFace& face = m.mFaces[f];
     std::vector<std::uint32_t>& list =
@@ -108,9 +129,11 @@ Mesh convertMesh(const aiMesh& m, const fs::path& path, const ImportOptions& opt
     }
   }
 
+  const bool hadNormals = m.mNormals != nullptr;
+  releaseMeshArrays(m);
   dropUnusedVertices(mesh);
   // Usable means every vertex used has a finite, non-zero normal (stored as 0 if not).
-  if (m.mNormals)
+  if (fileNormals)
     fileNormalsUsable = std::none_of(mesh.normals.begin(), mesh.normals.end(), [](const Vec3& n) { return n == Vec3(0); });
   if (mesh.indices.empty()) {
     // Points and lines alone: lit with the file's normals (as GL lights GL_POINTS), else unlit;
@@ -122,7 +145,7 @@ Mesh convertMesh(const aiMesh& m, const fs::path& path, const ImportOptions& opt
     case NormalMode::Flat: generateFlatNormals(mesh); break;
     case NormalMode::Smooth: generateCreaseNormals(mesh, 180); break;
     case NormalMode::File:
-      if (!m.mNormals) {
+      if (!hadNormals) {
         generateCreaseNormals(mesh, options.creaseAngle);  // none to keep
       } else if (!fileNormalsUsable) {
         // Keep every usable normal; a zero one takes the mean of the faces at its vertex.
@@ -395,7 +418,7 @@ ImportedModel importModelInProcess(const fs::path& path, const ImportOptions& op
   const bool stl = lowerExtension(path) == ".stl";  // STL stores one normal per facet
   std::vector<std::shared_ptr<const Mesh>> meshes(scene->mNumMeshes);
   for (unsigned i = 0; i < scene->mNumMeshes; ++i) {
-    const aiMesh& m = *scene->mMeshes[i];
+    aiMesh& m = *scene->mMeshes[i];  // the importer's: released as it is converted
     meshes[i] = std::make_shared<const Mesh>(convertMesh(m, path, options, stl));
   }
   std::vector<Material> materials;
