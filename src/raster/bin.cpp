@@ -32,15 +32,9 @@ void TileBins::addRecord(const TriangleSetup& t, std::uint32_t index) {
 
 void TileBins::finish() {
   const std::size_t tiles = std::size_t(tileCount());
-  // Records: the counts are known; starts by prefix sum, then each pair to its place.
-  recordStart_.resize(tiles);
-  std::uint32_t at = 0;
-  for (std::size_t t = 0; t < tiles; ++t) recordStart_[t] = at, at += recordCount_[t];
-  sortedRecords_.resize(recordTiles_.size());
-  std::vector<std::uint32_t>& next = recordCount_;  // reused as cursors, then restored
-  for (std::size_t t = 0; t < tiles; ++t) next[t] = recordStart_[t];
-  for (const auto& [tile, index] : recordTiles_) sortedRecords_[next[tile]++] = index;
-  for (std::size_t t = 0; t < tiles; ++t) next[t] -= recordStart_[t];
+  using Entry = std::pair<std::uint32_t, std::uint32_t>;
+  sortByTile(recordTiles_, tiles, [](const Entry& e) { return e.first; }, [](const Entry& e) { return e.second; },
+             recordStart_, sortedRecords_);
   fragments.finish(tiles);
   surfaces.finish(tiles);
 }

@@ -22,6 +22,21 @@
 
 namespace illum {
 
+// A stable counting sort by tile: value(item) of each of `items` into `sorted`, tile by tile
+// (tileOf(item) < tiles), each tile's in the order appended; start[t] .. start[t + 1] are tile t's.
+template <class Item, class Sorted, class TileOf, class Value>
+void sortByTile(const std::vector<Item>& items, std::size_t tiles, TileOf tileOf, Value value,
+                std::vector<std::uint32_t>& start, std::vector<Sorted>& sorted) {
+  start.assign(tiles + 1, 0);
+  for (const Item& item : items) ++start[tileOf(item) + 1];
+  for (std::size_t t = 0; t < tiles; ++t) start[t + 1] += start[t];
+  sorted.resize(items.size());
+  for (const Item& item : items) sorted[start[tileOf(item)]++] = value(item);
+  // Each start was moved to its end: shift back by one tile.
+  for (std::size_t t = tiles; t > 0; --t) start[t] = start[t - 1];
+  start[0] = 0;
+}
+
 // One chunk's tiny pixels of one kind, in runs of one tile.
 template <class Pixel>
 class TinyRuns {
@@ -40,14 +55,7 @@ class TinyRuns {
   }
   // Sorts the runs by tile (of `tiles`).
   void finish(std::size_t tiles) {
-    start_.assign(tiles + 1, 0);
-    for (const Run& r : runs_) ++start_[r.tile + 1];
-    for (std::size_t t = 0; t < tiles; ++t) start_[t + 1] += start_[t];
-    sorted_.resize(runs_.size());
-    for (const Run& r : runs_) sorted_[start_[r.tile]++] = r;
-    // Each start was moved to its end: shift back by one tile.
-    for (std::size_t t = tiles; t > 0; --t) start_[t] = start_[t - 1];
-    start_[0] = 0;
+    sortByTile(runs_, tiles, [](const Run& r) { return r.tile; }, [](const Run& r) { return r; }, start_, sorted_);
   }
   // f(first, count) for each run of the tile's pixels, in order.
   template <class F>
@@ -94,14 +102,16 @@ class TileBins {
   // Sorts what was appended by tile; then records(tile) and the tiny pixels' forEach hold it.
   void finish();
   std::span<const std::uint32_t> records(int tile) const {
-    return std::span(sortedRecords_).subspan(recordStart_[std::size_t(tile)], recordCount_[std::size_t(tile)]);
+    const std::size_t t = std::size_t(tile);
+    return std::span(sortedRecords_).subspan(recordStart_[t], recordStart_[t + 1] - recordStart_[t]);
   }
 
  private:
   int width_ = 0, height_ = 0, tilesX_ = 0, tilesY_ = 0;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> recordTiles_;  // (tile, record), as appended
-  // Sorted by tile: per tile, where its records start.
-  std::vector<std::uint32_t> recordCount_, recordStart_, sortedRecords_;
+  std::vector<std::uint32_t> recordCount_;  // per tile, as appended
+  // Sorted by tile: the record indices, and where each tile's start (and end, at tile + 1).
+  std::vector<std::uint32_t> recordStart_, sortedRecords_;
 };
 
 }  // namespace illum

@@ -92,7 +92,7 @@ std::size_t setupTriangles(const FrameContext& frame, const Object& object, std:
         if (frame.shading == Shading::Phong) {
           SurfaceVertices s;
           for (int k = 0; k < 3; ++k) s.position[k] = ordered[k]->eyePosition, s.normal[k] = ordered[k]->eyeNormal;
-          s.negate = frame.lightModel.twoSided && !r.setup.frontFacing;
+          s.negate = back;
           s.owner = objectIndex;
           bins.surfaces.commit(coverTinySurface(r.setup, s, bins.recordsIn(tile), bins.surfaces.room(kTinyRoom)), tile);
         } else if (frame.shading == Shading::Flat) {

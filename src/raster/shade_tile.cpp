@@ -191,8 +191,7 @@ std::size_t drawColored(const DrawTarget& target, const DrawRecord& r, const Pix
 // Phong from the tile's visible surface: interpolated in the depth pass, lit once per pixel.
 std::size_t drawLitSurface(const DrawTarget& target, std::span<const DrawRecord* const> records,
                            std::span<const TinyRun<TinySurface>> tiny, const PixelRect& rect, Real* depth,
-                           std::uint32_t* color,
-                           TileScratch& scratch) {
+                           std::uint32_t* color, TileScratch& scratch) {
   Real (&plane)[10][kTileBlock] = scratch.surface;
   const SurfaceTile out{{plane[0], plane[1], plane[2]},
                         {plane[3], plane[4], plane[5]},
