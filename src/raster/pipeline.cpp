@@ -25,7 +25,7 @@
 namespace illum {
 namespace {
 
-constexpr std::size_t kVertexGrain = 4096;       // vertices per parallel task
+constexpr std::size_t kVertexGrain = 512;        // vertices per parallel task
 constexpr std::size_t kTriangleChunk = 1024;     // triangles set up per parallel task
 // What is gathered before it is binned and drawn: records, or tiny triangles (whose pixels take
 // less memory than a record, but whose chunks each keep per-tile lists).
