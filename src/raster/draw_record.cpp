@@ -2,6 +2,9 @@
 
 #include "raster/clip.h"
 #include "raster/tile_raster.h"
+#include "raster/tiny_batch.h"
+
+#include <optional>
 
 #include <cstring>
 
@@ -68,6 +71,10 @@ std::size_t setupTriangles(const FrameContext& frame, const Object& object, std:
   const AttributeLayout& layout = out.layout();
   const auto& indices = object.mesh->indices;
   [[maybe_unused]] const bool tiny = binning && binning->tiny;
+#if !ILLUM_USE_DOUBLE
+  std::optional<TinyBatch> batch;
+  if (tiny && frame.shading != Shading::Phong) batch.emplace(binning->bins.fragments, frame.shading == Shading::Flat);
+#endif
   ClippedPolygon polygon;
   for (std::size_t t = first; t < last; ++t) {
     const std::size_t i = 3 * t;
@@ -95,14 +102,20 @@ std::size_t setupTriangles(const FrameContext& frame, const Object& object, std:
           s.negate = back;
           s.owner = objectIndex;
           bins.surfaces.commit(coverTinySurface(r.setup, s, bins.recordsIn(tile), bins.surfaces.room(kTinyRoom)), tile);
-        } else if (frame.shading == Shading::Flat) {
-          bins.fragments.commit(coverTinyFlat(r.setup, packUnorm8(back ? c.back : c.front), bins.recordsIn(tile),
-                                              bins.fragments.room(kTinyRoom)),
-                                tile);
         } else {
+          const bool flat = frame.shading == Shading::Flat;
           const Color4 lit[3] = {back ? ordered[0]->back : ordered[0]->front, back ? ordered[1]->back : ordered[1]->front,
                                  back ? ordered[2]->back : ordered[2]->front};
-          bins.fragments.commit(coverTinyGouraud(r.setup, lit, bins.recordsIn(tile), bins.fragments.room(kTinyRoom)), tile);
+          const std::uint32_t packed = flat ? packUnorm8(back ? c.back : c.front) : 0;
+          if (TinyBatch::joins(r.setup, flat ? nullptr : lit)) {
+            batch->add(r.setup, flat ? nullptr : lit, packed, bins.recordsIn(tile), tile);
+          } else {
+            batch->flush();  // its pixels come first
+            TinyFragment* room = bins.fragments.room(kTinyRoom);
+            bins.fragments.commit(flat ? coverTinyFlat(r.setup, packed, bins.recordsIn(tile), room)
+                                       : coverTinyGouraud(r.setup, lit, bins.recordsIn(tile), room),
+                                  tile);
+          }
         }
         out.drop();
         return;
@@ -128,6 +141,9 @@ std::size_t setupTriangles(const FrameContext& frame, const Object& object, std:
     const auto& v = polygon.vertex;
     for (std::size_t k = 1; k + 1 < polygon.size; ++k) emit(v[0], v[k], v[k + 1], std::uint32_t(k));
   }
+#if !ILLUM_USE_DOUBLE
+  if (batch) batch->flush();
+#endif
   return drawn;
 }
 

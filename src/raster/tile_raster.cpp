@@ -31,7 +31,7 @@ std::size_t rasterizeDepth(const TriangleSetup& t, const PixelRect& tile, Real* 
 
 #include <hwy/highway.h>
 
-#include "math/unorm8-inl.h"
+#include "raster/interpolate-inl.h"
 
 #include "raster/framebuffer.h"
 #include "raster/tile_raster.h"
@@ -302,13 +302,11 @@ std::size_t RasterizeFlat(const TriangleSetup& t, const PixelRect& tile, Real* d
   });
 }
 
-// perspectiveWeights (fragment.h), lane by lane.
+// perspectiveWeights (fragment.h), lane by lane, for one triangle.
 template <class V>
 HWY_INLINE void PerspectiveWeights(const TriangleSetup& t, V l0, V l1, V l2, V (&p)[3]) {
   const hn::DFromV<V> dr;
-  const V q0 = l0 * hn::Set(dr, t.invW[0]), q1 = l1 * hn::Set(dr, t.invW[1]), q2 = l2 * hn::Set(dr, t.invW[2]);
-  const V inv = hn::Set(dr, Real(1)) / (q0 + q1 + q2);
-  p[0] = q0 * inv, p[1] = q1 * inv, p[2] = q2 * inv;
+  PerspectiveWeights(l0, l1, l2, hn::Set(dr, t.invW[0]), hn::Set(dr, t.invW[1]), hn::Set(dr, t.invW[2]), p);
 }
 
 // gouraudColor, lane by lane (c[3] only unless `opaque`).
@@ -318,14 +316,7 @@ HWY_INLINE void GouraudColors(const TriangleSetup& t, const Color4* lit, bool op
   V p[3];
   PerspectiveWeights(t, l0, l1, l2, p);
   for (int k = 0; k < (opaque ? 3 : 4); ++k)
-    c[k] = p[0] * hn::Set(dr, lit[0][k]) + p[1] * hn::Set(dr, lit[1][k]) + p[2] * hn::Set(dr, lit[2][k]);
-}
-
-// Colours as RGBA8 pixels. Three alphas of exactly 1 (`opaque`) blend to within a few ulps of 1,
-// which converts to 255 every time.
-template <class D, class V>
-HWY_INLINE auto PackColors(D dr, bool opaque, const V (&c)[4]) {
-  return opaque ? PackUnorm8(dr, c[0], c[1], c[2], 255u) : PackUnorm8(dr, c[0], c[1], c[2], c[3]);
+    c[k] = Blend(p, hn::Set(dr, lit[0][k]), hn::Set(dr, lit[1][k]), hn::Set(dr, lit[2][k]));
 }
 
 template <class V>
@@ -335,11 +326,11 @@ HWY_INLINE auto GouraudPixels(const TriangleSetup& t, const Color4* lit, bool op
   return PackColors(hn::DFromV<V>(), opaque, c);
 }
 
-// Σ p_i · a_i in phongSurface's order (broadcasts from memory, folded into the multiplies).
+// Σ p_i · a_i of one triangle's values.
 template <class V>
 HWY_INLINE V Blend(const V (&p)[3], Real a0, Real a1, Real a2) {
   const hn::DFromV<V> dr;
-  return p[0] * hn::Set(dr, a0) + p[1] * hn::Set(dr, a1) + p[2] * hn::Set(dr, a2);
+  return Blend(p, hn::Set(dr, a0), hn::Set(dr, a1), hn::Set(dr, a2));
 }
 
 // phongSurface's position and renormalized normal (negated for a back face under two-sided
@@ -382,39 +373,18 @@ std::size_t RasterizeGouraud(const TriangleSetup& t, const PixelRect& tile, Real
 #else
   // Colours on the whole block, converted half by half (the conversion runs in double lanes).
   return DepthPass(t, tile, depth, narrow, [&](int at0, int at1, MR pass0, MR pass1, auto l0, auto l1, auto l2) {
-    const DR dh;
     const DU du;
     using V = decltype(l0);
     V c[4];
     GouraudColors(t, lit, opaque, l0, l1, l2, c);
-    const VR low[4] = {hn::LowerHalf(dh, c[0]), hn::LowerHalf(dh, c[1]), hn::LowerHalf(dh, c[2]),
-                       opaque ? VR() : hn::LowerHalf(dh, c[3])};
-    const VR high[4] = {hn::UpperHalf(dh, c[0]), hn::UpperHalf(dh, c[1]), hn::UpperHalf(dh, c[2]),
-                        opaque ? VR() : hn::UpperHalf(dh, c[3])};
-    hn::BlendedStore(PackColors(dh, opaque, low), hn::RebindMask(du, pass0), du, color + at0);
-    hn::BlendedStore(PackColors(dh, opaque, high), hn::RebindMask(du, pass1), du, color + at1);
+    const auto packed = PackColorsWide(hn::DFromV<V>(), opaque, c);
+    hn::BlendedStore(hn::LowerHalf(du, packed), hn::RebindMask(du, pass0), du, color + at0);
+    hn::BlendedStore(hn::UpperHalf(du, packed), hn::RebindMask(du, pass1), du, color + at1);
     ClearWinners(du, winners, at0, pass0);
     ClearWinners(du, winners, at1, pass1);
   });
 #endif
 }
-
-// Lane k of a tiny triangle's bounds, w pixels wide: column k mod w, row k / w, and its offset in
-// the tile from the bounds' first pixel.
-struct TinyLanes {
-  float column[kTinyPixels + 1][kTinyPixels], row[kTinyPixels + 1][kTinyPixels];
-  std::uint32_t offset[kTinyPixels + 1][kTinyPixels];
-};
-constexpr TinyLanes MakeTinyLanes() {
-  TinyLanes lanes{};
-  for (int w = 1; w <= kTinyPixels; ++w)
-    for (int k = 0; k < kTinyPixels; ++k) {
-      lanes.column[w][k] = float(k % w), lanes.row[w][k] = float(k / w);
-      lanes.offset[w][k] = std::uint32_t((k / w) * kTileSize + k % w);
-    }
-  return lanes;
-}
-constexpr TinyLanes kTinyLanes = MakeTinyLanes();
 
 // A tiny triangle's covered pixels, without a depth test: visit(d, inside, l0, l1, l2, z, offset)
 // for each vector of them, `offset` holding each lane's pixel from the bounds' first pixel in the

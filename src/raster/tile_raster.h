@@ -32,7 +32,6 @@ std::size_t rasterizeDepth(const TriangleSetup& t, const PixelRect& tile, Real* 
 // visible surface as rasterizeSurface would keep it (coverTinySurface, for a triangle without
 // vertex colours). They return how many they wrote (at most kTinyPixels), in rows from the
 // bottom. Float channels only.
-constexpr int kTinyPixels = 8;
 constexpr std::size_t kTinyRoom = kTinyPixels;
 inline bool isTiny(const TriangleSetup& t) {
   return (t.maxX - t.minX + 1) * (t.maxY - t.minY + 1) <= kTinyPixels && t.minX / kTileSize == t.maxX / kTileSize &&

@@ -4,6 +4,8 @@
 // surface there, to be lit with the tile's other pixels.
 #pragma once
 
+#include "raster/framebuffer.h"
+
 #include <illum/real.h>
 
 #include <cstdint>
@@ -18,6 +20,26 @@ struct TinyTag {
   static std::uint32_t pixel(std::uint32_t tag) { return tag & ((1u << kPixelBits) - 1); }
   static std::uint32_t recordsBefore(std::uint32_t tag) { return tag >> kPixelBits; }
 };
+
+// A tiny triangle's bounds hold at most kTinyPixels pixel centres (tile_raster.h: isTiny).
+constexpr int kTinyPixels = 8;
+
+// Lane k of a tiny triangle's bounds, w pixels wide: column k mod w, row k / w, and its offset in
+// the tile from the bounds' first pixel.
+struct TinyLanes {
+  float column[kTinyPixels + 1][kTinyPixels], row[kTinyPixels + 1][kTinyPixels];
+  std::uint32_t offset[kTinyPixels + 1][kTinyPixels];
+};
+constexpr TinyLanes makeTinyLanes() {
+  TinyLanes lanes{};
+  for (int w = 1; w <= kTinyPixels; ++w)
+    for (int k = 0; k < kTinyPixels; ++k) {
+      lanes.column[w][k] = float(k % w), lanes.row[w][k] = float(k / w);
+      lanes.offset[w][k] = std::uint32_t((k / w) * kTileSize + k % w);
+    }
+  return lanes;
+}
+alignas(64) inline constexpr TinyLanes kTinyLanes = makeTinyLanes();
 
 struct TinyFragment {
   std::uint32_t tag;
