@@ -90,6 +90,7 @@ class TileBins {
   int tileCount() const { return tilesX_ * tilesY_; }
   PixelRect tileRect(int tile) const;
   int tileOf(int x, int y) const { return (y / kTileSize) * tilesX_ + x / kTileSize; }
+  int tilesX() const { return tilesX_; }
 
   // Appends record `index` (whose triangle is `t`) to every tile its pixel bounding box overlaps.
   void addRecord(const TriangleSetup& t, std::uint32_t index);

@@ -74,13 +74,16 @@ std::size_t setupTriangles(const FrameContext& frame, const Object& object, std:
 #if !ILLUM_USE_DOUBLE
   std::optional<TinyBatch> batch;
   if (tiny && frame.shading != Shading::Phong) batch.emplace(binning->bins.fragments, frame.shading == Shading::Flat);
+  // While a group of triangles set up at once (below) holds the batch's lanes, a tiny triangle
+  // that comes one by one is covered alone.
+  bool grouping = false;
 #endif
   ClippedPolygon polygon;
-  for (std::size_t t = first; t < last; ++t) {
+  const auto oneByOne = [&](std::size_t t) {
     const std::size_t i = 3 * t;
     const ShadedVertex &a = vertices[indices[i]], &b = vertices[indices[i + 1]], &c = vertices[indices[i + 2]];
     const ClipResult kind = classifyTriangle(a, b, c, frame.width, frame.height);
-    if (kind == ClipResult::Outside) continue;
+    if (kind == ClipResult::Outside) return;
     // c is the provoking vertex: flat shading shows its colour on every piece.
     const auto emit = [&](const ShadedVertex& v0, const ShadedVertex& v1, const ShadedVertex& v2, std::uint32_t piece) {
       DrawRecord& r = out.append();
@@ -107,7 +110,7 @@ std::size_t setupTriangles(const FrameContext& frame, const Object& object, std:
           const Color4 lit[3] = {back ? ordered[0]->back : ordered[0]->front, back ? ordered[1]->back : ordered[1]->front,
                                  back ? ordered[2]->back : ordered[2]->front};
           const std::uint32_t packed = flat ? packUnorm8(back ? c.back : c.front) : 0;
-          if (TinyBatch::joins(r.setup, flat ? nullptr : lit)) {
+          if (!grouping && TinyBatch::joins(r.setup, flat ? nullptr : lit)) {
             batch->add(r.setup, flat ? nullptr : lit, packed, bins.recordsIn(tile), tile);
           } else {
             batch->flush();  // its pixels come first
@@ -134,15 +137,57 @@ std::size_t setupTriangles(const FrameContext& frame, const Object& object, std:
     };
     if (kind == ClipResult::Inside) {
       emit(a, b, c, 0);
-      continue;
+      return;
     }
-    if (clipTriangle({a, b, c}, frame.width, frame.height, polygon) == ClipResult::Outside) continue;
+    if (clipTriangle({a, b, c}, frame.width, frame.height, polygon) == ClipResult::Outside) return;
     // The clipped polygon is convex: draw it as a fan.
     const auto& v = polygon.vertex;
     for (std::size_t k = 1; k + 1 < polygon.size; ++k) emit(v[0], v[k], v[k + 1], std::uint32_t(k));
-  }
+  };
 #if !ILLUM_USE_DOUBLE
+  if (batch && frame.sample.x == 0 && frame.sample.y == 0) {
+    // Groups of triangles set up at once: the tiny ones join the batch in order, those that
+    // cover nothing are dropped, the rest go one by one (which flushes the batch before it
+    // appends tiny pixels of its own). Where few are tiny (a coarser mesh, or one seen close),
+    // the next groups go one by one instead. Either way the same pixels in the same order.
+    const TinyGroupSource source{vertices.data(), nullptr, frame.width, frame.height, binning->bins.tilesX(),
+                                 frame.lightModel.twoSided, frame.shading == Shading::Flat};
+    const std::size_t group = std::size_t(tinyGroupCapacity());
+    constexpr int kMostOneByOne = 5;  // at most 2^5 − 1 groups one by one between tries
+    int oneByOneGroups = 0, fewInARow = 0;
+    for (std::size_t t0 = first; t0 < last; t0 += group) {
+      const int count = int(std::min(group, last - t0));
+      batch->flush();
+      if (oneByOneGroups > 0) {
+        --oneByOneGroups;
+        grouping = false;
+        for (int j = 0; j < count; ++j) oneByOne(t0 + std::size_t(j));
+        continue;
+      }
+      grouping = true;
+      TinyGroupSource at = source;
+      at.indices = indices.data() + 3 * t0;
+      std::uint32_t fast = 0, empty = 0;
+      batch->setGroupUp(at, count, fast, empty);
+      for (int j = 0; j < count; ++j) {
+        if (fast >> j & 1) {
+          batch->take(j, binning->bins.recordsIn(batch->groupTile(j)));
+          ++drawn;
+        } else if (!(empty >> j & 1)) {
+          oneByOne(t0 + std::size_t(j));
+        }
+      }
+      // Each group in a row with few tiny triangles sends twice as many after it one by one.
+      if (2 * __builtin_popcount(fast | empty) >= count) fewInARow = 0;
+      else oneByOneGroups = (1 << std::min(++fewInARow, kMostOneByOne)) - 1;
+    }
+    batch->flush();
+    return drawn;
+  }
+  for (std::size_t t = first; t < last; ++t) oneByOne(t);
   if (batch) batch->flush();
+#else
+  for (std::size_t t = first; t < last; ++t) oneByOne(t);
 #endif
   return drawn;
 }

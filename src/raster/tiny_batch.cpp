@@ -23,7 +23,8 @@ namespace hn = hwy::HWY_NAMESPACE;
 // edge values c·A + r·B from the first pixel's, exact in float as in VisitTiny, then barycentrics,
 // depth and colour as the tile rasterizer has them. The covered slots are compressed and stored
 // as fragments, so they keep the slots' order.
-std::size_t CoverTinyBatch(const TinyBatchLanes& b, int size, bool flat, TinyFragment* out, std::uint8_t* covered) {
+std::size_t CoverTinyBatch(const TinyBatchLanes& b, std::uint32_t members, bool flat, TinyFragment* out,
+                           std::uint8_t* covered) {
   static_assert(sizeof(TinyFragment) == 3 * sizeof(std::uint32_t));
   const hn::ScalableTag<float> df;
   const hn::RebindToUnsigned<decltype(df)> du;
@@ -34,18 +35,20 @@ std::size_t CoverTinyBatch(const TinyBatchLanes& b, int size, bool flat, TinyFra
   static_assert(TinyBatchLanes::kCapacity % kGroupMax == 0);
   const int group = std::min<int>(kGroupMax, int(hn::Lanes(df)));
   constexpr int kSlots = kGroupMax * kTinyPixels;
-  static_assert(kSlots <= 128, "a group's coverage is one 128-bit mask");
+  static_assert(kSlots <= 128, "a group's coverage fits `inside`");
   const VF zero = hn::Zero(df);
   std::size_t n = 0;
-  for (int g = 0; g < size; g += group) {
-    const int members = std::min(group, size - g);
+  for (int g = 0; g < TinyBatchLanes::kCapacity; g += group) {
+    const std::uint32_t inGroup = (members >> g) & ((1u << group) - 1);
+    if (inGroup == 0) continue;
     // Slot s: triangle slotOf[s] of the group, pixel (column, row) of its bounds.
     HWY_ALIGN std::int32_t slotOf[kSlots + kGroupMax];
     HWY_ALIGN float column[kSlots + kGroupMax], row[kSlots + kGroupMax];
     HWY_ALIGN std::uint32_t offset[kSlots + kGroupMax];
-    int start[kGroupMax + 1];
+    int start[kGroupMax];
     int slots = 0;
-    for (int j = 0; j < members; ++j) {
+    for (std::uint32_t m = inGroup; m != 0; m &= m - 1) {
+      const int j = __builtin_ctz(m);
       const int w = b.width[g + j];
       for (int k = 0; k < kTinyPixels; ++k) {  // a whole row of the tables: no branch per pixel
         slotOf[slots + k] = j;
@@ -95,7 +98,8 @@ std::size_t CoverTinyBatch(const TinyBatchLanes& b, int size, bool flat, TinyFra
       for (int k = 0; k < (group + 7) / 8; ++k) word |= std::uint64_t(bits[k]) << (8 * k);
       inside[s0 / 64] |= word << (s0 % 64);  // a vector's slots never straddle two words
     }
-    for (int j = 0; j < members; ++j) {
+    for (std::uint32_t m = inGroup; m != 0; m &= m - 1) {
+      const int j = __builtin_ctz(m);
       const int word = start[j] / 64, bit = start[j] % 64;
       std::uint64_t bits = inside[word] >> bit;
       if (bit > 64 - kTinyPixels) bits |= inside[word + 1] << (64 - bit);
@@ -105,6 +109,143 @@ std::size_t CoverTinyBatch(const TinyBatchLanes& b, int size, bool flat, TinyFra
   return n;
 }
 
+
+// setupTriangle (setup.cpp) and TinyBatch::add over lanes, one triangle per double lane: the
+// window coordinates are integers of at most 2^23 (the guard band, clip.h) whose products and sums
+// here stay below 2^53, so every integer of the scalar setup is exact in double; the float values
+// are rounded from them once, as the scalar conversions round.
+int TinyGroupCapacity() {
+  return std::min<int>(TinyBatchLanes::kCapacity, int(hn::Lanes(hn::ScalableTag<float>())));
+}
+
+void SetupTinyGroup(const TinyGroupSource& src, int count, TinyBatchLanes& b, int* tileOut, std::uint32_t& fastOut,
+                    std::uint32_t& emptyOut) {
+  constexpr int kN = TinyBatchLanes::kCapacity;
+  const hn::ScalableTag<double> dd;
+  const hn::Rebind<float, decltype(dd)> df;
+  const hn::Rebind<std::int32_t, decltype(dd)> di;
+  using VD = hn::VFromD<decltype(dd)>;
+  using MD = decltype(hn::FirstN(dd, 0));
+  const int lanes = int(hn::Lanes(dd));
+  // The triangles' vertices as rows of lanes (vertex k of triangle j at [k][j]).
+  HWY_ALIGN double x[3][kN], y[3][kN], z[3][kN], invW[3][kN], inside[kN];
+  HWY_ALIGN double front[3][4][kN], back[3][4][kN];
+  for (int j = 0; j < count; ++j) {
+    unsigned codes = 0;
+    for (int k = 0; k < 3; ++k) {
+      const ShadedVertex& v = src.vertices[src.indices[3 * j + k]];
+      codes |= v.outcode;  // kOutcodeUnknown is not 0
+      x[k][j] = double(v.window.x), y[k][j] = double(v.window.y);
+      z[k][j] = v.window.z, invW[k][j] = v.window.invW;
+      for (int c = 0; c < 4; ++c) front[k][c][j] = v.front[c];
+      if (src.twoSided)
+        for (int c = 0; c < 4; ++c) back[k][c][j] = v.back[c];
+    }
+    inside[j] = codes == 0 ? 1 : 0;
+  }
+  for (int j = count; j < kN; ++j) {  // the last vector's rest: outside, no values to trip over
+    inside[j] = 0;
+    for (int k = 0; k < 3; ++k) {
+      x[k][j] = y[k][j] = z[k][j] = invW[k][j] = 0;
+      for (int c = 0; c < 4; ++c) front[k][c][j] = back[k][c][j] = 0;
+    }
+  }
+  const VD zero = hn::Zero(dd), one = hn::Set(dd, 1.0);
+  const VD sub = hn::Set(dd, double(kSubpixelOne)), invSub = hn::Set(dd, 1.0 / double(kSubpixelOne));
+  const VD tileSize = hn::Set(dd, double(kTileSize)), invTile = hn::Set(dd, 1.0 / double(kTileSize));
+  HWY_ALIGN std::int32_t tile[kN], width[kN], pixels[kN], pixel[kN], backFace[kN];
+  std::uint32_t fast = 0, empty = 0;
+  for (int j0 = 0; j0 < count; j0 += lanes) {
+    VD X[3], Y[3];
+    for (int k = 0; k < 3; ++k) X[k] = hn::Load(dd, x[k] + j0), Y[k] = hn::Load(dd, y[k] + j0);
+    const VD area2 = (X[1] - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (Y[1] - Y[0]);
+    const VD minFx = hn::Min(hn::Min(X[0], X[1]), X[2]), maxFx = hn::Max(hn::Max(X[0], X[1]), X[2]);
+    const VD minFy = hn::Min(hn::Min(Y[0], Y[1]), Y[2]), maxFy = hn::Max(hn::Max(Y[0], Y[1]), Y[2]);
+    // Pixel centres inside the bounds: ⌈(f − ½)/1⌉ and ⌊(f − ½)/1⌋ in pixels, as setup's shifts.
+    const VD half = hn::Set(dd, double(kSubpixelOne / 2)), roundUp = hn::Set(dd, double(kSubpixelOne - 1));
+    const auto firstCentre = [&](VD f) { return hn::Floor((f - half + roundUp) * invSub); };
+    const auto lastCentre = [&](VD f) { return hn::Floor((f - half) * invSub); };
+    const VD minX = hn::Max(zero, firstCentre(minFx)), maxX = hn::Min(hn::Set(dd, src.width - 1.0), lastCentre(maxFx));
+    const VD minY = hn::Max(zero, firstCentre(minFy)), maxY = hn::Min(hn::Set(dd, src.height - 1.0), lastCentre(maxFy));
+    const MD in = hn::Load(dd, inside + j0) == one;
+    const MD covers = hn::And(hn::And(area2 != zero, minX <= maxX), minY <= maxY);
+    const MD swapped = area2 < zero;
+    // Counter-clockwise: vertices 1 and 2 swapped for a clockwise triangle.
+    const VD PX[3] = {X[0], hn::IfThenElse(swapped, X[2], X[1]), hn::IfThenElse(swapped, X[1], X[2])};
+    const VD PY[3] = {Y[0], hn::IfThenElse(swapped, Y[2], Y[1]), hn::IfThenElse(swapped, Y[1], Y[2])};
+    const VD w = maxX - minX + one, h = maxY - minY + one;
+    MD tiny = hn::And(w * h <= hn::Set(dd, double(kTinyPixels)),
+                      hn::And(hn::Floor(minX * invTile) == hn::Floor(maxX * invTile),
+                              hn::Floor(minY * invTile) == hn::Floor(maxY * invTile)));
+    const VD spanX = maxFx - minFx, spanY = maxFy - minFy;
+    const VD fx = minX * sub + half, fy = minY * sub + half;
+    for (int i = 0; i < 3; ++i) {  // edge i: from vertex i + 1 to vertex i + 2, opposite vertex i
+      const VD px = PX[(i + 1) % 3], py = PY[(i + 1) % 3], qx = PX[(i + 2) % 3], qy = PY[(i + 2) % 3];
+      const VD a = py - qy, bb = qx - px, c = hn::Neg(a * px + bb * py);
+      const MD left = qy < py, top = hn::And(qy == py, qx < px);
+      tiny = hn::And(tiny, hn::Abs(a) * spanX + hn::Abs(bb) * spanY <= hn::Set(dd, double(1 << 24)));
+      hn::Store(hn::DemoteTo(df, a * fx + bb * fy + c), df, b.edge[i] + j0);
+      hn::Store(hn::DemoteTo(df, a) * hn::Set(df, float(kSubpixelOne)), df, b.stepX[i] + j0);
+      hn::Store(hn::DemoteTo(df, bb) * hn::Set(df, float(kSubpixelOne)), df, b.stepY[i] + j0);
+      hn::Store(hn::DemoteTo(df, hn::IfThenZeroElse(hn::Or(left, top), hn::Set(dd, -1.0))), df, b.bias[i] + j0);
+    }
+    hn::Store(hn::Set(df, 1.0f) / hn::DemoteTo(df, hn::Abs(area2)), df, b.invArea + j0);
+    // The lit side: the back of a clockwise triangle under two-sided lighting.
+    const MD backSide = src.twoSided ? hn::Not(area2 > zero) : hn::FirstN(dd, 0);
+    MD opaque = hn::FirstN(dd, std::size_t(lanes));
+    for (int k = 0; k < 3; ++k) {
+      const int from = k == 0 ? 0 : (k == 1 ? 2 : 1);  // vertex k of the swapped order
+      const auto pick = [&](const double* rows) {
+        const VD kept = hn::Load(dd, rows + (k == 0 ? 0 : (k == 1 ? 1 : 2)) * kN + j0);
+        const VD other = hn::Load(dd, rows + from * kN + j0);
+        return k == 0 ? kept : hn::IfThenElse(swapped, other, kept);
+      };
+      hn::Store(hn::DemoteTo(df, pick(&z[0][0])), df, b.z[k] + j0);
+      hn::Store(hn::DemoteTo(df, pick(&invW[0][0])), df, b.invW[k] + j0);
+      if (src.flat) continue;
+      for (int c = 0; c < 4; ++c) {
+        const auto channel = [&](const double (*rows)[4][kN]) {
+          const VD kept = hn::Load(dd, rows[k == 0 ? 0 : (k == 1 ? 1 : 2)][c] + j0);
+          const VD other = hn::Load(dd, rows[from][c] + j0);
+          return k == 0 ? kept : hn::IfThenElse(swapped, other, kept);
+        };
+        const VD value = src.twoSided ? hn::IfThenElse(backSide, channel(back), channel(front)) : channel(front);
+        if (c < 3) hn::Store(hn::DemoteTo(df, value), df, b.lit[c][k] + j0);
+        else opaque = hn::And(opaque, value == one);
+      }
+    }
+    const MD isFast = hn::And(hn::And(in, covers), hn::And(tiny, opaque));
+    const MD isEmpty = hn::AndNot(covers, in);
+    const auto bitsOf = [&](MD m) {
+      std::uint8_t bits[8] = {};
+      hn::StoreMaskBits(dd, m, bits);
+      return (std::uint32_t(bits[0]) | std::uint32_t(bits[1]) << 8) << j0;
+    };
+    const std::uint32_t valid = (1u << std::min(lanes, count - j0)) - 1;
+    fast |= bitsOf(isFast) & (valid << j0);
+    empty |= bitsOf(isEmpty) & (valid << j0);
+    const VD tileX = hn::Floor(minX * invTile), tileY = hn::Floor(minY * invTile);
+    hn::Store(hn::DemoteTo(di, tileY * hn::Set(dd, double(src.tilesX)) + tileX), di, tile + j0);
+    hn::Store(hn::DemoteTo(di, (minY - tileY * tileSize) * tileSize + (minX - tileX * tileSize)), di, pixel + j0);
+    hn::Store(hn::DemoteTo(di, hn::IfThenElseZero(isFast, w)), di, width + j0);
+    hn::Store(hn::DemoteTo(di, hn::IfThenElseZero(isFast, w * h)), di, pixels + j0);
+    hn::Store(hn::DemoteTo(di, hn::IfThenElseZero(backSide, one)), di, backFace + j0);
+  }
+  for (std::uint32_t m = fast; m != 0; m &= m - 1) {
+    const int j = __builtin_ctz(m);
+    tileOut[j] = tile[j];
+    b.firstTag[j] = std::uint32_t(pixel[j]);
+    b.width[j] = std::uint8_t(width[j]);
+    b.count[j] = std::uint8_t(pixels[j]);
+    if (src.flat) {  // the provoking (last) vertex's colour
+      const ShadedVertex& c = src.vertices[src.indices[3 * j + 2]];
+      b.packed[j] = packUnorm8(backFace[j] ? c.back : c.front);
+    }
+  }
+  fastOut = fast;
+  emptyOut = empty;
+}
+
 }  // namespace illum::HWY_NAMESPACE
 HWY_AFTER_NAMESPACE();
 
@@ -112,18 +253,25 @@ HWY_AFTER_NAMESPACE();
 namespace illum {
 
 HWY_EXPORT(CoverTinyBatch);
+HWY_EXPORT(TinyGroupCapacity);
+HWY_EXPORT(SetupTinyGroup);
 
-std::size_t coverTinyBatch(const TinyBatchLanes& batch, int size, bool flat, TinyFragment* out,
-                           std::uint8_t* covered) {
-  return HWY_DYNAMIC_DISPATCH(CoverTinyBatch)(batch, size, flat, out, covered);
+int tinyGroupCapacity() { return HWY_DYNAMIC_DISPATCH(TinyGroupCapacity)(); }
+
+void setupTinyGroup(const TinyGroupSource& source, int count, TinyBatchLanes& lanes, int* tile, std::uint32_t& fast,
+                    std::uint32_t& empty) {
+  HWY_DYNAMIC_DISPATCH(SetupTinyGroup)(source, count, lanes, tile, fast, empty);
 }
 
-void TinyBatch::add(const TriangleSetup& t, const Color4* lit, std::uint32_t packed, std::uint32_t recordsBefore,
-                    int tile) {
-  const int j = size_++;
+std::size_t coverTinyBatch(const TinyBatchLanes& batch, std::uint32_t members, bool flat, TinyFragment* out,
+                           std::uint8_t* covered) {
+  return HWY_DYNAMIC_DISPATCH(CoverTinyBatch)(batch, members, flat, out, covered);
+}
+
+void setTinyLanes(TinyBatchLanes& b, int j, const TriangleSetup& t, const Color4* lit, std::uint32_t packed,
+                  std::uint32_t recordsBefore) {
   const std::int64_t half = kSubpixelOne / 2;
   const std::int64_t fx = std::int64_t(t.minX) * kSubpixelOne + half, fy = std::int64_t(t.minY) * kSubpixelOne + half;
-  TinyBatchLanes& b = lanes_;
   for (int i = 0; i < 3; ++i) {
     b.edge[i][j] = Real(t.edge[i].at(fx, fy));
     b.stepX[i][j] = Real(t.edge[i].a) * Real(kSubpixelOne);
@@ -140,15 +288,23 @@ void TinyBatch::add(const TriangleSetup& t, const Color4* lit, std::uint32_t pac
   b.firstTag[j] = TinyTag::of(recordsBefore, std::uint32_t((t.minY % kTileSize) * kTileSize + t.minX % kTileSize));
   b.width[j] = std::uint8_t(t.maxX - t.minX + 1);
   b.count[j] = std::uint8_t(b.width[j] * (t.maxY - t.minY + 1));
+}
+
+void TinyBatch::add(const TriangleSetup& t, const Color4* lit, std::uint32_t packed, std::uint32_t recordsBefore,
+                    int tile) {
+  const int j = size_++;
+  members_ |= 1u << j;
+  setTinyLanes(lanes_, j, t, lit, packed, recordsBefore);
   tile_[j] = tile;
   if (size_ == TinyBatchLanes::kCapacity) flush();
 }
 
 void TinyBatch::flush() {
-  if (size_ == 0) return;
+  if (members_ == 0) return;
   std::uint8_t covered[TinyBatchLanes::kCapacity];
-  coverTinyBatch(lanes_, size_, flat_, out_.room(kTinyBatchRoom), covered);
-  for (int j = 0; j < size_; ++j) out_.commit(covered[j], tile_[j]);
+  coverTinyBatch(lanes_, members_, flat_, out_.room(kTinyBatchRoom), covered);
+  for (std::uint32_t m = members_; m != 0; m &= m - 1) out_.commit(covered[__builtin_ctz(m)], tile_[__builtin_ctz(m)]);
+  members_ = 0;
   size_ = 0;
 }
 

@@ -12,6 +12,7 @@
 #include "raster/bin.h"
 #include "raster/setup.h"
 #include "raster/tiny_fragment.h"
+#include "raster/vertex.h"
 
 #include <illum/lighting.h>
 
@@ -33,16 +34,42 @@ struct TinyBatchLanes {
   std::uint8_t width[kCapacity], count[kCapacity];  // the bounds' width and pixel count
 };
 
-// Covers the batch's first `size` triangles: their covered pixels go to `out` (room for
-// kTinyBatchRoom), triangle after triangle, each triangle's in rows from the bottom, as
-// coverTinyFlat (`flat`) or coverTinyGouraud writes them; covered[j] is how many triangle j has.
-// Returns how many were written.
+// Lane j of `lanes` for the tiny triangle `t`, as the batch needs it: its three vertex colours
+// (`lit`, counter-clockwise) or, flat, its colour `packed`; it comes after `recordsBefore` of its
+// tile's records.
+void setTinyLanes(TinyBatchLanes& lanes, int j, const TriangleSetup& t, const Color4* lit, std::uint32_t packed,
+                  std::uint32_t recordsBefore);
+
+// Covers the batch's triangles named by the bits of `members` (bit j: triangle j): their covered
+// pixels go to `out` (room for kTinyBatchRoom), triangle after triangle, each triangle's in rows
+// from the bottom, as coverTinyFlat (`flat`) or coverTinyGouraud writes them; covered[j] is how
+// many triangle j has. Returns how many were written.
 constexpr std::size_t kTinyBatchRoom = TinyBatchLanes::kCapacity * (kTinyPixels + 1);
-std::size_t coverTinyBatch(const TinyBatchLanes& batch, int size, bool flat, TinyFragment* out,
+std::size_t coverTinyBatch(const TinyBatchLanes& batch, std::uint32_t members, bool flat, TinyFragment* out,
                            std::uint8_t* covered);
 
+// A run of triangles of one object, for setting a group of them up at once.
+struct TinyGroupSource {
+  const ShadedVertex* vertices;
+  const std::uint32_t* indices;  // three per triangle, from the group's first
+  int width, height, tilesX;
+  bool twoSided, flat;
+};
+
+// How many triangles setupTinyGroup takes at a time on this CPU (at most kCapacity).
+int tinyGroupCapacity();
+
+// Sets `count` triangles up in lanes, as setupTriangle and setTinyLanes would, without a branch
+// per triangle: bit j of `fast` says that triangle j is inside the clip volume, tiny and
+// float-exact with opaque colours, and its lanes (all but the records before it in firstTag's
+// upper bits) and tile are filled in; bit j of `empty` that it is inside the clip volume but covers
+// no pixel centre (setupTriangle would drop it). The others are left to the one-by-one path.
+void setupTinyGroup(const TinyGroupSource& source, int count, TinyBatchLanes& lanes, int* tile, std::uint32_t& fast,
+                    std::uint32_t& empty);
+
 // Gathers the tiny triangles of one setup run and hands their pixels to the bins, in the order
-// they came. Only float-exact triangles (TriangleSetup::floatExact) of opaque colours join.
+// they came. Only float-exact triangles (TriangleSetup::floatExact) of opaque colours join:
+// one at a time (add) or a group set up at once (setGroupUp, then take each fast one in order).
 class TinyBatch {
  public:
   explicit TinyBatch(TinyRuns<TinyFragment>& out, bool flat) : out_(out), flat_(flat) {}
@@ -52,17 +79,30 @@ class TinyBatch {
   static bool joins(const TriangleSetup& t, const Color4* lit) {
     return t.floatExact && (!lit || (lit[0].a == 1 && lit[1].a == 1 && lit[2].a == 1));
   }
-  // Adds a triangle of `tile` after `recordsBefore` of its records: its three vertex colours
-  // (`lit`, counter-clockwise) or, flat, its colour `packed`.
+  // Adds a triangle of `tile` (setTinyLanes).
   void add(const TriangleSetup& t, const Color4* lit, std::uint32_t packed, std::uint32_t recordsBefore, int tile);
-  // Covers what was added and appends it to the bins' runs (before anything else is appended
-  // there, and once the run is over).
+
+  // Sets the next `count` (≤ tinyGroupCapacity()) triangles up at once (setupTinyGroup); the batch
+  // must be empty.
+  void setGroupUp(const TinyGroupSource& source, int count, std::uint32_t& fast, std::uint32_t& empty) {
+    setupTinyGroup(source, count, lanes_, tile_, fast, empty);
+  }
+  int groupTile(int j) const { return tile_[j]; }
+  // Takes fast triangle j of the group, after `recordsBefore` of its tile's records.
+  void take(int j, std::uint32_t recordsBefore) {
+    lanes_.firstTag[j] |= TinyTag::of(recordsBefore, 0);
+    members_ |= 1u << j;
+  }
+
+  // Covers what was added or taken and appends it to the bins' runs (before anything else is
+  // appended there, and once the run is over).
   void flush();
 
  private:
   TinyRuns<TinyFragment>& out_;
   bool flat_;
-  int size_ = 0;
+  int size_ = 0;               // add: the lanes used
+  std::uint32_t members_ = 0;  // the lanes to cover
   int tile_[TinyBatchLanes::kCapacity];
   TinyBatchLanes lanes_;
 };

@@ -9,7 +9,9 @@
 #include <gtest/gtest.h>
 #include <hwy/targets.h>
 
+#include <algorithm>
 #include <cstring>
+#include <string>
 #include <random>
 #include <vector>
 
@@ -92,6 +94,99 @@ TEST(TinyBatch, WritesWhatCoveringOneByOneWritesOnEveryTarget) {
   }
   hwy::SetSupportedTargetsForTest(0);
   EXPECT_GE(targets, 2);
+}
+
+
+// setupTinyGroup sets up on every target what setupTriangle and setTinyLanes set up one by one:
+// the same verdicts (fast: inside, tiny, float-exact, opaque; empty: inside, no pixel centre) and
+// the same bits in every lane of every fast triangle, for triangles of both windings, two-sided
+// lighting, translucent vertices, horizontal and vertical edges, degenerate and big ones, slivers the viewport cuts small,
+// vertices outside the clip volume, and groups that are not whole vectors.
+TEST(TinyBatch, GroupSetupEqualsOneByOneSetupOnEveryTarget) {
+  std::mt19937 rng(5);
+  const int width = 300, height = 200;
+  std::uniform_int_distribution<int> pixelX(-2, width + 2), pixelY(-2, height + 2), near(-4 * kSubpixelOne, 4 * kSubpixelOne);
+  std::uniform_real_distribution<Real> unit(0, 1), w(0.2f, 3);
+  std::vector<ShadedVertex> vertices;
+  std::vector<std::uint32_t> indices;
+  for (int t = 0; t < 997; ++t) {
+    const std::int64_t x = std::int64_t(pixelX(rng)) * kSubpixelOne, y = std::int64_t(pixelY(rng)) * kSubpixelOne;
+    // 0: big; 1: degenerate; 2: a long sliver; 3: outside; 4: a horizontal edge (top or bottom),
+    // 5: a vertical one; others tiny.
+    const int kind = t % 10;
+    for (int k = 0; k < 3; ++k) {
+      ShadedVertex v;
+      std::int64_t vx = x + near(rng), vy = y + near(rng);
+      if (kind == 0) vx += near(rng) * 20, vy += near(rng) * 20;
+      if (kind == 1 && k == 2) vx = x, vy = y;
+      if (kind == 1 && k == 1) vx = x + 2 * (vertices.back().window.x - x), vy = y + 2 * (vertices.back().window.y - y);
+      if (kind == 2 && k == 1) vx -= 5000 * kSubpixelOne;
+      if (kind == 4 && k == 1) vy = vertices.back().window.y;
+      if (kind == 5 && k == 1) vx = vertices.back().window.x;
+      v.outcode = kind == 3 && k == 0 ? 4 : 0;
+      v.hasWindow = v.outcode == 0;
+      v.window = {vx, vy, unit(rng), 1 / w(rng)};
+      v.front = {unit(rng), unit(rng), unit(rng), t % 7 == 0 && k == 1 ? Real(0.5) : Real(1)};
+      v.back = {unit(rng), unit(rng), unit(rng), t % 9 == 0 ? Real(0.5) : Real(1)};
+      indices.push_back(std::uint32_t(vertices.size()));
+      vertices.push_back(v);
+    }
+  }
+  const int triangles = int(indices.size() / 3), tilesX = (width + kTileSize - 1) / kTileSize;
+  int targets = 0, fastSeen = 0, emptySeen = 0, othersSeen = 0;
+  for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+    hwy::SetSupportedTargetsForTest(target);
+    ++targets;
+    const int group = tinyGroupCapacity();
+    for (const bool twoSided : {false, true})
+      for (const bool flat : {false, true})
+        for (int t0 = 0; t0 < triangles; t0 += group) {
+          const int count = std::min(group, triangles - t0);
+          const TinyGroupSource source{vertices.data(), indices.data() + 3 * t0, width, height, tilesX, twoSided, flat};
+          TinyBatchLanes lanes, expected;
+          int tile[TinyBatchLanes::kCapacity];
+          std::uint32_t fast = 0, empty = 0;
+          setupTinyGroup(source, count, lanes, tile, fast, empty);
+          for (int j = 0; j < count; ++j) {
+            const std::uint32_t* at = indices.data() + 3 * (t0 + j);
+            const ShadedVertex &a = vertices[at[0]], &b = vertices[at[1]], &c = vertices[at[2]];
+            const std::string where = std::string(hwy::TargetName(target)) + " triangle " + std::to_string(t0 + j);
+            TriangleSetup s;
+            const bool inside = a.outcode == 0 && b.outcode == 0 && c.outcode == 0;
+            const bool drawn = inside && setupTriangle(a, b, c, width, height, s);
+            EXPECT_EQ(bool(empty >> j & 1), inside && !drawn) << where;
+            const bool back = twoSided && drawn && !s.frontFacing;
+            const ShadedVertex* ordered[3] = {&a, drawn && s.swapped ? &c : &b, drawn && s.swapped ? &b : &c};
+            const Color4 lit[3] = {back ? ordered[0]->back : ordered[0]->front, back ? ordered[1]->back : ordered[1]->front,
+                                   back ? ordered[2]->back : ordered[2]->front};
+            const bool isFast = drawn && isTiny(s) && TinyBatch::joins(s, flat ? nullptr : lit);
+            ASSERT_EQ(bool(fast >> j & 1), isFast) << where;
+            fastSeen += isFast, emptySeen += inside && !drawn, othersSeen += !isFast && drawn;
+            if (!isFast) continue;
+            setTinyLanes(expected, j, s, flat ? nullptr : lit, packUnorm8(back ? c.back : c.front), 0);
+            EXPECT_EQ(tile[j], (s.minY / kTileSize) * tilesX + s.minX / kTileSize) << where;
+            const auto sameLane = [&](const auto& x, const auto& y) { return std::memcmp(&x[j], &y[j], sizeof x[j]) == 0; };
+            for (int i = 0; i < 3; ++i) {
+              EXPECT_TRUE(sameLane(lanes.edge[i], expected.edge[i]) && sameLane(lanes.stepX[i], expected.stepX[i]) &&
+                          sameLane(lanes.stepY[i], expected.stepY[i]) && sameLane(lanes.bias[i], expected.bias[i]))
+                  << where << " edge " << i;
+              EXPECT_TRUE(sameLane(lanes.z[i], expected.z[i]) && sameLane(lanes.invW[i], expected.invW[i])) << where;
+              for (int k = 0; k < 3; ++k)
+                if (!flat) EXPECT_TRUE(sameLane(lanes.lit[i][k], expected.lit[i][k])) << where << " colour " << i << k;
+            }
+            EXPECT_TRUE(sameLane(lanes.invArea, expected.invArea)) << where;
+            if (flat) EXPECT_EQ(lanes.packed[j], expected.packed[j]) << where;
+            EXPECT_EQ(lanes.firstTag[j], expected.firstTag[j]) << where;
+            EXPECT_EQ(lanes.width[j], expected.width[j]) << where;
+            EXPECT_EQ(lanes.count[j], expected.count[j]) << where;
+          }
+        }
+  }
+  hwy::SetSupportedTargetsForTest(0);
+  EXPECT_GE(targets, 2);
+  EXPECT_GT(fastSeen, 1000);
+  EXPECT_GT(emptySeen, 100);
+  EXPECT_GT(othersSeen, 100);
 }
 
 }  // namespace
