@@ -59,14 +59,17 @@ std::size_t CoverTinyBatch(const TinyBatchLanes& b, std::uint32_t members, bool 
       start[j] = slots;
       slots += b.count[g + j];
     }
-    for (int k = slots; k < slots + group; ++k) slotOf[k] = 0, column[k] = row[k] = 0, offset[k] = 0;  // the last vector's rest
+    for (int k = slots; k < slots + group; ++k) slotOf[k] = 0, column[k] = row[k] = 0, offset[k] = 0;  // the rest
+    // First the coverage of every slot; the covered ones' edge values, triangles and offsets are
+    // kept, in order, for the rest (fewer than half of a dense mesh's slots are covered).
     std::uint64_t inside[kSlots / 64 + 1] = {};  // bit s % 64 of word s / 64: slot s is covered
+    HWY_ALIGN float keptE[3][kSlots + kGroupMax];
+    HWY_ALIGN std::int32_t keptOf[kSlots + kGroupMax];
+    HWY_ALIGN std::uint32_t keptOffset[kSlots + kGroupMax];
+    int kept = 0;
     for (int s0 = 0; s0 < slots; s0 += group) {
       const auto lanesOf = hn::IndicesFromVec(df, hn::Load(di, slotOf + s0));
       const auto of = [&](const float* values) { return hn::TableLookupLanes(hn::LoadU(df, values + g), lanesOf); };
-      const auto ofU = [&](const std::uint32_t* values) {
-        return hn::TableLookupLanes(hn::LoadU(du, values + g), hn::IndicesFromVec(du, hn::Load(di, slotOf + s0)));
-      };
       const VF c = hn::Load(df, column + s0), r = hn::Load(df, row + s0);
       VF E[3];
       auto covers = hn::FirstN(df, std::size_t(slots - s0));
@@ -74,8 +77,32 @@ std::size_t CoverTinyBatch(const TinyBatchLanes& b, std::uint32_t members, bool 
         E[i] = of(b.edge[i]) + hn::MulAdd(c, of(b.stepX[i]), r * of(b.stepY[i]));
         covers = hn::And(covers, E[i] + of(b.bias[i]) >= zero);
       }
+      const auto keep = hn::RebindMask(du, covers);
+      for (int i = 0; i < 3; ++i) hn::StoreU(hn::Compress(E[i], covers), df, keptE[i] + kept);
+      hn::StoreU(hn::Compress(hn::Load(di, slotOf + s0), hn::RebindMask(di, covers)), di, keptOf + kept);
+      hn::StoreU(hn::Compress(hn::Load(du, offset + s0), keep), du, keptOffset + kept);
+      kept += int(hn::CountTrue(df, covers));
+      std::uint8_t bits[8] = {};
+      hn::StoreMaskBits(df, covers, bits);
+      std::uint64_t word = 0;
+      for (int k = 0; k < (group + 7) / 8; ++k) word |= std::uint64_t(bits[k]) << (8 * k);
+      inside[s0 / 64] |= word << (s0 % 64);  // a vector's slots never straddle two words
+    }
+    for (int k = kept; k < kept + group; ++k) {  // the last vector's rest
+      keptOf[k] = 0, keptOffset[k] = 0;
+      keptE[0][k] = keptE[1][k] = keptE[2][k] = 0;
+    }
+    // Then depth and colour of the covered pixels, stored as fragments (the last vector's rest
+    // lands in the room past them).
+    for (int k0 = 0; k0 < kept; k0 += group) {
+      const auto lanesOf = hn::IndicesFromVec(df, hn::Load(di, keptOf + k0));
+      const auto of = [&](const float* values) { return hn::TableLookupLanes(hn::LoadU(df, values + g), lanesOf); };
+      const auto ofU = [&](const std::uint32_t* values) {
+        return hn::TableLookupLanes(hn::LoadU(du, values + g), hn::IndicesFromVec(du, hn::Load(di, keptOf + k0)));
+      };
       const VF invArea = of(b.invArea);
-      const VF l0 = E[0] * invArea, l1 = E[1] * invArea, l2 = E[2] * invArea;
+      const VF l0 = hn::Load(df, keptE[0] + k0) * invArea, l1 = hn::Load(df, keptE[1] + k0) * invArea,
+               l2 = hn::Load(df, keptE[2] + k0) * invArea;
       const VF z = l0 * of(b.z[0]) + l1 * of(b.z[1]) + l2 * of(b.z[2]);
       VU color;
       if (flat) {
@@ -87,17 +114,10 @@ std::size_t CoverTinyBatch(const TinyBatchLanes& b, std::uint32_t members, bool 
         for (int k = 0; k < 3; ++k) channel[k] = Blend(p, of(b.lit[k][0]), of(b.lit[k][1]), of(b.lit[k][2]));
         color = hn::BitCast(du, PackColorsWide(df, true, channel));
       }
-      const VU tag = hn::Add(ofU(b.firstTag), hn::Load(du, offset + s0));
-      const auto keep = hn::RebindMask(du, covers);
-      hn::StoreInterleaved3(hn::Compress(tag, keep), hn::Compress(hn::BitCast(du, z), keep), hn::Compress(color, keep),
-                            du, reinterpret_cast<std::uint32_t*>(out + n));
-      n += hn::CountTrue(df, covers);
-      std::uint8_t bits[8] = {};
-      hn::StoreMaskBits(df, covers, bits);
-      std::uint64_t word = 0;
-      for (int k = 0; k < (group + 7) / 8; ++k) word |= std::uint64_t(bits[k]) << (8 * k);
-      inside[s0 / 64] |= word << (s0 % 64);  // a vector's slots never straddle two words
+      const VU tag = hn::Add(ofU(b.firstTag), hn::Load(du, keptOffset + k0));
+      hn::StoreInterleaved3(tag, hn::BitCast(du, z), color, du, reinterpret_cast<std::uint32_t*>(out + n + k0));
     }
+    n += std::size_t(kept);
     for (std::uint32_t m = inGroup; m != 0; m &= m - 1) {
       const int j = __builtin_ctz(m);
       const int word = start[j] / 64, bit = start[j] % 64;
