@@ -100,8 +100,8 @@ TEST(TinyBatch, WritesWhatCoveringOneByOneWritesOnEveryTarget) {
 // setupTinyGroup sets up on every target what setupTriangle and setTinyLanes set up one by one:
 // the same verdicts (fast: inside, tiny, float-exact, opaque; empty: inside, no pixel centre) and
 // the same bits in every lane of every fast triangle, for triangles of both windings, two-sided
-// lighting, translucent vertices, horizontal and vertical edges, degenerate and big ones, slivers the viewport cuts small,
-// vertices outside the clip volume, and groups that are not whole vectors.
+// lighting, translucent vertices, horizontal and vertical edges, degenerate and big ones, slivers
+// the viewport cuts small, vertices outside the clip volume, and groups that are not whole vectors.
 TEST(TinyBatch, GroupSetupEqualsOneByOneSetupOnEveryTarget) {
   std::mt19937 rng(5);
   const int width = 300, height = 200;
