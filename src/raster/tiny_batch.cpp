@@ -35,7 +35,7 @@ std::size_t CoverTinyBatch(const TinyBatchLanes& b, std::uint32_t members, bool 
   static_assert(TinyBatchLanes::kCapacity % kGroupMax == 0);
   const int group = std::min<int>(kGroupMax, int(hn::Lanes(df)));
   constexpr int kSlots = kGroupMax * kTinyPixels;
-  static_assert(kSlots <= 128, "a group's coverage fits `inside`");
+  static_assert(kSlots <= 256, "a group's coverage fits `inside`");
   const VF zero = hn::Zero(df);
   std::size_t n = 0;
   for (int g = 0; g < TinyBatchLanes::kCapacity; g += group) {
