@@ -4,9 +4,8 @@
 #include "raster/tile_raster.h"
 #include "raster/tiny_batch.h"
 
-#include <optional>
-
 #include <cstring>
+#include <optional>
 
 namespace illum {
 
