@@ -1,4 +1,5 @@
-// coverTinyBatch, compiled once per SIMD target (Highway's foreach_target), dispatched at run time.
+// coverTinyBatch and setupTinyGroup, compiled once per SIMD target (Highway's foreach_target),
+// dispatched at run time.
 #include <illum/real.h>
 
 #if !ILLUM_USE_DOUBLE
@@ -21,8 +22,8 @@ namespace hn = hwy::HWY_NAMESPACE;
 // laid out in slots, triangle after triangle (each its bounds' pixels, kTinyLanes' order), and
 // each vector of slots looks its triangles' values up in the group's rows (TableLookupLanes): the
 // edge values c·A + r·B from the first pixel's, exact in float as in VisitTiny, then barycentrics,
-// depth and colour as the tile rasterizer has them. The covered slots are compressed and stored
-// as fragments, so they keep the slots' order.
+// depth and colour as the tile rasterizer has them: coverage for every slot, then depth and
+// colour for the covered ones, compressed in the slots' order and stored as fragments.
 std::size_t CoverTinyBatch(const TinyBatchLanes& b, std::uint32_t members, bool flat, TinyFragment* out,
                            std::uint8_t* covered) {
   static_assert(sizeof(TinyFragment) == 3 * sizeof(std::uint32_t));
@@ -35,7 +36,6 @@ std::size_t CoverTinyBatch(const TinyBatchLanes& b, std::uint32_t members, bool 
   static_assert(TinyBatchLanes::kCapacity % kGroupMax == 0);
   const int group = std::min<int>(kGroupMax, int(hn::Lanes(df)));
   constexpr int kSlots = kGroupMax * kTinyPixels;
-  static_assert(kSlots <= 256, "a group's coverage fits `inside`");
   const VF zero = hn::Zero(df);
   std::size_t n = 0;
   for (int g = 0; g < TinyBatchLanes::kCapacity; g += group) {
