@@ -97,8 +97,8 @@ std::size_t CoverTinyBatch(const TinyBatchLanes& b, std::uint32_t members, bool 
     for (int k0 = 0; k0 < kept; k0 += group) {
       const auto lanesOf = hn::IndicesFromVec(df, hn::Load(di, keptOf + k0));
       const auto of = [&](const float* values) { return hn::TableLookupLanes(hn::LoadU(df, values + g), lanesOf); };
-      const auto ofU = [&](const std::uint32_t* values) {
-        return hn::TableLookupLanes(hn::LoadU(du, values + g), hn::IndicesFromVec(du, hn::Load(di, keptOf + k0)));
+      const auto ofU = [&](const std::uint32_t* values) {  // the same lanes, as bits
+        return hn::BitCast(du, of(reinterpret_cast<const float*>(values)));
       };
       const VF invArea = of(b.invArea);
       const VF l0 = hn::Load(df, keptE[0] + k0) * invArea, l1 = hn::Load(df, keptE[1] + k0) * invArea,
@@ -216,7 +216,7 @@ void SetupTinyGroup(const TinyGroupSource& src, int count, TinyBatchLanes& b, in
     for (int k = 0; k < 3; ++k) {
       const int from = k == 0 ? 0 : (k == 1 ? 2 : 1);  // vertex k of the swapped order
       const auto pick = [&](const double* rows) {
-        const VD kept = hn::Load(dd, rows + (k == 0 ? 0 : (k == 1 ? 1 : 2)) * kN + j0);
+        const VD kept = hn::Load(dd, rows + k * kN + j0);
         const VD other = hn::Load(dd, rows + from * kN + j0);
         return k == 0 ? kept : hn::IfThenElse(swapped, other, kept);
       };
@@ -225,7 +225,7 @@ void SetupTinyGroup(const TinyGroupSource& src, int count, TinyBatchLanes& b, in
       if (src.flat) continue;
       for (int c = 0; c < 4; ++c) {
         const auto channel = [&](const double (*rows)[4][kN]) {
-          const VD kept = hn::Load(dd, rows[k == 0 ? 0 : (k == 1 ? 1 : 2)][c] + j0);
+          const VD kept = hn::Load(dd, rows[k][c] + j0);
           const VD other = hn::Load(dd, rows[from][c] + j0);
           return k == 0 ? kept : hn::IfThenElse(swapped, other, kept);
         };
