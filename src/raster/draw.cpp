@@ -171,7 +171,11 @@ void encodeAndLabel(const Scene& scene, RenderStats& stats, Image& image, FloatI
 }  // namespace
 
 void finishFrame(const Framebuffer& fb, const Scene& scene, RenderStats& stats, Image& image, FloatImage* linear) {
-  stats.pixelsDrawn = fb.toImage(image, scene.background);
+  finishFrame(fb.toImage(image, scene.background), scene, stats, image, linear);
+}
+
+void finishFrame(std::size_t pixelsDrawn, const Scene& scene, RenderStats& stats, Image& image, FloatImage* linear) {
+  stats.pixelsDrawn = pixelsDrawn;
   encodeAndLabel(scene, stats, image, linear);
 }
 

@@ -97,6 +97,9 @@ std::vector<const Object*> drawingOrder(const Scene& scene, const FrameContext& 
 // scene's labels drawn over it.
 void finishFrame(const Framebuffer& fb, const Scene& scene, RenderStats& stats, Image& image,
                  FloatImage* linear = nullptr);
+// The same for an image the pipeline copied tile by tile, `pixelsDrawn` of them unlike the background.
+void finishFrame(std::size_t pixelsDrawn, const Scene& scene, RenderStats& stats, Image& image,
+                 FloatImage* linear = nullptr);
 // The same for a picture already made (a multisampled one, resolved): pixels unlike the background
 // counted, linear values, display encoding, labels.
 void finishImage(const Scene& scene, RenderStats& stats, Image& image, FloatImage* linear = nullptr);

@@ -7,16 +7,6 @@
 #include <cstring>
 
 namespace illum {
-namespace {
-
-std::uint32_t packed(const Color4& c) {
-  const std::uint8_t bytes[4] = {toUnorm8(c.r), toUnorm8(c.g), toUnorm8(c.b), toUnorm8(c.a)};
-  std::uint32_t p;
-  std::memcpy(&p, bytes, 4);
-  return p;
-}
-
-}  // namespace
 
 void Framebuffer::reset(int width, int height, const Color4& clearColor) {
   width_ = width;
@@ -27,7 +17,7 @@ void Framebuffer::reset(int width, int height, const Color4& clearColor) {
     depth_.resize(tiles * kTileBlock);
     color_.resize(tiles * kTileBlock * 4);
   }
-  clear_ = packed(clearColor);
+  clear_ = packUnorm8(clearColor);
   cleared_.assign(tiles, 0);
 }
 
@@ -52,32 +42,39 @@ Image Framebuffer::toImage() const {
   return img;
 }
 
-std::size_t Framebuffer::toImage(Image& image, const Color4& background) const {
+void Framebuffer::imageOf(Image& image) const {
   image.width = width_;
   image.height = height_;
   image.rgba.resize(std::size_t(width_) * std::size_t(height_) * 4);
-  const std::uint32_t background8 = packed(background);
+}
+
+std::size_t Framebuffer::copyTile(int tile, Image& image, std::uint32_t background8) const {
+  const int x0 = tile % tilesX_ * kTileSize, y0 = tile / tilesX_ * kTileSize;
+  const int count = std::min(kTileSize, width_ - x0), rows = std::min(kTileSize, height_ - y0);
+  const bool drawn = cleared_[std::size_t(tile)];  // else never drawn: the clear colour
+  std::size_t unlike = 0;
+  for (int y = y0; y < y0 + rows; ++y) {
+    std::uint8_t* dst = image.pixel(x0, height_ - 1 - y);
+    if (!drawn) {
+      for (int i = 0; i < count; ++i) std::memcpy(dst + 4 * i, &clear_, 4);
+      continue;
+    }
+    const std::uint8_t* src = &color_[index(x0, y) * 4];
+    std::memcpy(dst, src, std::size_t(count) * 4);
+    for (int i = 0; i < count; ++i) {
+      std::uint32_t p;
+      std::memcpy(&p, src + 4 * i, 4);
+      unlike += p != background8;
+    }
+  }
+  return drawn ? unlike : std::size_t(clear_ != background8) * std::size_t(count) * std::size_t(rows);
+}
+
+std::size_t Framebuffer::toImage(Image& image, const Color4& background) const {
+  imageOf(image);
+  const std::uint32_t background8 = packUnorm8(background);
   std::atomic<std::size_t> unlike{0};
-  tbb::parallel_for(0, (height_ + kTileSize - 1) / kTileSize, [&](int band) {
-    std::size_t n = 0;
-    for (int y = band * kTileSize; y < std::min(height_, (band + 1) * kTileSize); ++y)
-      for (int x = 0; x < width_; x += kTileSize) {
-        const int count = std::min(kTileSize, width_ - x);
-        std::uint8_t* dst = image.pixel(x, height_ - 1 - y);
-        if (!cleared_[tileOf(x, y)]) {  // never drawn: the clear colour
-          for (int i = 0; i < count; ++i) std::memcpy(dst + 4 * i, &clear_, 4);
-          continue;
-        }
-        const std::uint8_t* src = &color_[index(x, y) * 4];
-        std::memcpy(dst, src, std::size_t(count) * 4);
-        for (int i = 0; i < count; ++i) {
-          std::uint32_t p;
-          std::memcpy(&p, src + 4 * i, 4);
-          n += p != background8;
-        }
-      }
-    unlike += n;
-  });
+  tbb::parallel_for(0, tileCount(), [&](int tile) { unlike += copyTile(tile, image, background8); });
   return unlike;
 }
 

@@ -78,9 +78,16 @@ class Framebuffer {
 
   // The picture as an image file stores it: row 0 at the top.
   Image toImage() const;
-  // The same into `image` (its memory reused), rows in parallel; returns how many pixels differ
+  // The same into `image` (its memory reused), tiles in parallel; returns how many pixels differ
   // from `background` as toUnorm8 converts it.
   std::size_t toImage(Image& image, const Color4& background) const;
+  // toImage a tile at a time, for a pipeline that hands each tile over once it is drawn, while it
+  // is still in the drawing core's cache: imageOf sizes `image`, copyTile copies one tile (index
+  // as tileRect numbers them: row by row from the bottom) and counts its pixels unlike
+  // `background8` (packUnorm8 of the background).
+  void imageOf(Image& image) const;
+  std::size_t copyTile(int tile, Image& image, std::uint32_t background8) const;
+  int tileCount() const { return int(cleared_.size()); }
 
   // The tile whose bottom-left pixel is (x0, y0) (multiples of kTileSize): kTileSize² depths and
   // RGBA pixels, row by row from the bottom, then kTilePadding spare ones.

@@ -21,6 +21,7 @@
 #include <tbb/partitioner.h>
 
 #include <algorithm>
+#include <atomic>
 
 namespace illum {
 namespace {
@@ -127,6 +128,29 @@ class BinnedFrame {
     batchedRecords_ = batchedTiny_ = 0;
   }
 
+  // The last flush, when nothing is drawn after the triangles: each tile, once drawn, is copied
+  // into `image` by the thread that drew it (Framebuffer::toImage tile by tile). Returns the
+  // pixels unlike the background.
+  std::size_t flushInto(Image& image, const Color4& background) {
+    s_.fb.imageOf(image);
+    const std::uint32_t background8 = packUnorm8(background);
+    std::atomic<std::size_t> unlike{0};
+    tbb::parallel_for(
+        tbb::blocked_range<int>(0, tiles_.tileCount()),
+        [&](const tbb::blocked_range<int>& range) {
+          std::size_t n = 0;
+          for (int tile = range.begin(); tile < range.end(); ++tile) {
+            if (used_ > 0) drawTile(tile);
+            n += s_.fb.copyTile(tile, image, background8);
+          }
+          unlike += n;
+        },
+        s_.tileAffinity);
+    used_ = 0;
+    batchedRecords_ = batchedTiny_ = 0;
+    return unlike;
+  }
+
   void drawTile(int tile) {
     auto& list = s_.tileLists.local();
     list.records.clear();
@@ -196,11 +220,17 @@ void Renderer::render(const Scene& scene, Image& image, RenderStats* statsOut, P
     BinnedFrame pass(*state_, scene, frame, probe);
     for (const Object* object : drawingOrder(scene, frame))
       pass.drawObject(*object, std::uint32_t(object - scene.objects.data()));
-    pass.flush();
-    drawPointsAndLines(state_->fb, frame, scene, state_->vertices);
-    drawOverlayLines(state_->fb, frame, overlay, 1);
-    stats = pass.stats();
-    finishFrame(state_->fb, scene, stats, image, linear);
+    if (hasPointsOrLines(scene) || !overlay.empty()) {
+      pass.flush();
+      drawPointsAndLines(state_->fb, frame, scene, state_->vertices);
+      drawOverlayLines(state_->fb, frame, overlay, 1);
+      stats = pass.stats();
+      finishFrame(state_->fb, scene, stats, image, linear);
+    } else {
+      const std::size_t unlike = pass.flushInto(image, scene.background);
+      stats = pass.stats();
+      finishFrame(unlike, scene, stats, image, linear);
+    }
   } else {
     // One pass per sample position, each through the whole pipeline into the framebuffer, summed
     // premultiplied; the watched pixel reports the first sample's fragment.

@@ -5,6 +5,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace illum {
@@ -76,6 +77,11 @@ void drawLine(Framebuffer& fb, const FrameContext& frame, const ShadedVertex& a,
 }
 
 }  // namespace
+
+bool hasPointsOrLines(const Scene& scene) {
+  return std::any_of(scene.objects.begin(), scene.objects.end(),
+                     [](const Object& o) { return o.mesh->hasPointsOrLines(); });
+}
 
 void drawPointsAndLines(Framebuffer& fb, const FrameContext& frame, const Scene& scene,
                         std::vector<ShadedVertex>& vertices) {

@@ -22,5 +22,7 @@ namespace illum {
 // Draws every object's points and lines; `vertices` is working memory.
 void drawPointsAndLines(Framebuffer& fb, const FrameContext& frame, const Scene& scene,
                         std::vector<ShadedVertex>& vertices);
+// Whether any object has points or lines to draw.
+bool hasPointsOrLines(const Scene& scene);
 
 }  // namespace illum

@@ -171,11 +171,16 @@ TEST(TinyBatch, GroupSetupEqualsOneByOneSetupOnEveryTarget) {
                           sameLane(lanes.stepY[i], expected.stepY[i]) && sameLane(lanes.bias[i], expected.bias[i]))
                   << where << " edge " << i;
               EXPECT_TRUE(sameLane(lanes.z[i], expected.z[i]) && sameLane(lanes.invW[i], expected.invW[i])) << where;
-              for (int k = 0; k < 3; ++k)
-                if (!flat) EXPECT_TRUE(sameLane(lanes.lit[i][k], expected.lit[i][k])) << where << " colour " << i << k;
+              for (int k = 0; k < 3; ++k) {
+                if (!flat) {
+                  EXPECT_TRUE(sameLane(lanes.lit[i][k], expected.lit[i][k])) << where << " colour " << i << k;
+                }
+              }
             }
             EXPECT_TRUE(sameLane(lanes.invArea, expected.invArea)) << where;
-            if (flat) EXPECT_EQ(lanes.packed[j], expected.packed[j]) << where;
+            if (flat) {
+              EXPECT_EQ(lanes.packed[j], expected.packed[j]) << where;
+            }
             EXPECT_EQ(lanes.firstTag[j], expected.firstTag[j]) << where;
             EXPECT_EQ(lanes.width[j], expected.width[j]) << where;
             EXPECT_EQ(lanes.count[j], expected.count[j]) << where;
