@@ -72,7 +72,7 @@ HWY_INLINE std::size_t DepthPass(const TriangleSetup& t, const PixelRect& tile, 
   const auto z0 = hn::Set(dr, t.z[0]), z1 = hn::Set(dr, t.z[1]), z2 = hn::Set(dr, t.z[2]);
   const auto zero = hn::Zero(dr);
   std::int64_t step[3];
-  hn::VFromD<DD> laneStep[3], bias[3];
+  hn::VFromD<DD> laneStep[3], blockStep[3], bias[3];
   VR laneStepR[3], biasR[3];
   for (int i = 0; i < 3; ++i) {
     step[i] = t.edge[i].a * kSubpixelOne;
@@ -81,6 +81,7 @@ HWY_INLINE std::size_t DepthPass(const TriangleSetup& t, const PixelRect& tile, 
       biasR[i] = hn::Set(dr, Real(t.edge[i].bias));
     } else {
       laneStep[i] = hn::Iota(dd, 0.0) * hn::Set(dd, double(step[i]));
+      blockStep[i] = hn::Set(dd, double(lanes * step[i]));
       bias[i] = hn::Set(dd, double(t.edge[i].bias));
     }
   }
@@ -94,6 +95,10 @@ HWY_INLINE std::size_t DepthPass(const TriangleSetup& t, const PixelRect& tile, 
     const std::int64_t fy = std::int64_t(y) * kSubpixelOne + half;
     const std::int64_t fx = std::int64_t(startX) * kSubpixelOne + half;
     std::int64_t e[3] = {t.edge[0].at(fx, fy), t.edge[1].at(fx, fy), t.edge[2].at(fx, fy)};
+    // Double lanes step along the row exactly (integers far below 2^53).
+    hn::VFromD<DD> D[3];
+    if constexpr (!kFloatEdges)
+      for (int i = 0; i < 3; ++i) D[i] = hn::Set(dd, double(e[i])) + laneStep[i];
     const int row = (y - tile.minY) * kTileSize - tile.minX;  // tile-local index of (0, y)
     auto xs = xIota;
     for (int x = startX; x <= maxX; x += lanes, xs = xs + hn::Set(dr, Real(lanes))) {
@@ -106,9 +111,8 @@ HWY_INLINE std::size_t DepthPass(const TriangleSetup& t, const PixelRect& tile, 
         E2 = hn::Set(dr, Real(e[2])) + laneStepR[2];
         inside = hn::And(hn::And(E0 + biasR[0] >= zero, E1 + biasR[1] >= zero), E2 + biasR[2] >= zero);
       } else {
-        const auto D0 = hn::Set(dd, double(e[0])) + laneStep[0];
-        const auto D1 = hn::Set(dd, double(e[1])) + laneStep[1];
-        const auto D2 = hn::Set(dd, double(e[2])) + laneStep[2];
+        const auto D0 = D[0], D1 = D[1], D2 = D[2];
+        for (int i = 0; i < 3; ++i) D[i] = D[i] + blockStep[i];
         E0 = toReal(D0), E1 = toReal(D1), E2 = toReal(D2);
         // Converting to Real keeps the sign and zero, so the test can run in the narrow lanes.
         inside = hn::And(hn::And(toReal(D0 + bias[0]) >= zero, toReal(D1 + bias[1]) >= zero),
@@ -166,10 +170,17 @@ HWY_INLINE std::size_t DepthPassTwoRows(const TriangleSetup& t, const PixelRect&
   const VF invArea = hn::Set(df, t.invArea);
   const VF z0 = hn::Set(df, t.z[0]), z1 = hn::Set(df, t.z[1]), z2 = hn::Set(df, t.z[2]);
   const VF zero = hn::Zero(df);
-  const std::int64_t stepX = std::int64_t(columns) * t.edge[0].a * kSubpixelOne;
-  const std::int64_t step[3] = {stepX, std::int64_t(columns) * t.edge[1].a * kSubpixelOne,
-                                std::int64_t(columns) * t.edge[2].a * kSubpixelOne};
+  // The block moves by `columns` pixels along a row and by two rows: its lanes inside the bounds
+  // come from lanes inside the bounds of the block before, so adding the (exact) steps keeps them
+  // exact.
+  VF stepX[3], stepY[3], rowStart[3];
   const std::int64_t half = kSubpixelOne / 2;
+  for (int i = 0; i < 3; ++i) {
+    stepX[i] = hn::Set(df, float(columns) * float(t.edge[i].a) * float(kSubpixelOne));
+    stepY[i] = hn::Set(df, 2.0f * float(t.edge[i].b) * float(kSubpixelOne));
+    const std::int64_t first = t.edge[i].at(std::int64_t(minX) * kSubpixelOne + half, std::int64_t(minY) * kSubpixelOne + half);
+    rowStart[i] = hn::Set(df, float(first)) + off[i];
+  }
   const auto halves = [&](auto mask, auto& lower, auto& higher) {
     const VF v = hn::VecFromMask(df, mask);
     lower = hn::MaskFromVec(hn::LowerHalf(dh, v));
@@ -177,18 +188,13 @@ HWY_INLINE std::size_t DepthPassTwoRows(const TriangleSetup& t, const PixelRect&
   };
   std::size_t passed = 0;
   for (int y = minY; y <= maxY; y += 2) {
-    const std::int64_t fy = std::int64_t(y) * kSubpixelOne + half;
-    const std::int64_t fx = std::int64_t(minX) * kSubpixelOne + half;
-    std::int64_t e[3] = {t.edge[0].at(fx, fy), t.edge[1].at(fx, fy), t.edge[2].at(fx, fy)};
+    VF E0 = rowStart[0], E1 = rowStart[1], E2 = rowStart[2];
+    for (int i = 0; i < 3; ++i) rowStart[i] = rowStart[i] + stepY[i];
     const int row0 = (y - tile.minY) * kTileSize - tile.minX;
     const bool two = y + 1 <= maxY;
     const int row1 = two ? row0 + kTileSize : row0;  // never past the tile: the lanes are masked
     const auto rows = rowOf < hn::Set(df, two ? 2.0f : 1.0f);
-    for (int x = minX; x <= maxX; x += columns) {
-      const VF E0 = hn::Set(df, float(e[0])) + off[0];
-      const VF E1 = hn::Set(df, float(e[1])) + off[1];
-      const VF E2 = hn::Set(df, float(e[2])) + off[2];
-      for (int i = 0; i < 3; ++i) e[i] += step[i];
+    for (int x = minX; x <= maxX; x += columns, E0 = E0 + stepX[0], E1 = E1 + stepX[1], E2 = E2 + stepX[2]) {
       const VF xs = hn::Set(df, float(x - tile.minX)) + columnOf;
       const auto inside = hn::And(hn::And(hn::And(E0 + bias[0] >= zero, E1 + bias[1] >= zero), E2 + bias[2] >= zero),
                                   hn::And(xs <= hi, rows));
