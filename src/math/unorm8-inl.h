@@ -1,7 +1,7 @@
 // toUnorm8 (framebuffer.h) over lanes: round(clamp(c)·255) of four float channels packed into
-// RGBA8 pixels (R in the lowest byte, as the framebuffer stores them). The product and the half
-// are exact in double, so truncation rounds halves up exactly as the scalar conversion does, on
-// every SIMD target. Included once per target (Highway's -inl.h convention).
+// RGBA8 pixels (R in the lowest byte, as the framebuffer stores them), halves up exactly as the
+// scalar conversion rounds them, on every SIMD target. Included once per target (Highway's -inl.h
+// convention).
 
 #if defined(ILLUM_MATH_UNORM8_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef ILLUM_MATH_UNORM8_INL_H_
@@ -18,16 +18,42 @@ HWY_BEFORE_NAMESPACE();
 namespace illum::HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
-// One channel: round(clamp(c)·255) as 32-bit lanes. Lanes(DF) floats, DF = Rebind<float,
-// ScalableTag<double>> (as many as a double vector holds).
+// One channel: ⌊c·255 + ½⌋ of c clamped to [0, 1], as 32-bit lanes.
+#if HWY_NATIVE_FMA
+// q = fl(c·255 + ½) rounds the exact sum, which lies in [k, k + 1) for the answer k, to a float in
+// [k, k + 1] (rounding is monotonic and integers up to 256 are floats), so n = ⌊q⌋ is k or k + 1; it
+// is k + 1 exactly when c·255 + ½ − n < 0, whose sign one fused multiply-add gets right (½ − n is
+// exact, and a single rounding keeps the sign of a result that is not zero).
 template <class DF, class V = hn::VFromD<DF>>
 HWY_INLINE hn::VFromD<hn::Rebind<std::uint32_t, DF>> Unorm8(DF df, V c) {
-  const hn::Rebind<double, DF> dd;
   const hn::Rebind<std::int32_t, DF> di;
+  const V scale = hn::Set(df, 255.0f), half = hn::Set(df, 0.5f);
   c = hn::Min(hn::Max(c, hn::Zero(df)), hn::Set(df, 1.0f));
-  const auto x = hn::PromoteTo(dd, c) * hn::Set(dd, 255.0) + hn::Set(dd, 0.5);
-  return hn::BitCast(hn::Rebind<std::uint32_t, DF>(), hn::DemoteTo(di, x));  // truncates toward zero
+  const V n = hn::Floor(hn::MulAdd(c, scale, half));
+  const auto over = hn::MulAdd(c, scale, half - n) < hn::Zero(df);
+  const auto k = hn::ConvertTo(di, n) + hn::BitCast(di, hn::VecFromMask(df, over));  // a true mask is −1
+  return hn::BitCast(hn::Rebind<std::uint32_t, DF>(), k);
 }
+#else
+// Without a fused multiply-add (SSE4 and older, the scalar targets): c·255 and the half are exact
+// in double, where truncation rounds as the scalar conversion does; a float vector wider than a
+// double one goes half by half.
+template <class DF, class V = hn::VFromD<DF>>
+HWY_INLINE hn::VFromD<hn::Rebind<std::uint32_t, DF>> Unorm8(DF df, V c) {
+  c = hn::Min(hn::Max(c, hn::Zero(df)), hn::Set(df, 1.0f));
+  if constexpr (hn::MaxLanes(DF()) <= hn::MaxLanes(hn::ScalableTag<double>())) {
+    const hn::Rebind<double, DF> dd;
+    const auto x = hn::PromoteTo(dd, c) * hn::Set(dd, 255.0) + hn::Set(dd, 0.5);
+    return hn::BitCast(hn::Rebind<std::uint32_t, DF>(), hn::DemoteTo(hn::Rebind<std::int32_t, DF>(), x));
+  } else {
+#if HWY_TARGET != HWY_SCALAR
+    const hn::Half<DF> dh;
+    return hn::Combine(hn::Rebind<std::uint32_t, DF>(), Unorm8(dh, hn::UpperHalf(dh, c)),
+                       Unorm8(dh, hn::LowerHalf(dh, c)));
+#endif
+  }
+}
+#endif
 
 // Colour channels with a given alpha byte (255 for opaque pixels).
 template <class DF, class V = hn::VFromD<DF>>

@@ -40,30 +40,6 @@ HWY_INLINE auto PackColors(D d, bool opaque, const V (&c)[4]) {
   return opaque ? PackUnorm8(d, c[0], c[1], c[2], 255u) : PackUnorm8(d, c[0], c[1], c[2], c[3]);
 }
 
-// PackColors of a whole float vector, as its halves (the conversion runs in double lanes, which
-// hold half as many).
-template <class DF, class V = hn::VFromD<DF>>
-HWY_INLINE auto PackColorsWide(DF df, bool opaque, const V (&c)[4]) {
-  using DH = hn::Rebind<float, hn::ScalableTag<double>>;
-  static_assert(hn::MaxLanes(DF()) == hn::MaxLanes(DH()) || hn::MaxLanes(DF()) == 2 * hn::MaxLanes(DH()));
-#if HWY_TARGET == HWY_SCALAR
-  return PackColors(df, opaque, c);
-#else
-  if constexpr (hn::MaxLanes(DH()) == hn::MaxLanes(DF())) {
-    return PackColors(df, opaque, c);
-  } else {
-    const DH dh;
-    using VH = hn::VFromD<DH>;
-    const VH low[4] = {hn::LowerHalf(dh, c[0]), hn::LowerHalf(dh, c[1]), hn::LowerHalf(dh, c[2]),
-                       opaque ? VH() : hn::LowerHalf(dh, c[3])};
-    const VH high[4] = {hn::UpperHalf(dh, c[0]), hn::UpperHalf(dh, c[1]), hn::UpperHalf(dh, c[2]),
-                        opaque ? VH() : hn::UpperHalf(dh, c[3])};
-    const hn::Repartition<std::uint32_t, DF> du;
-    return hn::Combine(du, PackColors(dh, opaque, high), PackColors(dh, opaque, low));
-  }
-#endif
-}
-
 }  // namespace illum::HWY_NAMESPACE
 HWY_AFTER_NAMESPACE();
 

@@ -377,13 +377,13 @@ std::size_t RasterizeGouraud(const TriangleSetup& t, const PixelRect& tile, Real
 #if HWY_TARGET == HWY_SCALAR
   return DepthPass(t, tile, depth, narrow);
 #else
-  // Colours on the whole block, converted half by half (the conversion runs in double lanes).
+  // Colours on the whole block, two rows at once.
   return DepthPass(t, tile, depth, narrow, [&](int at0, int at1, MR pass0, MR pass1, auto l0, auto l1, auto l2) {
     const DU du;
     using V = decltype(l0);
     V c[4];
     GouraudColors(t, lit, opaque, l0, l1, l2, c);
-    const auto packed = PackColorsWide(hn::DFromV<V>(), opaque, c);
+    const auto packed = PackColors(hn::DFromV<V>(), opaque, c);
     hn::BlendedStore(hn::LowerHalf(du, packed), hn::RebindMask(du, pass0), du, color + at0);
     hn::BlendedStore(hn::UpperHalf(du, packed), hn::RebindMask(du, pass1), du, color + at1);
     ClearWinners(du, winners, at0, pass0);

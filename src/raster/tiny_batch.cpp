@@ -112,7 +112,7 @@ std::size_t CoverTinyBatch(const TinyBatchLanes& b, std::uint32_t members, bool 
         PerspectiveWeights(l0, l1, l2, of(b.invW[0]), of(b.invW[1]), of(b.invW[2]), p);
         VF channel[4];
         for (int k = 0; k < 3; ++k) channel[k] = Blend(p, of(b.lit[k][0]), of(b.lit[k][1]), of(b.lit[k][2]));
-        color = hn::BitCast(du, PackColorsWide(df, true, channel));
+        color = hn::BitCast(du, PackColors(df, true, channel));
       }
       const VU tag = hn::Add(ofU(b.firstTag), hn::Load(du, keptOffset + k0));
       hn::StoreInterleaved3(tag, hn::BitCast(du, z), color, du, reinterpret_cast<std::uint32_t*>(out + n + k0));

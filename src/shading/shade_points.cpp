@@ -84,13 +84,9 @@ void ShadeOwnedPoints(std::span<const ShadeSetup> setups, std::span<const std::u
   {
     const hn::ScalableTag<float> d;
     const hn::RebindToUnsigned<decltype(d)> du;
-    const hn::ScalableTag<double> dd;
-    const hn::Rebind<float, decltype(dd)> dh;  // as many floats as a double vector holds
     using V = hn::VFromD<decltype(d)>;
-    const std::size_t lanes = hn::Lanes(d), half = hn::Lanes(dd);
+    const std::size_t lanes = hn::Lanes(d);
     const auto none = hn::Set(du, kNoOwner);
-    HWY_ALIGN float lit[4][hn::MaxLanes(d)];
-    HWY_ALIGN std::uint32_t packed[hn::MaxLanes(d)];
     for (std::size_t i = 0; i < p.count; i += lanes) {
       const auto owners = hn::LoadU(du, owner + i);
       auto todo = owners != none;
@@ -105,16 +101,7 @@ void ShadeOwnedPoints(std::span<const ShadeSetup> setups, std::span<const std::u
         const Real* color[4] = {p.color[0] + i, p.color[1] + i, p.color[2] + i, p.color[3] + i};
         V r, g, b, a;
         LitColor(d, setups[o], s, colored[o] ? color : nullptr, r, g, b, a);
-        hn::Store(r, d, lit[0]);
-        hn::Store(g, d, lit[1]);
-        hn::Store(b, d, lit[2]);
-        hn::Store(a, d, lit[3]);
-        for (std::size_t k = 0; k < lanes; k += half) {
-          const auto word = PackUnorm8(dh, hn::Load(dh, lit[0] + k), hn::Load(dh, lit[1] + k), hn::Load(dh, lit[2] + k),
-                                       hn::Load(dh, lit[3] + k));
-          hn::Store(word, hn::Rebind<std::uint32_t, decltype(dh)>(), packed + k);
-        }
-        hn::BlendedStore(hn::Load(du, packed), mine, du, rgba + i);
+        hn::BlendedStore(PackUnorm8(d, r, g, b, a), mine, du, rgba + i);
         todo = hn::AndNot(mine, todo);
       }
     }
