@@ -31,7 +31,7 @@ constexpr std::size_t kTriangleChunk = 1024;     // triangles set up per paralle
 // What is gathered before it is binned and drawn: records, or tiny triangles (whose pixels take
 // less memory than a record, but whose chunks each keep per-tile lists).
 constexpr std::size_t kBatchRecords = 1 << 15;
-constexpr std::size_t kBatchTiny = 1 << 14;
+constexpr std::size_t kBatchTiny = 1 << 16;
 
 }  // namespace
 
