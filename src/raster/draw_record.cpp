@@ -64,7 +64,7 @@ void packVertex(const ShadedVertex& v, bool back, const AttributeLayout& l, Real
 }  // namespace
 
 std::size_t setupTriangles(const FrameContext& frame, const Object& object, std::uint32_t objectIndex,
-                           const std::vector<ShadedVertex>& vertices, std::size_t first, std::size_t last,
+                           std::span<const ShadedVertex> vertices, std::size_t first, std::size_t last,
                            RecordArena& out, const SetupBinning* binning) {
   std::size_t drawn = 0;
   const AttributeLayout& layout = out.layout();

@@ -16,6 +16,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <vector>
 
 namespace illum {
@@ -104,7 +105,7 @@ struct SetupBinning {
 // stage), appending a record for each drawn (clipped) piece to `out` in submission order, binned
 // as it goes when `binning` is given. Returns how many pieces were drawn (records and tiny ones).
 std::size_t setupTriangles(const FrameContext& frame, const Object& object, std::uint32_t objectIndex,
-                           const std::vector<ShadedVertex>& vertices, std::size_t first, std::size_t last,
+                           std::span<const ShadedVertex> vertices, std::size_t first, std::size_t last,
                            RecordArena& out, const SetupBinning* binning = nullptr);
 
 }  // namespace illum

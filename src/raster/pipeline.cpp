@@ -22,12 +22,14 @@
 
 #include <algorithm>
 #include <atomic>
+#include <span>
 
 namespace illum {
 namespace {
 
 constexpr std::size_t kVertexGrain = 512;        // vertices per parallel task
 constexpr std::size_t kTriangleChunk = 1024;     // triangles set up per parallel task
+constexpr std::size_t kSmallRun = 1 << 15;       // vertices of a run of objects shaded together
 // What is gathered before it is binned and drawn: records, or tiny triangles (whose pixels take
 // less memory than a record, but whose chunks each keep per-tile lists).
 constexpr std::size_t kBatchRecords = 1 << 15;
@@ -39,7 +41,19 @@ constexpr std::size_t kBatchTiny = 1 << 16;
 struct Renderer::State {
   Framebuffer fb;
   std::vector<std::size_t> tileFragments;
-  std::vector<ShadedVertex> vertices;
+  std::vector<ShadedVertex> vertices;  // a run of objects' (BinnedFrame::drawObjects)
+  struct Member {
+    const Object* object;
+    std::uint32_t index;  // in the scene
+    std::size_t base;     // its first vertex in `vertices`
+  };
+  std::vector<Member> group;
+  // Vertices or triangles [first, last) of a member: the parallel tasks of a run.
+  struct Range {
+    const Member* member;
+    std::size_t first, last;
+  };
+  std::vector<Range> ranges;
   tbb::enumerable_thread_specific<TileScratch> scratch;
   // Per chunk of triangles: its records and which tiles each touches, filled by one task.
   struct Chunk {
@@ -73,19 +87,52 @@ class BinnedFrame {
     s_.tileFragments.assign(std::size_t(tiles_.tileCount()), 0);
   }
 
-  void drawObject(const Object& object, std::uint32_t index) {
-    if (object.mesh->triangleCount() == 0) return;  // points and lines only: drawn after the triangles
+  // Draws the objects in the order given. A run of small objects goes through the vertex stage and
+  // the set-up together, one parallel pass each for the run: a sphere of a few thousand vertices
+  // alone would leave a core waiting at each pass's end.
+  void drawObjects(const Scene& scene, std::span<const Object* const> order) {
+    auto& group = s_.group;
+    group.clear();
+    std::size_t vertices = 0;
+    for (const Object* object : order) {
+      if (object->mesh->triangleCount() == 0) continue;  // points and lines only: drawn after the triangles
+      const std::size_t n = object->mesh->positions.size();
+      if (!group.empty() && vertices + n > kSmallRun) {
+        drawGroup(vertices);
+        group.clear();
+        vertices = 0;
+      }
+      group.push_back({object, std::uint32_t(object - scene.objects.data()), vertices});
+      vertices += n;
+    }
+    if (!group.empty()) drawGroup(vertices);
+  }
+
+ private:
+  // The objects in s_.group, `count` vertices in all, each object's at its `base` in s_.vertices.
+  void drawGroup(std::size_t count) {
     auto& vertices = s_.vertices;
-    vertices.resize(object.mesh->positions.size());
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vertices.size(), kVertexGrain),
-                      [&](const tbb::blocked_range<std::size_t>& r) {
-                        runVertexStage(frame_, object, vertices, r.begin(), r.end());
-                      });
-    const std::size_t triangles = object.mesh->triangleCount();
-    stats_.trianglesIn += triangles;
-    const std::size_t chunks = (triangles + kTriangleChunk - 1) / kTriangleChunk;
+    vertices.resize(count);
+    auto& ranges = s_.ranges;
+    ranges.clear();
+    for (const auto& member : s_.group)
+      for (std::size_t v = 0, n = member.object->mesh->positions.size(); v < n; v += kVertexGrain)
+        ranges.push_back({&member, v, std::min(n, v + kVertexGrain)});
+    tbb::parallel_for(std::size_t(0), ranges.size(), [&](std::size_t r) {
+      const auto& [member, first, last] = ranges[r];
+      runVertexStage(frame_, *member->object, ofMember(*member), first, last);
+    });
+    // The chunks of triangles, in submission order.
+    ranges.clear();
+    for (const auto& member : s_.group) {
+      const std::size_t triangles = member.object->mesh->triangleCount();
+      stats_.trianglesIn += triangles;
+      for (std::size_t t = 0; t < triangles; t += kTriangleChunk)
+        ranges.push_back({&member, t, std::min(triangles, t + kTriangleChunk)});
+    }
     // A slice of chunks is set up and binned in parallel, each chunk into an arena and bins of its
     // own; a tile then draws its records chunk by chunk, in submission order.
+    const std::size_t chunks = ranges.size();
     const std::size_t slice = std::max<std::size_t>(1, kBatchTiny / kTriangleChunk);
     for (std::size_t c0 = 0; c0 < chunks; c0 += slice) {
       const std::size_t c1 = std::min(chunks, c0 + slice);
@@ -93,12 +140,13 @@ class BinnedFrame {
       // Statically partitioned: a chunk's arena is set up, and later reused, by the same thread.
       tbb::parallel_for(tbb::blocked_range<std::size_t>(c0, c1, 1), [&](const tbb::blocked_range<std::size_t>& range) {
        for (std::size_t c = range.begin(); c < range.end(); ++c) {
+        const auto& [member, first, last] = ranges[c];
         Renderer::State::Chunk& chunk = s_.pool[used_ + (c - c0)];
-        chunk.records.reset(target_.layouts[index]);
+        chunk.records.reset(target_.layouts[member->index]);
         chunk.bins.reset(frame_.width, frame_.height);
-        const SetupBinning binning{chunk.bins, target_.tiny[index] != 0};
-        chunk.drawn = setupTriangles(frame_, object, index, vertices, c * kTriangleChunk,
-                                     std::min(triangles, (c + 1) * kTriangleChunk), chunk.records, &binning);
+        const SetupBinning binning{chunk.bins, target_.tiny[member->index] != 0};
+        chunk.drawn = setupTriangles(frame_, *member->object, member->index, ofMember(*member), first, last,
+                                     chunk.records, &binning);
         chunk.bins.finish();
        }
       }, tbb::static_partitioner());
@@ -112,6 +160,11 @@ class BinnedFrame {
     }
   }
 
+  std::span<ShadedVertex> ofMember(const Renderer::State::Member& member) {
+    return std::span(s_.vertices).subspan(member.base, member.object->mesh->positions.size());
+  }
+
+ public:
   // Draws every tile of what has been binned, each tile on one thread, its records in order:
   // opaque objects shade each visible pixel once (shade_tile.h), translucent ones blend fragment by fragment.
   // The affinity partitioner gives a tile to the thread that drew it in the previous flush, while
@@ -218,8 +271,7 @@ void Renderer::render(const Scene& scene, Image& image, RenderStats* statsOut, P
   RenderStats stats;
   if (samples.size() <= 1) {
     BinnedFrame pass(*state_, scene, frame, probe);
-    for (const Object* object : drawingOrder(scene, frame))
-      pass.drawObject(*object, std::uint32_t(object - scene.objects.data()));
+    pass.drawObjects(scene, drawingOrder(scene, frame));
     if (hasPointsOrLines(scene) || !overlay.empty()) {
       pass.flush();
       drawPointsAndLines(state_->fb, frame, scene, state_->vertices);
@@ -240,8 +292,7 @@ void Renderer::render(const Scene& scene, Image& image, RenderStats* statsOut, P
     for (std::size_t s = 0; s < samples.size(); ++s) {
       frame.sample = samples[s];
       BinnedFrame pass(*state_, scene, frame, s == 0 ? probe : nullptr);
-      for (const Object* object : drawingOrder(scene, frame))
-        pass.drawObject(*object, std::uint32_t(object - scene.objects.data()));
+      pass.drawObjects(scene, drawingOrder(scene, frame));
       pass.flush();
       drawPointsAndLines(state_->fb, frame, scene, state_->vertices);
       drawOverlayLines(state_->fb, frame, overlay, 1);

@@ -38,7 +38,7 @@ void lightBatch(const FrameContext& frame, const Object& object, TransformedVert
 
 }  // namespace
 
-void runVertexStage(const FrameContext& frame, const Object& object, std::vector<ShadedVertex>& out,
+void runVertexStage(const FrameContext& frame, const Object& object, std::span<ShadedVertex> out,
                     std::size_t first, std::size_t last) {
   const Mesh& mesh = *object.mesh;
   VertexTransform transform;

@@ -5,6 +5,7 @@
 #include "raster/frame_context.h"
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace illum {
@@ -36,9 +37,9 @@ struct alignas(64) ShadedVertex {
   Color4 color{1};    // the vertex colour, when the mesh has them (GL_COLOR_MATERIAL)
 };
 
-// The object's vertices [first, last) through the vertex stage, into `out` (already sized to the
-// mesh's vertex count); each vertex independent of the others, so ranges can run in parallel.
-void runVertexStage(const FrameContext& frame, const Object& object, std::vector<ShadedVertex>& out,
+// The object's vertices [first, last) through the vertex stage, into `out` (as many as the mesh's
+// vertices); each vertex independent of the others, so ranges can run in parallel.
+void runVertexStage(const FrameContext& frame, const Object& object, std::span<ShadedVertex> out,
                     std::size_t first, std::size_t last);
 
 // Linear interpolation of every attribute, as clipping needs it.
