@@ -198,7 +198,7 @@ HWY_INLINE std::size_t DepthPassTwoRows(const TriangleSetup& t, const PixelRect&
       const VF xs = hn::Set(df, float(x - tile.minX)) + columnOf;
       const auto inside = hn::And(hn::And(hn::And(E0 + bias[0] >= zero, E1 + bias[1] >= zero), E2 + bias[2] >= zero),
                                   hn::And(xs <= hi, rows));
-      if (hn::AllFalse(df, inside)) continue;
+      // An empty block is cheaper to test through than to branch around (which mispredicts).
       const VF l0 = E0 * invArea, l1 = E1 * invArea, l2 = E2 * invArea;
       const VF z = l0 * z0 + l1 * z1 + l2 * z2;
       const VF stored = hn::Combine(df, hn::LoadU(dh, depth + row1 + x), hn::LoadU(dh, depth + row0 + x));
