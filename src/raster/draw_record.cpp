@@ -168,6 +168,17 @@ std::size_t setupTriangles(const FrameContext& frame, const Object& object, std:
       at.indices = indices.data() + 3 * t0;
       std::uint32_t fast = 0, empty = 0;
       batch->setGroupUp(at, count, fast, empty);
+      if ((fast | empty) == (1u << count) - 1) {
+        // None for the one-by-one path (a dense mesh's usual group): the fast ones taken bit by
+        // bit, without a branch per triangle that would mispredict.
+        for (std::uint32_t m = fast; m != 0; m &= m - 1) {
+          const int j = __builtin_ctz(m);
+          batch->take(j, binning->bins.recordsIn(batch->groupTile(j)));
+        }
+        drawn += std::size_t(__builtin_popcount(fast));
+        fewInARow = 0;
+        continue;
+      }
       for (int j = 0; j < count; ++j) {
         if (fast >> j & 1) {
           batch->take(j, binning->bins.recordsIn(batch->groupTile(j)));
