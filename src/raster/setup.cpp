@@ -64,12 +64,15 @@ bool setupTriangle(const ShadedVertex& v0, const ShadedVertex& v1, const ShadedV
 
   out.frontFacing = area2 > 0;
   out.swapped = area2 < 0;
-  if (out.swapped) {
-    // Make the triangle counter-clockwise; the caller moves the attributes along.
-    std::swap(x[1], x[2]);
-    std::swap(y[1], y[2]);
-    std::swap(p[1], p[2]);
-    area2 = -area2;
+  {
+    // Make the triangle counter-clockwise (the caller moves the attributes along), by selects:
+    // front and back faces alternate through a mesh, and a branch would mispredict.
+    const bool swap = out.swapped;
+    const std::int64_t x1 = swap ? x[2] : x[1], x2 = swap ? x[1] : x[2];
+    const std::int64_t y1 = swap ? y[2] : y[1], y2 = swap ? y[1] : y[2];
+    const WindowPosition *p1 = swap ? p[2] : p[1], *p2 = swap ? p[1] : p[2];
+    x[1] = x1, x[2] = x2, y[1] = y1, y[2] = y2, p[1] = p1, p[2] = p2;
+    area2 = swap ? -area2 : area2;
   }
   out.area2 = area2;
   out.invArea = Real(1) / Real(area2);
