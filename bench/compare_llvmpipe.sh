@@ -55,7 +55,7 @@ row() {
   done
   local a b
   a=$(median "${ours[@]}") b=$(median "${theirs[@]}")
-  printf '| %-34s | %12.1f | %12.1f | %14.2f |\n' "$label" "$a" "$b" "$(awk -v a="$a" -v b="$b" 'BEGIN { print a / b }')"
+  printf '| %-34s | %12.2f | %12.2f | %14.3f |\n' "$label" "$a" "$b" "$(awk -v a="$a" -v b="$b" 'BEGIN { print a / b }')"
 }
 
 # Four spheres of half the radius, a quarter of the triangles each, in place of every sphere.
