@@ -135,6 +135,21 @@ HWY_INLINE std::size_t DepthPass(const TriangleSetup& t, const PixelRect& tile, 
 }
 
 #if HWY_TARGET != HWY_SCALAR
+// Whether every edge value inside the triangle's bounds in `tile` is below 2^32 in magnitude (the
+// float-exact triangles' are below 2^24), bounded from the first pixel's value and the spans.
+HWY_INLINE bool BlockRowsExact(const TriangleSetup& t, const PixelRect& tile) {
+  const int minX = std::max(t.minX, tile.minX), maxX = std::min(t.maxX, tile.maxX);
+  const int minY = std::max(t.minY, tile.minY), maxY = std::min(t.maxY, tile.maxY);
+  const std::int64_t half = kSubpixelOne / 2, limit = (std::int64_t(1) << 32) - kSubpixelOne;
+  for (const EdgeFunction& e : t.edge) {
+    if (std::abs(std::int64_t(e.a)) > (1 << 24) || std::abs(std::int64_t(e.b)) > (1 << 24)) return false;
+    const std::int64_t first = e.at(std::int64_t(minX) * kSubpixelOne + half, std::int64_t(minY) * kSubpixelOne + half);
+    if (std::abs(first) + (std::abs(std::int64_t(e.a)) * (maxX - minX) + std::abs(std::int64_t(e.b)) * (maxY - minY)) * kSubpixelOne > limit)
+      return false;
+  }
+  return true;
+}
+
 // A small triangle's depth pass two rows at a time: a float vector holds twice as many lanes as a
 // double one, so each vector is a block of two rows of Lanes(DR) pixels, tested and depth-compared
 // whole, then handed to `write` one row at a time. Same values as DepthPass<true>.
@@ -152,19 +167,21 @@ HWY_INLINE std::size_t DepthPassTwoRows(const TriangleSetup& t, const PixelRect&
   const DR dh;  // one row: half of df
   using VF = hn::VFromD<decltype(df)>;
   const int columns = int(hn::Lanes(dh));
-  // Lane k is the pixel (k mod columns, k / columns) of the block; its edge values differ from
-  // the block's first pixel by c·A + r·B (A = 256a, B = 256b: |a|, |b| ≤ 2^24 here, exact in
-  // float), whole multiples of 256 of at most 2^25 inside the bounds: exact in float however the
-  // multiply-add rounds, and lanes outside the bounds are masked.
+  // An edge value E is kept as S + lo: lo = E mod 256 at the bounds' first pixel, and S, a whole
+  // multiple of 256 of at most 2^32 inside the bounds (blockRowsExact), exact in float. Lane k is
+  // the pixel (k mod columns, k / columns) of the block; its S differs from the block's first
+  // pixel's by c·A + r·B (A = 256a, B = 256b: |a|, |b| ≤ 2^24 here, exact in float), also such a
+  // multiple inside the bounds: exact however the multiply-add rounds; lanes outside the bounds
+  // are masked. S + lo rounds once, as converting E to float does, and S + (lo + bias) keeps the
+  // sign of E + bias, so the test and the barycentrics are the scalar path's.
   const VF iota = hn::Iota(df, 0.0f);
   const VF rowOf = hn::IfThenElseZero(iota >= hn::Set(df, float(columns)), hn::Set(df, 1.0f));
   const VF columnOf = hn::NegMulAdd(rowOf, hn::Set(df, float(columns)), iota);
-  VF off[3], bias[3];
+  VF off[3];
   for (int i = 0; i < 3; ++i) {
     const VF A = hn::Set(df, float(t.edge[i].a) * float(kSubpixelOne));
     const VF B = hn::Set(df, float(t.edge[i].b) * float(kSubpixelOne));
     off[i] = hn::MulAdd(columnOf, A, rowOf * B);
-    bias[i] = hn::Set(df, float(t.edge[i].bias));
   }
   const VF hi = hn::Set(df, float(maxX - tile.minX));
   const VF invArea = hn::Set(df, t.invArea);
@@ -173,13 +190,16 @@ HWY_INLINE std::size_t DepthPassTwoRows(const TriangleSetup& t, const PixelRect&
   // The block moves by `columns` pixels along a row and by two rows: its lanes inside the bounds
   // come from lanes inside the bounds of the block before, so adding the (exact) steps keeps them
   // exact.
-  VF stepX[3], stepY[3], rowStart[3];
+  VF stepX[3], stepY[3], rowStart[3], lo[3], loBias[3];
   const std::int64_t half = kSubpixelOne / 2;
   for (int i = 0; i < 3; ++i) {
     stepX[i] = hn::Set(df, float(columns) * float(t.edge[i].a) * float(kSubpixelOne));
     stepY[i] = hn::Set(df, 2.0f * float(t.edge[i].b) * float(kSubpixelOne));
     const std::int64_t first = t.edge[i].at(std::int64_t(minX) * kSubpixelOne + half, std::int64_t(minY) * kSubpixelOne + half);
-    rowStart[i] = hn::Set(df, float(first)) + off[i];
+    const std::int64_t low = first & (kSubpixelOne - 1);  // E mod 256, in [0, 256)
+    rowStart[i] = hn::Set(df, float(first - low)) + off[i];
+    lo[i] = hn::Set(df, float(low));
+    loBias[i] = hn::Set(df, float(low + t.edge[i].bias));
   }
   const auto halves = [&](auto mask, auto& lower, auto& higher) {
     const VF v = hn::VecFromMask(df, mask);
@@ -188,16 +208,18 @@ HWY_INLINE std::size_t DepthPassTwoRows(const TriangleSetup& t, const PixelRect&
   };
   std::size_t passed = 0;
   for (int y = minY; y <= maxY; y += 2) {
-    VF E0 = rowStart[0], E1 = rowStart[1], E2 = rowStart[2];
+    VF S0 = rowStart[0], S1 = rowStart[1], S2 = rowStart[2];
     for (int i = 0; i < 3; ++i) rowStart[i] = rowStart[i] + stepY[i];
     const int row0 = (y - tile.minY) * kTileSize - tile.minX;
     const bool two = y + 1 <= maxY;
     const int row1 = two ? row0 + kTileSize : row0;  // never past the tile: the lanes are masked
     const auto rows = rowOf < hn::Set(df, two ? 2.0f : 1.0f);
-    for (int x = minX; x <= maxX; x += columns, E0 = E0 + stepX[0], E1 = E1 + stepX[1], E2 = E2 + stepX[2]) {
+    for (int x = minX; x <= maxX; x += columns, S0 = S0 + stepX[0], S1 = S1 + stepX[1], S2 = S2 + stepX[2]) {
       const VF xs = hn::Set(df, float(x - tile.minX)) + columnOf;
-      const auto inside = hn::And(hn::And(hn::And(E0 + bias[0] >= zero, E1 + bias[1] >= zero), E2 + bias[2] >= zero),
-                                  hn::And(xs <= hi, rows));
+      const auto inside =
+          hn::And(hn::And(hn::And(S0 + loBias[0] >= zero, S1 + loBias[1] >= zero), S2 + loBias[2] >= zero),
+                  hn::And(xs <= hi, rows));
+      const VF E0 = S0 + lo[0], E1 = S1 + lo[1], E2 = S2 + lo[2];
       // An empty block is cheaper to test through than to branch around (which mispredicts).
       const VF l0 = E0 * invArea, l1 = E1 * invArea, l2 = E2 * invArea;
       const VF z = l0 * z0 + l1 * z1 + l2 * z2;
@@ -277,7 +299,7 @@ HWY_INLINE std::size_t DepthPass(const TriangleSetup& t, const PixelRect& tile, 
       return DepthPassFewPixels(t, minX, maxX, minY, maxY, tile, depth, write);
   }
 #if HWY_TARGET != HWY_SCALAR
-  if (sizeof(Real) == 4 && t.floatExact) return DepthPassTwoRows(t, tile, depth, write, wide);
+  if (sizeof(Real) == 4 && BlockRowsExact(t, tile)) return DepthPassTwoRows(t, tile, depth, write, wide);
 #else
   (void)wide;
 #endif
