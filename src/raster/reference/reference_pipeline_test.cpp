@@ -97,6 +97,11 @@ TEST(BinnedPipeline, EverySimdTargetDrawsTheSameBytes) {
   for (const char* file : {"examples/first_light.json", "tests/scenes/parity/near_clip_two_sided.json", "tests/scenes/parity/coloured_lights.json"})
     scenes.push_back({file, loadSceneFile(fs::path(ILLUM_REPO_DIR) / file)});
   scenes.push_back({"dense", denseScene(true)});
+  // Bigger triangles, whose edge values pass 2^24 (the two-row blocks keep them as a multiple of
+  // 256 plus a remainder) or 2^32 (double lanes).
+  Scene big = defaultScene();
+  big.width = 1600, big.height = 1000;
+  scenes.push_back({"built-in 1600x1000", big});
   int targets = 0;
   for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
     hwy::SetSupportedTargetsForTest(target);
