@@ -108,63 +108,6 @@ class BinnedFrame {
     if (!group.empty()) drawGroup(vertices);
   }
 
- private:
-  // The objects in s_.group, `count` vertices in all, each object's at its `base` in s_.vertices.
-  void drawGroup(std::size_t count) {
-    auto& vertices = s_.vertices;
-    vertices.resize(count);
-    auto& ranges = s_.ranges;
-    ranges.clear();
-    for (const auto& member : s_.group)
-      for (std::size_t v = 0, n = member.object->mesh->positions.size(); v < n; v += kVertexGrain)
-        ranges.push_back({&member, v, std::min(n, v + kVertexGrain)});
-    tbb::parallel_for(std::size_t(0), ranges.size(), [&](std::size_t r) {
-      const auto& [member, first, last] = ranges[r];
-      runVertexStage(frame_, *member->object, ofMember(*member), first, last);
-    });
-    // The chunks of triangles, in submission order.
-    ranges.clear();
-    for (const auto& member : s_.group) {
-      const std::size_t triangles = member.object->mesh->triangleCount();
-      stats_.trianglesIn += triangles;
-      for (std::size_t t = 0; t < triangles; t += kTriangleChunk)
-        ranges.push_back({&member, t, std::min(triangles, t + kTriangleChunk)});
-    }
-    // A slice of chunks is set up and binned in parallel, each chunk into an arena and bins of its
-    // own; a tile then draws its records chunk by chunk, in submission order.
-    const std::size_t chunks = ranges.size();
-    const std::size_t slice = std::max<std::size_t>(1, kBatchTiny / kTriangleChunk);
-    for (std::size_t c0 = 0; c0 < chunks; c0 += slice) {
-      const std::size_t c1 = std::min(chunks, c0 + slice);
-      if (s_.pool.size() < used_ + (c1 - c0)) s_.pool.resize(used_ + (c1 - c0));
-      // Statically partitioned: a chunk's arena is set up, and later reused, by the same thread.
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(c0, c1, 1), [&](const tbb::blocked_range<std::size_t>& range) {
-       for (std::size_t c = range.begin(); c < range.end(); ++c) {
-        const auto& [member, first, last] = ranges[c];
-        Renderer::State::Chunk& chunk = s_.pool[used_ + (c - c0)];
-        chunk.records.reset(target_.layouts[member->index]);
-        chunk.bins.reset(frame_.width, frame_.height);
-        const SetupBinning binning{chunk.bins, target_.tiny[member->index] != 0};
-        chunk.drawn = setupTriangles(frame_, *member->object, member->index, ofMember(*member), first, last,
-                                     chunk.records, &binning);
-        chunk.bins.finish();
-       }
-      }, tbb::static_partitioner());
-      for (std::size_t c = c0; c < c1; ++c) {
-        const Renderer::State::Chunk& chunk = s_.pool[used_++];
-        batchedRecords_ += chunk.records.size();
-        batchedTiny_ += chunk.drawn - chunk.records.size();
-        stats_.trianglesDrawn += chunk.drawn;
-      }
-      if (batchedRecords_ >= kBatchRecords || batchedTiny_ >= kBatchTiny) flush();
-    }
-  }
-
-  std::span<ShadedVertex> ofMember(const Renderer::State::Member& member) {
-    return std::span(s_.vertices).subspan(member.base, member.object->mesh->positions.size());
-  }
-
- public:
   // Draws every tile of what has been binned, each tile on one thread, its records in order:
   // opaque objects shade each visible pixel once (shade_tile.h), translucent ones blend fragment by fragment.
   // The affinity partitioner gives a tile to the thread that drew it in the previous flush, while
@@ -244,6 +187,61 @@ class BinnedFrame {
   }
 
  private:
+  // The objects in s_.group, `count` vertices in all, each object's at its `base` in s_.vertices.
+  void drawGroup(std::size_t count) {
+    auto& vertices = s_.vertices;
+    vertices.resize(count);
+    auto& ranges = s_.ranges;
+    ranges.clear();
+    for (const auto& member : s_.group)
+      for (std::size_t v = 0, n = member.object->mesh->positions.size(); v < n; v += kVertexGrain)
+        ranges.push_back({&member, v, std::min(n, v + kVertexGrain)});
+    tbb::parallel_for(std::size_t(0), ranges.size(), [&](std::size_t r) {
+      const auto& [member, first, last] = ranges[r];
+      runVertexStage(frame_, *member->object, ofMember(*member), first, last);
+    });
+    // The chunks of triangles, in submission order.
+    ranges.clear();
+    for (const auto& member : s_.group) {
+      const std::size_t triangles = member.object->mesh->triangleCount();
+      stats_.trianglesIn += triangles;
+      for (std::size_t t = 0; t < triangles; t += kTriangleChunk)
+        ranges.push_back({&member, t, std::min(triangles, t + kTriangleChunk)});
+    }
+    // A slice of chunks is set up and binned in parallel, each chunk into an arena and bins of its
+    // own; a tile then draws its records chunk by chunk, in submission order.
+    const std::size_t chunks = ranges.size();
+    const std::size_t slice = std::max<std::size_t>(1, kBatchTiny / kTriangleChunk);
+    for (std::size_t c0 = 0; c0 < chunks; c0 += slice) {
+      const std::size_t c1 = std::min(chunks, c0 + slice);
+      if (s_.pool.size() < used_ + (c1 - c0)) s_.pool.resize(used_ + (c1 - c0));
+      // Statically partitioned: a chunk's arena is set up, and later reused, by the same thread.
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(c0, c1, 1), [&](const tbb::blocked_range<std::size_t>& range) {
+       for (std::size_t c = range.begin(); c < range.end(); ++c) {
+        const auto& [member, first, last] = ranges[c];
+        Renderer::State::Chunk& chunk = s_.pool[used_ + (c - c0)];
+        chunk.records.reset(target_.layouts[member->index]);
+        chunk.bins.reset(frame_.width, frame_.height);
+        const SetupBinning binning{chunk.bins, target_.tiny[member->index] != 0};
+        chunk.drawn = setupTriangles(frame_, *member->object, member->index, ofMember(*member), first, last,
+                                     chunk.records, &binning);
+        chunk.bins.finish();
+       }
+      }, tbb::static_partitioner());
+      for (std::size_t c = c0; c < c1; ++c) {
+        const Renderer::State::Chunk& chunk = s_.pool[used_++];
+        batchedRecords_ += chunk.records.size();
+        batchedTiny_ += chunk.drawn - chunk.records.size();
+        stats_.trianglesDrawn += chunk.drawn;
+      }
+      if (batchedRecords_ >= kBatchRecords || batchedTiny_ >= kBatchTiny) flush();
+    }
+  }
+
+  std::span<ShadedVertex> ofMember(const Renderer::State::Member& member) {
+    return std::span(s_.vertices).subspan(member.base, member.object->mesh->positions.size());
+  }
+
   Renderer::State& s_;
   const FrameContext& frame_;
   DrawTarget target_;
