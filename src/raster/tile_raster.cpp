@@ -150,9 +150,10 @@ HWY_INLINE bool BlockRowsExact(const TriangleSetup& t, const PixelRect& tile) {
   return true;
 }
 
-// A small triangle's depth pass two rows at a time: a float vector holds twice as many lanes as a
-// double one, so each vector is a block of two rows of Lanes(DR) pixels, tested and depth-compared
-// whole, then handed to `write` one row at a time. Same values as DepthPass<true>.
+// The depth pass of a triangle whose edge values fit (BlockRowsExact) two rows at a time: a
+// float vector holds twice as many lanes as a double one, so each vector is a block of two rows
+// of Lanes(DR) pixels, tested and depth-compared whole, then handed to `write` one row at a time.
+// Same values as DepthPass.
 //
 // With `wide`, wide(at0, at1, pass0, pass1, l0, l1, l2) is handed the whole block instead: its
 // lower half is the row at tile index at0, its upper half the row at at1, pass0 and pass1 the
@@ -168,7 +169,7 @@ HWY_INLINE std::size_t DepthPassTwoRows(const TriangleSetup& t, const PixelRect&
   using VF = hn::VFromD<decltype(df)>;
   const int columns = int(hn::Lanes(dh));
   // An edge value E is kept as S + lo: lo = E mod 256 at the bounds' first pixel, and S, a whole
-  // multiple of 256 of at most 2^32 inside the bounds (blockRowsExact), exact in float. Lane k is
+  // multiple of 256 of at most 2^32 inside the bounds (BlockRowsExact), exact in float. Lane k is
   // the pixel (k mod columns, k / columns) of the block; its S differs from the block's first
   // pixel's by c·A + r·B (A = 256a, B = 256b: |a|, |b| ≤ 2^24 here, exact in float), also such a
   // multiple inside the bounds: exact however the multiply-add rounds; lanes outside the bounds
