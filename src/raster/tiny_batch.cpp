@@ -123,7 +123,7 @@ std::size_t CoverTinyBatch(const TinyBatchLanes& b, std::uint32_t members, bool 
       const int word = start[j] / 64, bit = start[j] % 64;
       std::uint64_t bits = inside[word] >> bit;
       if (bit > 64 - kTinyPixels) bits |= inside[word + 1] << (64 - bit);
-      covered[g + j] = std::uint8_t(__builtin_popcountll(bits & ((1u << b.count[g + j]) - 1)));
+      covered[g + j] = std::uint8_t(__builtin_popcountll(bits & ((std::uint64_t(1) << b.count[g + j]) - 1)));
     }
   }
   return n;

@@ -22,7 +22,7 @@ struct TinyTag {
 };
 
 // A tiny triangle's bounds hold at most kTinyPixels pixel centres (tile_raster.h: isTiny).
-constexpr int kTinyPixels = 16;
+constexpr int kTinyPixels = 32;
 
 // Lane k of a tiny triangle's bounds, w pixels wide: column k mod w, row k / w, and its offset in
 // the tile from the bounds' first pixel.
