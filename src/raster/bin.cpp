@@ -9,7 +9,11 @@ void TileBins::reset(int width, int height) {
   height_ = height;
   tilesX_ = (width + kTileSize - 1) / kTileSize;
   tilesY_ = (height + kTileSize - 1) / kTileSize;
-  recordCount_.assign(std::size_t(tileCount()), 0);
+  // Only the tiles counted since the last reset need zeroing: a chunk touches few of them.
+  if (recordCount_.size() != std::size_t(tileCount())) recordCount_.assign(std::size_t(tileCount()), 0);
+  else
+    for (const auto& [tile, record] : recordTiles_) recordCount_[tile] = 0;
+  recordSpan_ = {};
   recordTiles_.clear();
   fragments.clear();
   surfaces.clear();
@@ -31,12 +35,11 @@ void TileBins::addRecord(const TriangleSetup& t, std::uint32_t index) {
 }
 
 void TileBins::finish() {
-  const std::size_t tiles = std::size_t(tileCount());
   using Entry = std::pair<std::uint32_t, std::uint32_t>;
-  sortByTile(recordTiles_, tiles, [](const Entry& e) { return e.first; }, [](const Entry& e) { return e.second; },
-             recordStart_, sortedRecords_);
-  fragments.finish(tiles);
-  surfaces.finish(tiles);
+  recordSpan_ = sortByTile(recordTiles_, [](const Entry& e) { return e.first; }, [](const Entry& e) { return e.second; },
+                           recordStart_, sortedRecords_);
+  fragments.finish();
+  surfaces.finish();
 }
 
 }  // namespace illum

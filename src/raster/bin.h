@@ -22,19 +22,40 @@
 
 namespace illum {
 
-// A stable counting sort by tile: value(item) of each of `items` into `sorted`, tile by tile
-// (tileOf(item) < tiles), each tile's in the order appended; start[t] .. start[t + 1] are tile t's.
+// The tiles a chunk touched: [first, last) in tile order. A chunk of a dense mesh touches a few
+// of a 4K frame's two thousand tiles: its per-tile tables span only these.
+struct TileSpan {
+  std::uint32_t first = 0, last = 0;
+  bool holds(std::uint32_t tile) const { return tile - first < last - first; }  // (unsigned: below first wraps)
+};
+
+// A stable counting sort by tile: value(item) of each of `items` into `sorted`, tile by tile,
+// each tile's in the order appended; returns the tiles touched, and start[t − first] ..
+// start[t − first + 1] are tile t's.
 template <class Item, class Sorted, class TileOf, class Value>
-void sortByTile(const std::vector<Item>& items, std::size_t tiles, TileOf tileOf, Value value,
-                std::vector<std::uint32_t>& start, std::vector<Sorted>& sorted) {
-  start.assign(tiles + 1, 0);
-  for (const Item& item : items) ++start[tileOf(item) + 1];
-  for (std::size_t t = 0; t < tiles; ++t) start[t + 1] += start[t];
+TileSpan sortByTile(const std::vector<Item>& items, TileOf tileOf, Value value, std::vector<std::uint32_t>& start,
+                    std::vector<Sorted>& sorted) {
+  TileSpan span;
+  if (items.empty()) {
+    start.assign(1, 0);
+    sorted.clear();
+    return span;
+  }
+  span.first = ~std::uint32_t(0);
+  for (const Item& item : items) {
+    const std::uint32_t tile = tileOf(item);
+    span.first = std::min(span.first, tile);
+    span.last = std::max(span.last, tile + 1);
+  }
+  start.assign(span.last - span.first + 1, 0);
+  for (const Item& item : items) ++start[tileOf(item) - span.first + 1];
+  for (std::size_t t = 0; t + 1 < start.size(); ++t) start[t + 1] += start[t];
   sorted.resize(items.size());
-  for (const Item& item : items) sorted[start[tileOf(item)]++] = value(item);
+  for (const Item& item : items) sorted[start[tileOf(item) - span.first]++] = value(item);
   // Each start was moved to its end: shift back by one tile.
-  for (std::size_t t = tiles; t > 0; --t) start[t] = start[t - 1];
+  for (std::size_t t = start.size() - 1; t > 0; --t) start[t] = start[t - 1];
   start[0] = 0;
+  return span;
 }
 
 // One chunk's tiny pixels of one kind, in runs of one tile.
@@ -53,15 +74,16 @@ class TinyRuns {
     else runs_.push_back({std::uint32_t(tile), std::uint32_t(count_), std::uint32_t(k)});
     count_ += k;
   }
-  // Sorts the runs by tile (of `tiles`).
-  void finish(std::size_t tiles) {
-    sortByTile(runs_, tiles, [](const Run& r) { return r.tile; }, [](const Run& r) { return r; }, start_, sorted_);
+  // Sorts the runs by tile.
+  void finish() {
+    span_ = sortByTile(runs_, [](const Run& r) { return r.tile; }, [](const Run& r) { return r; }, start_, sorted_);
   }
   // f(first, count) for each run of the tile's pixels, in order.
   template <class F>
   void forEachRun(int tile, F&& f) const {
-    for (std::uint32_t r = start_[std::size_t(tile)]; r < start_[std::size_t(tile) + 1]; ++r)
-      f(pixels_.get() + sorted_[r].first, sorted_[r].count);
+    if (!span_.holds(std::uint32_t(tile))) return;
+    const std::size_t t = std::size_t(tile) - span_.first;
+    for (std::uint32_t r = start_[t]; r < start_[t + 1]; ++r) f(pixels_.get() + sorted_[r].first, sorted_[r].count);
   }
 
  private:
@@ -78,7 +100,8 @@ class TinyRuns {
   std::unique_ptr<Pixel[]> pixels_;
   std::size_t count_ = 0, capacity_ = 0;
   std::vector<Run> runs_, sorted_;
-  std::vector<std::uint32_t> start_;  // per tile, its first sorted run (and its end at tile + 1)
+  TileSpan span_;                     // the tiles with runs
+  std::vector<std::uint32_t> start_;  // per tile of span_, its first sorted run (and its end at tile + 1)
 };
 
 class TileBins {
@@ -103,7 +126,8 @@ class TileBins {
   // Sorts what was appended by tile; then records(tile) and the tiny pixels' forEach hold it.
   void finish();
   std::span<const std::uint32_t> records(int tile) const {
-    const std::size_t t = std::size_t(tile);
+    if (!recordSpan_.holds(std::uint32_t(tile))) return {};
+    const std::size_t t = std::size_t(tile) - recordSpan_.first;
     return std::span(sortedRecords_).subspan(recordStart_[t], recordStart_[t + 1] - recordStart_[t]);
   }
 
@@ -111,7 +135,8 @@ class TileBins {
   int width_ = 0, height_ = 0, tilesX_ = 0, tilesY_ = 0;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> recordTiles_;  // (tile, record), as appended
   std::vector<std::uint32_t> recordCount_;  // per tile, as appended
-  // Sorted by tile: the record indices, and where each tile's start (and end, at tile + 1).
+  // Sorted by tile: the record indices, and where each tile of recordSpan_ starts (and ends, at tile + 1).
+  TileSpan recordSpan_;
   std::vector<std::uint32_t> recordStart_, sortedRecords_;
 };
 

@@ -52,7 +52,7 @@ std::vector<Tiny> randomTinyTriangles(int count) {
 
 // The pixels of each tile's runs, in order.
 std::vector<std::vector<TinyFragment>> byTile(TinyRuns<TinyFragment>& runs) {
-  runs.finish(16);
+  runs.finish();
   std::vector<std::vector<TinyFragment>> tiles(16);
   for (int tile = 0; tile < 16; ++tile)
     runs.forEachRun(tile, [&](const TinyFragment* first, std::uint32_t count) {
