@@ -72,7 +72,7 @@ std::size_t setupTriangles(const FrameContext& frame, const Object& object, std:
   [[maybe_unused]] const bool tiny = binning && binning->tiny;
 #if !ILLUM_USE_DOUBLE
   std::optional<TinyBatch> batch;
-  if (tiny && frame.shading != Shading::Phong) batch.emplace(binning->bins.fragments, frame.shading == Shading::Flat);
+  if (tiny && frame.shading != Shading::Phong) batch.emplace(binning->bins.fragments, frame.shading == Shading::Flat, binning->bins.tilesX());
   // While a group of triangles set up at once (below) holds the batch's lanes, a tiny triangle
   // that comes one by one is covered alone.
   bool grouping = false;
@@ -97,28 +97,32 @@ std::size_t setupTriangles(const FrameContext& frame, const Object& object, std:
 #if !ILLUM_USE_DOUBLE
       if (tiny && isTiny(r.setup)) {
         TileBins& bins = binning->bins;
-        const int tile = bins.tileOf(r.setup.minX, r.setup.minY);
+        const bool flat = frame.shading == Shading::Flat;
+        SurfaceVertices s;
+        Color4 lit[3];
+        std::uint32_t packed = 0;
         if (frame.shading == Shading::Phong) {
-          SurfaceVertices s;
           for (int k = 0; k < 3; ++k) s.position[k] = ordered[k]->eyePosition, s.normal[k] = ordered[k]->eyeNormal;
           s.negate = back;
           s.owner = objectIndex;
-          bins.surfaces.commit(coverTinySurface(r.setup, s, bins.recordsIn(tile), bins.surfaces.room(kTinyRoom)), tile);
         } else {
-          const bool flat = frame.shading == Shading::Flat;
-          const Color4 lit[3] = {back ? ordered[0]->back : ordered[0]->front, back ? ordered[1]->back : ordered[1]->front,
-                                 back ? ordered[2]->back : ordered[2]->front};
-          const std::uint32_t packed = flat ? packUnorm8(back ? c.back : c.front) : 0;
-          if (!grouping && TinyBatch::joins(r.setup, flat ? nullptr : lit)) {
-            batch->add(r.setup, flat ? nullptr : lit, packed, bins.recordsIn(tile), tile);
+          for (int k = 0; k < 3; ++k) lit[k] = back ? ordered[k]->back : ordered[k]->front;
+          packed = flat ? packUnorm8(back ? c.back : c.front) : 0;
+        }
+        forEachTilePiece(r.setup, [&](const TriangleSetup& piece) {
+          const int tile = bins.tileOf(piece.minX, piece.minY);
+          if (frame.shading == Shading::Phong) {
+            bins.surfaces.commit(coverTinySurface(piece, s, bins.recordsIn(tile), bins.surfaces.room(kTinyRoom)), tile);
+          } else if (!grouping && TinyBatch::joins(piece, flat ? nullptr : lit)) {
+            batch->add(piece, flat ? nullptr : lit, packed, bins.recordsIn(tile), tile);
           } else {
             batch->flush();  // its pixels come first
             TinyFragment* room = bins.fragments.room(kTinyRoom);
-            bins.fragments.commit(flat ? coverTinyFlat(r.setup, packed, bins.recordsIn(tile), room)
-                                       : coverTinyGouraud(r.setup, lit, bins.recordsIn(tile), room),
+            bins.fragments.commit(flat ? coverTinyFlat(piece, packed, bins.recordsIn(tile), room)
+                                       : coverTinyGouraud(piece, lit, bins.recordsIn(tile), room),
                                   tile);
           }
-        }
+        });
         out.drop();
         return;
       }
@@ -152,6 +156,7 @@ std::size_t setupTriangles(const FrameContext& frame, const Object& object, std:
     const TinyGroupSource source{vertices.data(), nullptr, frame.width, frame.height, binning->bins.tilesX(),
                                  frame.lightModel.twoSided, frame.shading == Shading::Flat};
     const std::size_t group = std::size_t(tinyGroupCapacity());
+    const auto recordsIn = [&](int tile) { return binning->bins.recordsIn(tile); };
     constexpr int kMostOneByOne = 5;  // at most 2^5 − 1 groups one by one between tries
     int oneByOneGroups = 0, fewInARow = 0;
     for (std::size_t t0 = first; t0 < last; t0 += group) {
@@ -173,7 +178,7 @@ std::size_t setupTriangles(const FrameContext& frame, const Object& object, std:
         // bit, without a branch per triangle that would mispredict.
         for (std::uint32_t m = fast; m != 0; m &= m - 1) {
           const int j = __builtin_ctz(m);
-          batch->take(j, binning->bins.recordsIn(batch->groupTile(j)));
+          batch->take(j, recordsIn);
         }
         drawn += std::size_t(__builtin_popcount(fast));
         fewInARow = 0;
@@ -181,7 +186,7 @@ std::size_t setupTriangles(const FrameContext& frame, const Object& object, std:
       }
       for (int j = 0; j < count; ++j) {
         if (fast >> j & 1) {
-          batch->take(j, binning->bins.recordsIn(batch->groupTile(j)));
+          batch->take(j, recordsIn);
           ++drawn;
         } else if (!(empty >> j & 1)) {
           oneByOne(t0 + std::size_t(j));

@@ -10,9 +10,11 @@
 
 #include <illum/lighting.h>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 
 namespace illum {
 
@@ -25,17 +27,34 @@ constexpr std::uint32_t kNoWinner = 0xFFFFFFFF;
 std::size_t rasterizeDepth(const TriangleSetup& t, const PixelRect& tile, Real* depth, std::uint32_t slot,
                            std::uint32_t* winners);
 
-// A tiny triangle (isTiny: a few pixels, all in one tile) is worked out as soon as it is set up,
-// without a record: coverTiny* write its covered pixels to `out` (room for kTinyRoom) for its tile
-// (bin.h), to be depth-tested later, each tagged with `recordsBefore`: with depths and RGBA8
-// colours exactly as rasterizeFlat (`packed`) or rasterizeGouraud would write them, or with the
-// visible surface as rasterizeSurface would keep it (coverTinySurface, for a triangle without
-// vertex colours). They return how many they wrote (at most kTinyPixels), in rows from the
-// bottom. Float channels only.
+// A tiny triangle (isTiny: bounds of a few pixels) is worked out as soon as it is set up, without
+// a record, in each tile its bounds overlap (forEachTilePiece): coverTiny* write its covered pixels
+// in one tile (`t`'s bounds inside it) to `out` (room for kTinyRoom) for that tile (bin.h), to be
+// depth-tested later, each tagged with `recordsBefore`: with depths and RGBA8 colours exactly as
+// rasterizeFlat (`packed`) or rasterizeGouraud would write them, or with the visible surface as
+// rasterizeSurface would keep it (coverTinySurface, for a triangle without vertex colours). They
+// return how many they wrote (at most kTinyPixels), in rows from the bottom. Float channels only.
 constexpr std::size_t kTinyRoom = kTinyPixels;
-inline bool isTiny(const TriangleSetup& t) {
-  return (t.maxX - t.minX + 1) * (t.maxY - t.minY + 1) <= kTinyPixels && t.minX / kTileSize == t.maxX / kTileSize &&
-         t.minY / kTileSize == t.maxY / kTileSize;
+inline bool isTiny(const TriangleSetup& t) { return (t.maxX - t.minX + 1) * (t.maxY - t.minY + 1) <= kTinyPixels; }
+inline bool inOneTile(const TriangleSetup& t) {
+  return t.minX / kTileSize == t.maxX / kTileSize && t.minY / kTileSize == t.maxY / kTileSize;
+}
+// f(piece) for each tile that t's bounds overlap (one, two or four for a tiny triangle), bottom
+// row first: `piece` is t with its bounds cut to the tile. The edge functions are t's, so each
+// pixel is tested and interpolated as in t.
+template <class F>
+void forEachTilePiece(const TriangleSetup& t, F&& f) {
+  if (inOneTile(t)) {
+    f(t);
+    return;
+  }
+  TriangleSetup piece = t;
+  for (int ty = t.minY / kTileSize; ty <= t.maxY / kTileSize; ++ty)
+    for (int tx = t.minX / kTileSize; tx <= t.maxX / kTileSize; ++tx) {
+      piece.minX = std::max(t.minX, tx * kTileSize), piece.maxX = std::min(t.maxX, tx * kTileSize + kTileSize - 1);
+      piece.minY = std::max(t.minY, ty * kTileSize), piece.maxY = std::min(t.maxY, ty * kTileSize + kTileSize - 1);
+      f(std::as_const(piece));
+    }
 }
 
 #if !ILLUM_USE_DOUBLE

@@ -173,7 +173,7 @@ void SetupTinyGroup(const TinyGroupSource& src, int count, TinyBatchLanes& b, in
   const VD zero = hn::Zero(dd), one = hn::Set(dd, 1.0);
   const VD sub = hn::Set(dd, double(kSubpixelOne)), invSub = hn::Set(dd, 1.0 / double(kSubpixelOne));
   const VD tileSize = hn::Set(dd, double(kTileSize)), invTile = hn::Set(dd, 1.0 / double(kTileSize));
-  HWY_ALIGN std::int32_t tile[kN], width[kN], pixels[kN], pixel[kN], backFace[kN];
+  HWY_ALIGN std::int32_t tile[kN], width[kN], pixels[kN], pixel[kN], backFace[kN], crosses[kN];
   std::uint32_t fast = 0, empty = 0;
   for (int j0 = 0; j0 < count; j0 += lanes) {
     VD X[3], Y[3];
@@ -194,9 +194,7 @@ void SetupTinyGroup(const TinyGroupSource& src, int count, TinyBatchLanes& b, in
     const VD PX[3] = {X[0], hn::IfThenElse(swapped, X[2], X[1]), hn::IfThenElse(swapped, X[1], X[2])};
     const VD PY[3] = {Y[0], hn::IfThenElse(swapped, Y[2], Y[1]), hn::IfThenElse(swapped, Y[1], Y[2])};
     const VD w = maxX - minX + one, h = maxY - minY + one;
-    MD tiny = hn::And(w * h <= hn::Set(dd, double(kTinyPixels)),
-                      hn::And(hn::Floor(minX * invTile) == hn::Floor(maxX * invTile),
-                              hn::Floor(minY * invTile) == hn::Floor(maxY * invTile)));
+    MD tiny = w * h <= hn::Set(dd, double(kTinyPixels));
     const VD spanX = maxFx - minFx, spanY = maxFy - minFy;
     const VD fx = minX * sub + half, fy = minY * sub + half;
     for (int i = 0; i < 3; ++i) {  // edge i: from vertex i + 1 to vertex i + 2, opposite vertex i
@@ -245,6 +243,9 @@ void SetupTinyGroup(const TinyGroupSource& src, int count, TinyBatchLanes& b, in
     fast |= bitsOf(isFast) & (valid << j0);
     empty |= bitsOf(isEmpty) & (valid << j0);
     const VD tileX = hn::Floor(minX * invTile), tileY = hn::Floor(minY * invTile);
+    const VD crossesX = hn::IfThenElseZero(hn::Floor(maxX * invTile) != tileX, one);
+    const VD crossesY = hn::IfThenElseZero(hn::Floor(maxY * invTile) != tileY, hn::Set(dd, 2.0));
+    hn::Store(hn::DemoteTo(di, crossesX + crossesY), di, crosses + j0);
     hn::Store(hn::DemoteTo(di, tileY * hn::Set(dd, double(src.tilesX)) + tileX), di, tile + j0);
     hn::Store(hn::DemoteTo(di, (minY - tileY * tileSize) * tileSize + (minX - tileX * tileSize)), di, pixel + j0);
     hn::Store(hn::DemoteTo(di, hn::IfThenElseZero(isFast, w)), di, width + j0);
@@ -257,6 +258,7 @@ void SetupTinyGroup(const TinyGroupSource& src, int count, TinyBatchLanes& b, in
     b.firstTag[j] = std::uint32_t(pixel[j]);
     b.width[j] = std::uint8_t(width[j]);
     b.count[j] = std::uint8_t(pixels[j]);
+    b.crosses[j] = std::uint8_t(crosses[j]);
     if (src.flat) {  // the provoking (last) vertex's colour
       const ShadedVertex& c = src.vertices[src.indices[3 * j + 2]];
       b.packed[j] = packUnorm8(backFace[j] ? c.back : c.front);
@@ -308,6 +310,7 @@ void setTinyLanes(TinyBatchLanes& b, int j, const TriangleSetup& t, const Color4
   b.firstTag[j] = TinyTag::of(recordsBefore, std::uint32_t((t.minY % kTileSize) * kTileSize + t.minX % kTileSize));
   b.width[j] = std::uint8_t(t.maxX - t.minX + 1);
   b.count[j] = std::uint8_t(b.width[j] * (t.maxY - t.minY + 1));
+  b.crosses[j] = 0;
 }
 
 void TinyBatch::add(const TriangleSetup& t, const Color4* lit, std::uint32_t packed, std::uint32_t recordsBefore,
@@ -319,11 +322,37 @@ void TinyBatch::add(const TriangleSetup& t, const Color4* lit, std::uint32_t pac
   if (size_ == TinyBatchLanes::kCapacity) flush();
 }
 
+void TinyBatch::commitAcrossTiles(int j, TinyFragment* pixels, std::size_t count) {
+  // Its tags are the bounds' first pixel in the first tile plus row · kTileSize + column.
+  const std::uint32_t first = lanes_.firstTag[j];
+  const std::uint32_t x0 = first % kTileSize, y0 = first / kTileSize;
+  TinyFragment piece[4][kTinyPixels];
+  std::size_t size[4] = {};
+  for (std::size_t k = 0; k < count; ++k) {
+    const std::uint32_t offset = pixels[k].tag - first;
+    const std::uint32_t x = x0 + offset % kTileSize, y = y0 + offset / kTileSize;
+    const unsigned p = unsigned(x >= kTileSize) | unsigned(y >= kTileSize) << 1;
+    piece[p][size[p]++] = {TinyTag::of(recordsBefore_[j][p], (y % kTileSize) * kTileSize + x % kTileSize),
+                           pixels[k].z, pixels[k].color};
+  }
+  for (unsigned p = 0; p < 4; ++p) {
+    std::copy_n(piece[p], size[p], pixels);
+    out_.commit(size[p], pieceTile(j, p));
+    pixels += size[p];
+  }
+}
+
 void TinyBatch::flush() {
   if (members_ == 0) return;
   std::uint8_t covered[TinyBatchLanes::kCapacity];
-  coverTinyBatch(lanes_, members_, flat_, out_.room(kTinyBatchRoom), covered);
-  for (std::uint32_t m = members_; m != 0; m &= m - 1) out_.commit(covered[__builtin_ctz(m)], tile_[__builtin_ctz(m)]);
+  TinyFragment* pixels = out_.room(kTinyBatchRoom);
+  coverTinyBatch(lanes_, members_, flat_, pixels, covered);
+  for (std::uint32_t m = members_; m != 0; m &= m - 1) {
+    const int j = __builtin_ctz(m);
+    if (lanes_.crosses[j] == 0) out_.commit(covered[j], tile_[j]);
+    else commitAcrossTiles(j, pixels, covered[j]);
+    pixels += covered[j];
+  }
   members_ = 0;
   size_ = 0;
 }

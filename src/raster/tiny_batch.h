@@ -32,6 +32,10 @@ struct TinyBatchLanes {
   alignas(64) std::uint32_t packed[kCapacity];  // flat: the RGBA8 colour
   alignas(64) std::uint32_t firstTag[kCapacity];  // the bounds' first pixel, tagged (TinyTag)
   std::uint8_t width[kCapacity], count[kCapacity];  // the bounds' width and pixel count
+  // Bit 0: the bounds run on into the next tile to the right; bit 1: into the tile above. Such a
+  // triangle's firstTag is only its first pixel in its (bottom-left) tile: TinyBatch::flush sorts
+  // its covered pixels into their tiles and tags them there.
+  std::uint8_t crosses[kCapacity];
 };
 
 // Lane j of `lanes` for the tiny triangle `t`, as the batch needs it: its three vertex colours
@@ -62,24 +66,26 @@ int tinyGroupCapacity();
 // Sets `count` triangles up in lanes, as setupTriangle and setTinyLanes would, without a branch
 // per triangle: bit j of `fast` says that triangle j is inside the clip volume, tiny and
 // float-exact with opaque colours, and its lanes (all but the records before it in firstTag's
-// upper bits) and tile are filled in; bit j of `empty` that it is inside the clip volume but covers
-// no pixel centre (setupTriangle would drop it). The others are left to the one-by-one path.
+// upper bits) and tile (of its bounds' first pixel) are filled in, `crosses` saying which tiles
+// its bounds run on into; bit j of `empty` that it is inside the clip volume but covers no pixel
+// centre (setupTriangle would drop it). The others are left to the one-by-one path.
 void setupTinyGroup(const TinyGroupSource& source, int count, TinyBatchLanes& lanes, int* tile, std::uint32_t& fast,
                     std::uint32_t& empty);
 
 // Gathers the tiny triangles of one setup run and hands their pixels to the bins, in the order
 // they came. Only float-exact triangles (TriangleSetup::floatExact) of opaque colours join:
-// one at a time (add) or a group set up at once (setGroupUp, then take each fast one in order).
+// one at a time (add, in one tile) or a group set up at once (setGroupUp, then take each fast one
+// in order, in one tile or across up to four). The bins have `tilesX` tiles to a row.
 class TinyBatch {
  public:
-  explicit TinyBatch(TinyRuns<TinyFragment>& out, bool flat) : out_(out), flat_(flat) {}
+  TinyBatch(TinyRuns<TinyFragment>& out, bool flat, int tilesX) : out_(out), flat_(flat), tilesX_(tilesX) {}
   TinyBatch(const TinyBatch&) = delete;
   TinyBatch& operator=(const TinyBatch&) = delete;
 
   static bool joins(const TriangleSetup& t, const Color4* lit) {
     return t.floatExact && (!lit || (lit[0].a == 1 && lit[1].a == 1 && lit[2].a == 1));
   }
-  // Adds a triangle of `tile` (setTinyLanes).
+  // Adds a triangle whose bounds lie in `tile` (setTinyLanes).
   void add(const TriangleSetup& t, const Color4* lit, std::uint32_t packed, std::uint32_t recordsBefore, int tile);
 
   // Sets the next `count` (≤ tinyGroupCapacity()) triangles up at once (setupTinyGroup); the batch
@@ -87,10 +93,16 @@ class TinyBatch {
   void setGroupUp(const TinyGroupSource& source, int count, std::uint32_t& fast, std::uint32_t& empty) {
     setupTinyGroup(source, count, lanes_, tile_, fast, empty);
   }
-  int groupTile(int j) const { return tile_[j]; }
-  // Takes fast triangle j of the group, after `recordsBefore` of its tile's records.
-  void take(int j, std::uint32_t recordsBefore) {
-    lanes_.firstTag[j] |= TinyTag::of(recordsBefore, 0);
+  // Takes fast triangle j of the group, after recordsIn(tile) of each of its tiles' records.
+  template <class RecordsIn>
+  void take(int j, const RecordsIn& recordsIn) {
+    const unsigned crosses = lanes_.crosses[j];
+    if (crosses == 0) {
+      lanes_.firstTag[j] |= TinyTag::of(recordsIn(tile_[j]), 0);
+    } else {
+      for (unsigned piece = 0; piece < 4; ++piece)
+        if ((piece & ~crosses) == 0) recordsBefore_[j][piece] = recordsIn(pieceTile(j, piece));
+    }
     members_ |= 1u << j;
   }
 
@@ -99,11 +111,18 @@ class TinyBatch {
   void flush();
 
  private:
+  // The tile of piece p of triangle j's bounds: bit 0 of p, the next tile right; bit 1, above.
+  int pieceTile(int j, unsigned p) const { return tile_[j] + int(p & 1) + int(p >> 1) * tilesX_; }
+  // Sorts the `count` covered pixels of triangle j (crossing tiles) into its tiles and commits them.
+  void commitAcrossTiles(int j, TinyFragment* pixels, std::size_t count);
+
   TinyRuns<TinyFragment>& out_;
   bool flat_;
+  int tilesX_;
   int size_ = 0;               // add: the lanes used
   std::uint32_t members_ = 0;  // the lanes to cover
   int tile_[TinyBatchLanes::kCapacity];
+  std::uint32_t recordsBefore_[TinyBatchLanes::kCapacity][4];  // a crossing triangle's, per piece
   TinyBatchLanes lanes_;
 };
 

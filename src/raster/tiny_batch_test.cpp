@@ -40,7 +40,7 @@ std::vector<Tiny> randomTinyTriangles(int count) {
       vertex.window = {x + offset(rng) / grid * grid, y + offset(rng) / grid * grid, unit(rng), 1 / w(rng)};
     }
     Tiny t;
-    if (!setupTriangle(v[0], v[1], v[2], 256, 256, t.setup) || !isTiny(t.setup) || !t.setup.floatExact) continue;
+    if (!setupTriangle(v[0], v[1], v[2], 256, 256, t.setup) || !isTiny(t.setup) || !inOneTile(t.setup) || !t.setup.floatExact) continue;
     for (Color4& c : t.lit) c = {unit(rng), unit(rng), unit(rng), 1};
     t.packed = std::uint32_t(rng());
     t.recordsBefore = std::uint32_t(rng() % 1000);
@@ -71,7 +71,7 @@ TEST(TinyBatch, WritesWhatCoveringOneByOneWritesOnEveryTarget) {
     ++targets;
     for (const bool flat : {false, true}) {
       TinyRuns<TinyFragment> single, batched;
-      TinyBatch batch(batched, flat);
+      TinyBatch batch(batched, flat, 4);
       std::size_t covered = 0;
       for (const Tiny& t : triangles) {
         TinyFragment* room = single.room(kTinyRoom);
@@ -133,7 +133,7 @@ TEST(TinyBatch, GroupSetupEqualsOneByOneSetupOnEveryTarget) {
     }
   }
   const int triangles = int(indices.size() / 3), tilesX = (width + kTileSize - 1) / kTileSize;
-  int targets = 0, fastSeen = 0, emptySeen = 0, othersSeen = 0;
+  int targets = 0, fastSeen = 0, emptySeen = 0, othersSeen = 0, crossingSeen = 0;
   for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
     hwy::SetSupportedTargetsForTest(target);
     ++targets;
@@ -184,6 +184,9 @@ TEST(TinyBatch, GroupSetupEqualsOneByOneSetupOnEveryTarget) {
             EXPECT_EQ(lanes.firstTag[j], expected.firstTag[j]) << where;
             EXPECT_EQ(lanes.width[j], expected.width[j]) << where;
             EXPECT_EQ(lanes.count[j], expected.count[j]) << where;
+            const int crosses = int(s.minX / kTileSize != s.maxX / kTileSize) | int(s.minY / kTileSize != s.maxY / kTileSize) << 1;
+            EXPECT_EQ(lanes.crosses[j], crosses) << where;
+            crossingSeen += crosses != 0;
           }
         }
   }
@@ -192,6 +195,79 @@ TEST(TinyBatch, GroupSetupEqualsOneByOneSetupOnEveryTarget) {
   EXPECT_GT(fastSeen, 1000);
   EXPECT_GT(emptySeen, 100);
   EXPECT_GT(othersSeen, 100);
+  EXPECT_GT(crossingSeen, 20);
+}
+
+// A group's tiny triangles whose bounds run across tile edges: the batch sorts their pixels into
+// the tiles, each after that tile's records, exactly as covering each tile's piece of them one by
+// one (forEachTilePiece) writes them.
+TEST(TinyBatch, GroupAcrossTilesWritesWhatCoveringEachTilesPieceWrites) {
+  std::mt19937 rng(17);
+  const int width = 200, height = 150, tilesX = (width + kTileSize - 1) / kTileSize;
+  std::uniform_int_distribution<int> edge(0, 3), along(2, 140), near(-3 * kSubpixelOne, 3 * kSubpixelOne);
+  std::uniform_real_distribution<Real> unit(0, 1), w(0.2f, 3);
+  std::vector<ShadedVertex> vertices;
+  std::vector<std::uint32_t> indices;
+  for (int t = 0; t < 800; ++t) {  // about a tile edge or corner: x or y near 64 or 128
+    const int which = edge(rng);
+    const std::int64_t cx = which & 1 ? kTileSize * (1 + which / 2) : along(rng);
+    const std::int64_t cy = which & 1 ? along(rng) % 140 : kTileSize * (1 + which / 2) % 128;
+    for (int k = 0; k < 3; ++k) {
+      ShadedVertex v;
+      v.outcode = 0;
+      v.hasWindow = true;
+      v.window = {cx * kSubpixelOne + near(rng), (t % 5 == 0 ? kTileSize : cy) * kSubpixelOne + near(rng), unit(rng), 1 / w(rng)};
+      v.front = {unit(rng), unit(rng), unit(rng), 1};
+      indices.push_back(std::uint32_t(vertices.size()));
+      vertices.push_back(v);
+    }
+  }
+  const auto recordsIn = [](int tile) { return std::uint32_t(7 * tile + 3); };
+  const int triangles = int(indices.size() / 3);
+  int targets = 0, crossing = 0;
+  for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+    hwy::SetSupportedTargetsForTest(target);
+    ++targets;
+    const int group = tinyGroupCapacity();
+    for (const bool flat : {false, true}) {
+      TinyRuns<TinyFragment> single, batched;
+      TinyBatch batch(batched, flat, tilesX);
+      for (int t0 = 0; t0 < triangles; t0 += group) {
+        const int count = std::min(group, triangles - t0);
+        const TinyGroupSource source{vertices.data(), indices.data() + 3 * t0, width, height, tilesX, false, flat};
+        std::uint32_t fast = 0, empty = 0;
+        batch.setGroupUp(source, count, fast, empty);
+        for (int j = 0; j < count; ++j) {
+          if (!(fast >> j & 1)) continue;
+          batch.take(j, recordsIn);
+          const std::uint32_t* at = indices.data() + 3 * (t0 + j);
+          const ShadedVertex &a = vertices[at[0]], &b = vertices[at[1]], &c = vertices[at[2]];
+          TriangleSetup s;
+          ASSERT_TRUE(setupTriangle(a, b, c, width, height, s));
+          crossing += !inOneTile(s);
+          const Color4 lit[3] = {a.front, s.swapped ? c.front : b.front, s.swapped ? b.front : c.front};
+          forEachTilePiece(s, [&](const TriangleSetup& piece) {
+            const int tile = (piece.minY / kTileSize) * tilesX + piece.minX / kTileSize;
+            TinyFragment* room = single.room(kTinyRoom);
+            single.commit(flat ? coverTinyFlat(piece, packUnorm8(c.front), recordsIn(tile), room)
+                               : coverTinyGouraud(piece, lit, recordsIn(tile), room),
+                          tile);
+          });
+        }
+        batch.flush();
+      }
+      const auto expected = byTile(single), actual = byTile(batched);
+      for (std::size_t tile = 0; tile < expected.size(); ++tile) {
+        ASSERT_EQ(actual[tile].size(), expected[tile].size()) << hwy::TargetName(target) << " tile " << tile;
+        for (std::size_t k = 0; k < expected[tile].size(); ++k)
+          EXPECT_TRUE(same(actual[tile][k], expected[tile][k]))
+              << hwy::TargetName(target) << (flat ? " flat" : " Gouraud") << " tile " << tile << " pixel " << k;
+      }
+    }
+  }
+  hwy::SetSupportedTargetsForTest(0);
+  EXPECT_GE(targets, 2);
+  EXPECT_GT(crossing, 200);
 }
 
 }  // namespace
