@@ -57,6 +57,7 @@ struct PhysicalMaterial {
   Real roughness = 1;               // perceptual roughness; the distribution's α = roughness²
   Color3 f0{0.04, 0.04, 0.04};      // a dielectric's reflectance at normal incidence, ((n−1)/(n+1))²
   Microfacet distribution = Microfacet::GGX;
+  bool operator==(const PhysicalMaterial&) const = default;
 };
 
 // glMaterial parameters with GL's defaults (shininess is not capped at 128), or a physically
@@ -72,6 +73,7 @@ struct Material {
   bool physicallyBased = false;      // `physical` was given, the GL parameters derived from it
   PhysicalMaterial physical;
   std::optional<LightingModel> model;
+  bool operator==(const Material&) const = default;
 };
 
 // A GL material as cook-torrance sees it: base colour = diffuse, a dielectric whose f0 = 0.16·s²

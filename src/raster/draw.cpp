@@ -26,6 +26,23 @@ DrawTarget::DrawTarget(const FrameContext& frame, const Scene& scene, Framebuffe
     translucent.push_back(frame.blend && isTranslucent(o));
     if (drawnTexture(o) || mapsDrawn(frame, o)) litFromSurface = false;
   }
+  // Objects that share a material usually come together: each is compared with the last few
+  // owners found, not with every object before it.
+  constexpr std::size_t kOwnersCompared = 16;
+  std::vector<std::uint32_t> owners;
+  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+    const auto alike = [&](std::uint32_t j) {
+      return setups[j].model == setups[i].model && colored[j] == colored[i] && setups[j].material == setups[i].material;
+    };
+    const auto recent = owners.size() > kOwnersCompared ? owners.end() - kOwnersCompared : owners.begin();
+    const auto found = std::find_if(recent, owners.end(), alike);
+    if (found != owners.end()) {
+      shadeOwner.push_back(*found);
+    } else {
+      shadeOwner.push_back(std::uint32_t(i));
+      owners.push_back(std::uint32_t(i));
+    }
+  }
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {
     const Object& o = scene.objects[i];
     tiny.push_back(!translucent[i] && ((colorsInDepthPass && !drawnTexture(o)) || (litFromSurface && !colored[i])));

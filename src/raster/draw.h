@@ -60,6 +60,10 @@ struct DrawTarget {
   bool litFromSurface = false;
   std::vector<ShadeSetup> setups;
   std::vector<std::uint8_t> colored;
+  // Per object: the object whose setup and colouring light it alike (itself or an earlier one),
+  // the owner its pixels name in the visible surface, so that a vector of pixels of several such
+  // objects is lit in one pass (shadeOwnedPoints lights lanes of one owner at a time).
+  std::vector<std::uint32_t> shadeOwner;
   // Per object: blending on and the object translucent (material, texture or vertex alpha below 1).
   // An opaque object is drawn as without blending even when it is on: its alpha of 1 would blend
   // to the fragment itself, and so its interpolated alpha, a few ulps from 1, cannot blend at all.

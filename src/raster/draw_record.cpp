@@ -104,7 +104,7 @@ std::size_t setupTriangles(const FrameContext& frame, const Object& object, std:
         if (frame.shading == Shading::Phong) {
           for (int k = 0; k < 3; ++k) s.position[k] = ordered[k]->eyePosition, s.normal[k] = ordered[k]->eyeNormal;
           s.negate = back;
-          s.owner = objectIndex;
+          s.owner = binning->shadeOwner;
         } else {
           for (int k = 0; k < 3; ++k) lit[k] = back ? ordered[k]->back : ordered[k]->front;
           packed = flat ? packUnorm8(back ? c.back : c.front) : 0;

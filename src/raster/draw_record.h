@@ -99,6 +99,7 @@ class RecordArena {
 struct SetupBinning {
   TileBins& bins;
   bool tiny = false;
+  std::uint32_t shadeOwner = 0;  // the owner that Phong's tiny pixels name (DrawTarget::shadeOwner)
 };
 
 // Clips and sets up triangles [first, last) of `object` (its vertices already through the vertex

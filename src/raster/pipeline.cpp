@@ -222,7 +222,7 @@ class BinnedFrame {
         Renderer::State::Chunk& chunk = s_.pool[used_ + (c - c0)];
         chunk.records.reset(target_.layouts[member->index]);
         chunk.bins.reset(frame_.width, frame_.height);
-        const SetupBinning binning{chunk.bins, target_.tiny[member->index] != 0};
+        const SetupBinning binning{chunk.bins, target_.tiny[member->index] != 0, target_.shadeOwner[member->index]};
         chunk.drawn = setupTriangles(frame_, *member->object, member->index, ofMember(*member), first, last,
                                      chunk.records, &binning);
         chunk.bins.finish();

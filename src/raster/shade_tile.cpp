@@ -217,7 +217,7 @@ std::size_t drawLitSurface(const DrawTarget& target, std::span<const DrawRecord*
     }
     v.colors = target.colored[r->object];
     v.negate = twoSided && !r->setup.frontFacing;
-    v.owner = r->object;
+    v.owner = target.shadeOwner[r->object];
     fragments += rasterizeSurface(r->setup, rect, depth, v, out);
   }
   fragments += tinyPixels.drawUpTo(records.size());
