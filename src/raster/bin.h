@@ -27,6 +27,11 @@ namespace illum {
 struct TileSpan {
   std::uint32_t first = 0, last = 0;
   bool holds(std::uint32_t tile) const { return tile - first < last - first; }  // (unsigned: below first wraps)
+  TileSpan joined(const TileSpan& other) const {
+    if (first == last) return other;
+    if (other.first == other.last) return *this;
+    return {std::min(first, other.first), std::max(last, other.last)};
+  }
 };
 
 // A stable counting sort by tile: value(item) of each of `items` into `sorted`, tile by tile,
@@ -74,6 +79,7 @@ class TinyRuns {
     else runs_.push_back({std::uint32_t(tile), std::uint32_t(count_), std::uint32_t(k)});
     count_ += k;
   }
+  TileSpan span() const { return span_; }
   // Sorts the runs by tile.
   void finish() {
     span_ = sortByTile(runs_, [](const Run& r) { return r.tile; }, [](const Run& r) { return r; }, start_, sorted_);
@@ -125,6 +131,8 @@ class TileBins {
 
   // Sorts what was appended by tile; then records(tile) and the tiny pixels' forEach hold it.
   void finish();
+  // The tiles that have something, once finished.
+  TileSpan span() const { return recordSpan_.joined(fragments.span()).joined(surfaces.span()); }
   std::span<const std::uint32_t> records(int tile) const {
     if (!recordSpan_.holds(std::uint32_t(tile))) return {};
     const std::size_t t = std::size_t(tile) - recordSpan_.first;

@@ -34,6 +34,17 @@ TEST(TileBins, ListsEachTilesRecordsInOrderAndNothingElsewhere) {
   const std::vector<std::vector<std::uint32_t>> expected = {{2}, {2}, {1}, {}, {}, {2}, {0, 2}, {0}, {}, {},
                                                             {}, {}, {}, {}, {}};
   for (int tile = 0; tile < bins.tileCount(); ++tile) EXPECT_EQ(recordsOf(bins, tile), expected[std::size_t(tile)]) << tile;
+  EXPECT_EQ(bins.span().first, 0u);
+  EXPECT_EQ(bins.span().last, 8u);
+  // Tiny pixels in tile 12 widen it.
+  bins.reset(5 * kTileSize, 3 * kTileSize);
+  bins.addRecord(boundsOnly(70, 70, 80, 80), 0);  // tile 6
+  TinyFragment* room = bins.fragments.room(1);
+  room[0] = {0, 0.5f, 0};
+  bins.fragments.commit(1, 12);
+  bins.finish();
+  EXPECT_EQ(bins.span().first, 6u);
+  EXPECT_EQ(bins.span().last, 13u);
 }
 
 TEST(TileBins, ResetForgetsTheLastChunksCounts) {
@@ -51,6 +62,8 @@ TEST(TileBins, ResetForgetsTheLastChunksCounts) {
   bins.reset(4 * kTileSize, 4 * kTileSize);  // nothing added
   bins.finish();
   for (int tile = 0; tile < 16; ++tile) EXPECT_TRUE(recordsOf(bins, tile).empty()) << tile;
+  EXPECT_FALSE(bins.span().holds(0));
+  EXPECT_FALSE(bins.span().holds(15));
 }
 
 TEST(TinyRuns, KeepsEachTilesRunsInOrderOutsideNoneTouched) {

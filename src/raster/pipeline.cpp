@@ -62,6 +62,9 @@ struct Renderer::State {
     std::size_t drawn = 0;  // pieces drawn: records and tiny triangles
   };
   std::vector<Chunk> pool;
+  // Per chunk of the pool, the tiles it touched: a tile looks through these, side by side in
+  // memory, rather than through every chunk's bins (a 4K frame has two thousand tiles).
+  std::vector<TileSpan> spans;
   // One tile's lists, gathered from the chunks: its records, and its tiny triangles' pixels,
   // each counting the records before it in `records`.
   struct TileList {
@@ -153,6 +156,7 @@ class BinnedFrame {
     list.fragments.clear();
     list.surfaces.clear();
     for (std::size_t c = 0; c < used_; ++c) {
+      if (!s_.spans[c].holds(std::uint32_t(tile))) continue;
       const Renderer::State::Chunk& chunk = s_.pool[c];
       // (A batch holds far fewer records than a tiny pixel's tag can count: kBatchRecords plus a
       // slice of chunks.)
@@ -228,7 +232,9 @@ class BinnedFrame {
         chunk.bins.finish();
        }
       }, tbb::static_partitioner());
+      if (s_.spans.size() < s_.pool.size()) s_.spans.resize(s_.pool.size());
       for (std::size_t c = c0; c < c1; ++c) {
+        s_.spans[used_] = s_.pool[used_].bins.span();
         const Renderer::State::Chunk& chunk = s_.pool[used_++];
         batchedRecords_ += chunk.records.size();
         batchedTiny_ += chunk.drawn - chunk.records.size();
