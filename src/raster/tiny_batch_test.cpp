@@ -63,6 +63,16 @@ std::vector<std::vector<TinyFragment>> byTile(TinyRuns<TinyFragment>& runs) {
 
 bool same(const TinyFragment& a, const TinyFragment& b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
+// Every tile's pixels in `batched` are `single`'s, bit for bit, in the same order.
+void expectSameByTile(TinyRuns<TinyFragment>& single, TinyRuns<TinyFragment>& batched, const std::string& where) {
+  const auto expected = byTile(single), actual = byTile(batched);
+  for (std::size_t tile = 0; tile < expected.size(); ++tile) {
+    ASSERT_EQ(actual[tile].size(), expected[tile].size()) << where << " tile " << tile;
+    for (std::size_t k = 0; k < expected[tile].size(); ++k)
+      EXPECT_TRUE(same(actual[tile][k], expected[tile][k])) << where << " tile " << tile << " pixel " << k;
+  }
+}
+
 TEST(TinyBatch, WritesWhatCoveringOneByOneWritesOnEveryTarget) {
   const std::vector<Tiny> triangles = randomTinyTriangles(203);
   int targets = 0;
@@ -83,13 +93,7 @@ TEST(TinyBatch, WritesWhatCoveringOneByOneWritesOnEveryTarget) {
       }
       batch.flush();
       ASSERT_GT(covered, triangles.size());  // most cover a pixel or more, some none
-      const auto expected = byTile(single), actual = byTile(batched);
-      for (std::size_t tile = 0; tile < expected.size(); ++tile) {
-        ASSERT_EQ(actual[tile].size(), expected[tile].size()) << hwy::TargetName(target) << " tile " << tile;
-        for (std::size_t k = 0; k < expected[tile].size(); ++k)
-          EXPECT_TRUE(same(actual[tile][k], expected[tile][k]))
-              << hwy::TargetName(target) << (flat ? " flat" : " Gouraud") << " tile " << tile << " pixel " << k;
-      }
+      expectSameByTile(single, batched, std::string(hwy::TargetName(target)) + (flat ? " flat" : " Gouraud"));
     }
   }
   hwy::SetSupportedTargetsForTest(0);
@@ -256,13 +260,7 @@ TEST(TinyBatch, GroupAcrossTilesWritesWhatCoveringEachTilesPieceWrites) {
         }
         batch.flush();
       }
-      const auto expected = byTile(single), actual = byTile(batched);
-      for (std::size_t tile = 0; tile < expected.size(); ++tile) {
-        ASSERT_EQ(actual[tile].size(), expected[tile].size()) << hwy::TargetName(target) << " tile " << tile;
-        for (std::size_t k = 0; k < expected[tile].size(); ++k)
-          EXPECT_TRUE(same(actual[tile][k], expected[tile][k]))
-              << hwy::TargetName(target) << (flat ? " flat" : " Gouraud") << " tile " << tile << " pixel " << k;
-      }
+      expectSameByTile(single, batched, std::string(hwy::TargetName(target)) + (flat ? " flat" : " Gouraud"));
     }
   }
   hwy::SetSupportedTargetsForTest(0);
