@@ -33,7 +33,8 @@ TEST(TileBins, ListsEachTilesRecordsInOrderAndNothingElsewhere) {
   bins.finish();
   const std::vector<std::vector<std::uint32_t>> expected = {{2}, {2}, {1}, {}, {}, {2}, {0, 2}, {0}, {}, {},
                                                             {}, {}, {}, {}, {}};
-  for (int tile = 0; tile < bins.tileCount(); ++tile) EXPECT_EQ(recordsOf(bins, tile), expected[std::size_t(tile)]) << tile;
+  for (int tile = 0; tile < bins.tileCount(); ++tile)
+    EXPECT_EQ(recordsOf(bins, tile), expected[std::size_t(tile)]) << tile;
   EXPECT_EQ(bins.span().first, 0u);
   EXPECT_EQ(bins.span().last, 8u);
   // Tiny pixels in tile 12 widen it.

@@ -72,7 +72,8 @@ std::size_t setupTriangles(const FrameContext& frame, const Object& object, std:
   [[maybe_unused]] const bool tiny = binning && binning->tiny;
 #if !ILLUM_USE_DOUBLE
   std::optional<TinyBatch> batch;
-  if (tiny && frame.shading != Shading::Phong) batch.emplace(binning->bins.fragments, frame.shading == Shading::Flat, binning->bins.tilesX());
+  if (tiny && frame.shading != Shading::Phong)
+    batch.emplace(binning->bins.fragments, frame.shading == Shading::Flat, binning->bins.tilesX());
   // While a group of triangles set up at once (below) holds the batch's lanes, a tiny triangle
   // that comes one by one is covered alone.
   bool grouping = false;

@@ -40,7 +40,9 @@ std::vector<Tiny> randomTinyTriangles(int count) {
       vertex.window = {x + offset(rng) / grid * grid, y + offset(rng) / grid * grid, unit(rng), 1 / w(rng)};
     }
     Tiny t;
-    if (!setupTriangle(v[0], v[1], v[2], 256, 256, t.setup) || !isTiny(t.setup) || !inOneTile(t.setup) || !t.setup.floatExact) continue;
+    if (!setupTriangle(v[0], v[1], v[2], 256, 256, t.setup) || !isTiny(t.setup) || !inOneTile(t.setup) ||
+        !t.setup.floatExact)
+      continue;
     for (Color4& c : t.lit) c = {unit(rng), unit(rng), unit(rng), 1};
     t.packed = std::uint32_t(rng());
     t.recordsBefore = std::uint32_t(rng() % 1000);
@@ -188,7 +190,8 @@ TEST(TinyBatch, GroupSetupEqualsOneByOneSetupOnEveryTarget) {
             EXPECT_EQ(lanes.firstTag[j], expected.firstTag[j]) << where;
             EXPECT_EQ(lanes.width[j], expected.width[j]) << where;
             EXPECT_EQ(lanes.count[j], expected.count[j]) << where;
-            const int crosses = int(s.minX / kTileSize != s.maxX / kTileSize) | int(s.minY / kTileSize != s.maxY / kTileSize) << 1;
+            const int crosses =
+                int(s.minX / kTileSize != s.maxX / kTileSize) | int(s.minY / kTileSize != s.maxY / kTileSize) << 1;
             EXPECT_EQ(lanes.crosses[j], crosses) << where;
             crossingSeen += crosses != 0;
           }
@@ -220,7 +223,8 @@ TEST(TinyBatch, GroupAcrossTilesWritesWhatCoveringEachTilesPieceWrites) {
       ShadedVertex v;
       v.outcode = 0;
       v.hasWindow = true;
-      v.window = {cx * kSubpixelOne + near(rng), (t % 5 == 0 ? kTileSize : cy) * kSubpixelOne + near(rng), unit(rng), 1 / w(rng)};
+      const std::int64_t y = t % 5 == 0 ? kTileSize : cy;  // a fifth about the corners' row
+      v.window = {cx * kSubpixelOne + near(rng), y * kSubpixelOne + near(rng), unit(rng), 1 / w(rng)};
       v.front = {unit(rng), unit(rng), unit(rng), 1};
       indices.push_back(std::uint32_t(vertices.size()));
       vertices.push_back(v);
