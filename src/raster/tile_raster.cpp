@@ -501,6 +501,8 @@ std::size_t CoverTinySurface(const TriangleSetup& t, const SurfaceVertices& v, s
   std::size_t n = 0;
   VisitTiny(t, [&](auto d, auto inside, auto l0, auto l1, auto l2, auto z, auto offset) {
     using V = decltype(l0);
+    // Many of a dense mesh's tiny triangles cover no pixel centre of their bounds.
+    if (hn::AllFalse(d, inside)) return;
     HWY_ALIGN Real depth[kTinyLanesMax], position[3][kTinyLanesMax], normal[3][kTinyLanesMax];
     HWY_ALIGN std::uint32_t pixel[kTinyLanesMax];
     V p[3];
