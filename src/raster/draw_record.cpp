@@ -71,9 +71,13 @@ std::size_t setupTriangles(const FrameContext& frame, const Object& object, std:
   const auto& indices = object.mesh->indices;
   [[maybe_unused]] const bool tiny = binning && binning->tiny;
 #if !ILLUM_USE_DOUBLE
-  std::optional<TinyBatch> batch;
+  // Tiny triangles' pixels: colours, or Phong's visible surface.
+  std::optional<TinyBatch<TinyFragment>> batch;
+  std::optional<TinyBatch<TinySurface>> surfaces;
   if (tiny && frame.shading != Shading::Phong)
     batch.emplace(binning->bins.fragments, frame.shading == Shading::Flat, binning->bins.tilesX());
+  if (tiny && frame.shading == Shading::Phong)
+    surfaces.emplace(binning->bins.surfaces, false, binning->bins.tilesX(), binning->shadeOwner);
   // While a group of triangles set up at once (below) holds the batch's lanes, a tiny triangle
   // that comes one by one is covered alone.
   bool grouping = false;
@@ -113,8 +117,9 @@ std::size_t setupTriangles(const FrameContext& frame, const Object& object, std:
         forEachTilePiece(r.setup, [&](const TriangleSetup& piece) {
           const int tile = bins.tileOf(piece.minX, piece.minY);
           if (frame.shading == Shading::Phong) {
+            surfaces->flush();  // its pixels come first
             bins.surfaces.commit(coverTinySurface(piece, s, bins.recordsIn(tile), bins.surfaces.room(kTinyRoom)), tile);
-          } else if (!grouping && TinyBatch::joins(piece, flat ? nullptr : lit)) {
+          } else if (!grouping && TinyBatch<TinyFragment>::joins(piece, flat ? nullptr : lit)) {
             batch->add(piece, flat ? nullptr : lit, packed, bins.recordsIn(tile), tile);
           } else {
             batch->flush();  // its pixels come first
@@ -149,20 +154,21 @@ std::size_t setupTriangles(const FrameContext& frame, const Object& object, std:
     for (std::size_t k = 1; k + 1 < polygon.size; ++k) emit(v[0], v[k], v[k + 1], std::uint32_t(k));
   };
 #if !ILLUM_USE_DOUBLE
-  if (batch && frame.sample.x == 0 && frame.sample.y == 0) {
+  const auto inGroups = [&](auto& tinyBatch) {
     // Groups of triangles set up at once: the tiny ones join the batch in order, those that
     // cover nothing are dropped, the rest go one by one (which flushes the batch before it
     // appends tiny pixels of its own). Where few are tiny (a coarser mesh, or one seen close),
     // the next groups go one by one instead. Either way the same pixels in the same order.
     const TinyGroupSource source{vertices.data(), nullptr, frame.width, frame.height, binning->bins.tilesX(),
-                                 frame.lightModel.twoSided, frame.shading == Shading::Flat};
+                                 frame.lightModel.twoSided, frame.shading == Shading::Flat,
+                                 frame.shading == Shading::Phong};
     const std::size_t group = std::size_t(tinyGroupCapacity());
     const auto recordsIn = [&](int tile) { return binning->bins.recordsIn(tile); };
     constexpr int kMostOneByOne = 5;  // at most 2^5 − 1 groups one by one between tries
     int oneByOneGroups = 0, fewInARow = 0;
     for (std::size_t t0 = first; t0 < last; t0 += group) {
       const int count = int(std::min(group, last - t0));
-      batch->flush();
+      tinyBatch.flush();
       if (oneByOneGroups > 0) {
         --oneByOneGroups;
         grouping = false;
@@ -173,13 +179,13 @@ std::size_t setupTriangles(const FrameContext& frame, const Object& object, std:
       TinyGroupSource at = source;
       at.indices = indices.data() + 3 * t0;
       std::uint32_t fast = 0, empty = 0;
-      batch->setGroupUp(at, count, fast, empty);
+      tinyBatch.setGroupUp(at, count, fast, empty);
       if ((fast | empty) == (1u << count) - 1) {
         // None for the one-by-one path (a dense mesh's usual group): the fast ones taken bit by
         // bit, without a branch per triangle that would mispredict.
         for (std::uint32_t m = fast; m != 0; m &= m - 1) {
           const int j = __builtin_ctz(m);
-          batch->take(j, recordsIn);
+          tinyBatch.take(j, recordsIn);
         }
         drawn += std::size_t(__builtin_popcount(fast));
         fewInARow = 0;
@@ -187,7 +193,7 @@ std::size_t setupTriangles(const FrameContext& frame, const Object& object, std:
       }
       for (int j = 0; j < count; ++j) {
         if (fast >> j & 1) {
-          batch->take(j, recordsIn);
+          tinyBatch.take(j, recordsIn);
           ++drawn;
         } else if (!(empty >> j & 1)) {
           oneByOne(t0 + std::size_t(j));
@@ -197,11 +203,16 @@ std::size_t setupTriangles(const FrameContext& frame, const Object& object, std:
       if (2 * __builtin_popcount(fast | empty) >= count) fewInARow = 0;
       else oneByOneGroups = (1 << std::min(++fewInARow, kMostOneByOne)) - 1;
     }
-    batch->flush();
+    tinyBatch.flush();
+  };
+  if (frame.sample.x == 0 && frame.sample.y == 0 && (batch || surfaces)) {
+    if (batch) inGroups(*batch);
+    else inGroups(*surfaces);
     return drawn;
   }
   for (std::size_t t = first; t < last; ++t) oneByOne(t);
   if (batch) batch->flush();
+  if (surfaces) surfaces->flush();
 #else
   for (std::size_t t = first; t < last; ++t) oneByOne(t);
 #endif

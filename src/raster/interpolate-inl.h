@@ -1,4 +1,4 @@
-// fragment.h's perspective-correct weights and Gouraud colour over lanes, written once for the
+// fragment.h's perspective-correct weights, Gouraud colour and Phong's renormalized normal over lanes, written once for the
 // rasterizer's vectors (one triangle, its values broadcast) and for batches of tiny triangles
 // (tiny_batch.h: each lane its own triangle's values). Float channels. Included once per target
 // (Highway's -inl.h convention).
@@ -31,6 +31,20 @@ HWY_INLINE void PerspectiveWeights(V l0, V l1, V l2, V invW0, V invW1, V invW2, 
 template <class V>
 HWY_INLINE V Blend(const V (&p)[3], V a0, V a1, V a2) {
   return p[0] * a0 + p[1] * a1 + p[2] * a2;
+}
+
+// phongSurface's renormalized normal from the interpolated one n: n / |n|, or (0, 0, 1) where
+// |n| = 0; negated in the lanes of `negate` (the back of a triangle under two-sided lighting).
+template <class V, class M>
+HWY_INLINE void UnitNormal(const V (&n)[3], M negate, V (&out)[3]) {
+  const hn::DFromV<V> d;
+  const V len = hn::Sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  const auto positive = len > hn::Zero(d);
+  const V inverse = hn::Set(d, 1.0f) / len;
+  for (int c = 0; c < 3; ++c) {
+    out[c] = hn::IfThenElse(positive, n[c] * inverse, hn::Set(d, c == 2 ? 1.0f : 0.0f));
+    out[c] = hn::IfThenElse(negate, hn::Neg(out[c]), out[c]);
+  }
 }
 
 // Colours as RGBA8 pixels. Three alphas of exactly 1 (`opaque`) blend to within a few ulps of 1,

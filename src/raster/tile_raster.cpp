@@ -377,13 +377,7 @@ HWY_INLINE SurfaceLanes<V> SurfaceAt(const SurfaceVertices& v, const V (&p)[3]) 
     s.position[c] = Blend(p, v.position[0][c], v.position[1][c], v.position[2][c]);
     n[c] = Blend(p, v.normal[0][c], v.normal[1][c], v.normal[2][c]);
   }
-  const V len = hn::Sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-  const auto positive = len > hn::Zero(dr);
-  const V inverse = hn::Set(dr, Real(1)) / len;
-  for (int c = 0; c < 3; ++c) {
-    s.normal[c] = hn::IfThenElse(positive, n[c] * inverse, hn::Set(dr, Real(c == 2 ? 1 : 0)));
-    if (v.negate) s.normal[c] = hn::Neg(s.normal[c]);
-  }
+  UnitNormal(n, hn::FirstN(dr, v.negate ? hn::Lanes(dr) : 0), s.normal);
   return s;
 }
 

@@ -13,6 +13,7 @@
 #include "raster/tiny_batch.h"
 
 #include <algorithm>
+#include <type_traits>
 
 HWY_BEFORE_NAMESPACE();
 namespace illum::HWY_NAMESPACE {
@@ -22,11 +23,13 @@ namespace hn = hwy::HWY_NAMESPACE;
 // laid out in slots, triangle after triangle (each its bounds' pixels, kTinyLanes' order), and
 // each vector of slots looks its triangles' values up in the group's rows (TableLookupLanes): the
 // edge values c·A + r·B from the first pixel's, exact in float as in VisitTiny, then barycentrics,
-// depth and colour as the tile rasterizer has them: coverage for every slot, then depth and
-// colour for the covered ones, compressed in the slots' order and stored as fragments.
-std::size_t CoverTinyBatch(const TinyBatchLanes& b, std::uint32_t members, bool flat, TinyFragment* out,
-                           std::uint8_t* covered) {
-  static_assert(sizeof(TinyFragment) == 3 * sizeof(std::uint32_t));
+// depth and the rest as the tile rasterizer has them: coverage for every slot, then, for the
+// covered ones, compressed in the slots' order, emit(k, of, l0, l1, l2, z, tag) stores the pixels
+// of the vector from covered pixel k (the last vector's rest lands in the room past them): of(row)
+// looks each lane's triangle's value up in a row of the batch's lanes. Returns how many pixels
+// are covered.
+template <class Emit>
+std::size_t CoverGroups(const TinyBatchLanes& b, std::uint32_t members, std::uint8_t* covered, const Emit& emit) {
   const hn::ScalableTag<float> df;
   const hn::RebindToUnsigned<decltype(df)> du;
   const hn::RebindToSigned<decltype(df)> di;
@@ -92,30 +95,20 @@ std::size_t CoverTinyBatch(const TinyBatchLanes& b, std::uint32_t members, bool 
       keptOf[k] = 0, keptOffset[k] = 0;
       keptE[0][k] = keptE[1][k] = keptE[2][k] = 0;
     }
-    // Then depth and colour of the covered pixels, stored as fragments (the last vector's rest
-    // lands in the room past them).
+    // Then depth and the rest of the covered pixels.
     for (int k0 = 0; k0 < kept; k0 += group) {
       const auto lanesOf = hn::IndicesFromVec(df, hn::Load(di, keptOf + k0));
-      const auto of = [&](const float* values) { return hn::TableLookupLanes(hn::LoadU(df, values + g), lanesOf); };
-      const auto ofU = [&](const std::uint32_t* values) {  // the same lanes, as bits
-        return hn::BitCast(du, of(reinterpret_cast<const float*>(values)));
+      const auto of = [&](const auto* values) {
+        const VF v = hn::TableLookupLanes(hn::LoadU(df, reinterpret_cast<const float*>(values) + g), lanesOf);
+        if constexpr (std::is_same_v<std::remove_cv_t<std::remove_pointer_t<decltype(values)>>, float>) return v;
+        else return hn::BitCast(du, v);  // the same lanes, as bits
       };
       const VF invArea = of(b.invArea);
       const VF l0 = hn::Load(df, keptE[0] + k0) * invArea, l1 = hn::Load(df, keptE[1] + k0) * invArea,
                l2 = hn::Load(df, keptE[2] + k0) * invArea;
       const VF z = l0 * of(b.z[0]) + l1 * of(b.z[1]) + l2 * of(b.z[2]);
-      VU color;
-      if (flat) {
-        color = ofU(b.packed);
-      } else {
-        VF p[3];
-        PerspectiveWeights(l0, l1, l2, of(b.invW[0]), of(b.invW[1]), of(b.invW[2]), p);
-        VF channel[4];
-        for (int k = 0; k < 3; ++k) channel[k] = Blend(p, of(b.lit[k][0]), of(b.lit[k][1]), of(b.lit[k][2]));
-        color = hn::BitCast(du, PackColors(df, true, channel));
-      }
-      const VU tag = hn::Add(ofU(b.firstTag), hn::Load(du, keptOffset + k0));
-      hn::StoreInterleaved3(tag, hn::BitCast(du, z), color, du, reinterpret_cast<std::uint32_t*>(out + n + k0));
+      const VU tag = hn::Add(of(b.firstTag), hn::Load(du, keptOffset + k0));
+      emit(n + std::size_t(k0), std::min(group, kept - k0), of, l0, l1, l2, z, tag);
     }
     n += std::size_t(kept);
     for (std::uint32_t m = inGroup; m != 0; m &= m - 1) {
@@ -127,6 +120,56 @@ std::size_t CoverTinyBatch(const TinyBatchLanes& b, std::uint32_t members, bool 
     }
   }
   return n;
+}
+
+std::size_t CoverTinyBatch(const TinyBatchLanes& b, std::uint32_t members, bool flat, TinyFragment* out,
+                           std::uint8_t* covered) {
+  static_assert(sizeof(TinyFragment) == 3 * sizeof(std::uint32_t));
+  const hn::ScalableTag<float> df;
+  const hn::RebindToUnsigned<decltype(df)> du;
+  using VF = hn::VFromD<decltype(df)>;
+  return CoverGroups(b, members, covered, [&](std::size_t at, int, const auto& of, VF l0, VF l1, VF l2, VF z, auto tag) {
+    hn::VFromD<decltype(du)> color;
+    if (flat) {
+      color = of(b.packed);
+    } else {
+      VF p[3];
+      PerspectiveWeights(l0, l1, l2, of(b.invW[0]), of(b.invW[1]), of(b.invW[2]), p);
+      VF channel[4];
+      for (int k = 0; k < 3; ++k) channel[k] = Blend(p, of(b.lit[k][0]), of(b.lit[k][1]), of(b.lit[k][2]));
+      color = hn::BitCast(du, PackColors(df, true, channel));
+    }
+    hn::StoreInterleaved3(tag, hn::BitCast(du, z), color, du, reinterpret_cast<std::uint32_t*>(out + at));
+  });
+}
+
+// The same covered pixels as Phong's visible surface (CoverTinySurface's values, SurfaceAt's
+// formulas), assembled lane by lane into their structs.
+std::size_t CoverTinySurfaceBatch(const TinyBatchLanes& b, std::uint32_t members, std::uint32_t owner,
+                                  TinySurface* out, std::uint8_t* covered) {
+  const hn::ScalableTag<float> df;
+  const hn::RebindToUnsigned<decltype(df)> du;
+  using VF = hn::VFromD<decltype(df)>;
+  constexpr std::size_t kMax = hn::MaxLanes(df);
+  return CoverGroups(b, members, covered, [&](std::size_t at, int count, const auto& of, VF l0, VF l1, VF l2, VF z,
+                                              auto tag) {
+    VF p[3];
+    PerspectiveWeights(l0, l1, l2, of(b.invW[0]), of(b.invW[1]), of(b.invW[2]), p);
+    VF n[3], normal[3];
+    HWY_ALIGN float position[3][kMax], unit[3][kMax], depth[kMax];
+    HWY_ALIGN std::uint32_t tags[kMax];
+    for (int c = 0; c < 3; ++c) {
+      hn::Store(Blend(p, of(b.position[c][0]), of(b.position[c][1]), of(b.position[c][2])), df, position[c]);
+      n[c] = Blend(p, of(b.normal[c][0]), of(b.normal[c][1]), of(b.normal[c][2]));
+    }
+    UnitNormal(n, of(b.negate) != hn::Zero(df), normal);
+    for (int c = 0; c < 3; ++c) hn::Store(normal[c], df, unit[c]);
+    hn::Store(z, df, depth);
+    hn::Store(tag, du, tags);
+    for (int k = 0; k < count; ++k)
+      out[at + std::size_t(k)] = {tags[k], depth[k], owner, {position[0][k], position[1][k], position[2][k]},
+                                  {unit[0][k], unit[1][k], unit[2][k]}};
+  });
 }
 
 
@@ -157,6 +200,7 @@ void SetupTinyGroup(const TinyGroupSource& src, int count, TinyBatchLanes& b, in
       codes |= v.outcode;  // kOutcodeUnknown is not 0
       x[k][j] = double(v.window.x), y[k][j] = double(v.window.y);
       z[k][j] = v.window.z, invW[k][j] = v.window.invW;
+      if (src.surface) continue;  // lit per pixel: no colours
       for (int c = 0; c < 4; ++c) front[k][c][j] = v.front[c];
       if (src.twoSided)
         for (int c = 0; c < 4; ++c) back[k][c][j] = v.back[c];
@@ -173,7 +217,7 @@ void SetupTinyGroup(const TinyGroupSource& src, int count, TinyBatchLanes& b, in
   const VD zero = hn::Zero(dd), one = hn::Set(dd, 1.0);
   const VD sub = hn::Set(dd, double(kSubpixelOne)), invSub = hn::Set(dd, 1.0 / double(kSubpixelOne));
   const VD tileSize = hn::Set(dd, double(kTileSize)), invTile = hn::Set(dd, 1.0 / double(kTileSize));
-  HWY_ALIGN std::int32_t tile[kN], width[kN], pixels[kN], pixel[kN], backFace[kN], crosses[kN];
+  HWY_ALIGN std::int32_t tile[kN], width[kN], pixels[kN], pixel[kN], backFace[kN], crosses[kN], clockwise[kN];
   std::uint32_t fast = 0, empty = 0;
   for (int j0 = 0; j0 < count; j0 += lanes) {
     VD X[3], Y[3];
@@ -220,7 +264,7 @@ void SetupTinyGroup(const TinyGroupSource& src, int count, TinyBatchLanes& b, in
       };
       hn::Store(hn::DemoteTo(df, pick(&z[0][0])), df, b.z[k] + j0);
       hn::Store(hn::DemoteTo(df, pick(&invW[0][0])), df, b.invW[k] + j0);
-      if (src.flat) continue;
+      if (src.flat || src.surface) continue;
       for (int c = 0; c < 4; ++c) {
         const auto channel = [&](const double (*rows)[4][kN]) {
           const VD kept = hn::Load(dd, rows[k][c] + j0);
@@ -251,6 +295,7 @@ void SetupTinyGroup(const TinyGroupSource& src, int count, TinyBatchLanes& b, in
     hn::Store(hn::DemoteTo(di, hn::IfThenElseZero(isFast, w)), di, width + j0);
     hn::Store(hn::DemoteTo(di, hn::IfThenElseZero(isFast, w * h)), di, pixels + j0);
     hn::Store(hn::DemoteTo(di, hn::IfThenElseZero(backSide, one)), di, backFace + j0);
+    hn::Store(hn::DemoteTo(di, hn::IfThenElseZero(swapped, one)), di, clockwise + j0);
   }
   for (std::uint32_t m = fast; m != 0; m &= m - 1) {
     const int j = __builtin_ctz(m);
@@ -262,6 +307,15 @@ void SetupTinyGroup(const TinyGroupSource& src, int count, TinyBatchLanes& b, in
     if (src.flat) {  // the provoking (last) vertex's colour
       const ShadedVertex& c = src.vertices[src.indices[3 * j + 2]];
       b.packed[j] = packUnorm8(backFace[j] ? c.back : c.front);
+    }
+    if (src.surface) {  // counter-clockwise, as setupTriangle's caller orders them
+      const std::uint32_t* at = src.indices + 3 * j;
+      const std::uint32_t ordered[3] = {at[0], clockwise[j] ? at[2] : at[1], clockwise[j] ? at[1] : at[2]};
+      for (int k = 0; k < 3; ++k) {
+        const ShadedVertex& v = src.vertices[ordered[k]];
+        for (int c = 0; c < 3; ++c) b.position[c][k][j] = v.eyePosition[c], b.normal[c][k][j] = v.eyeNormal[c];
+      }
+      b.negate[j] = backFace[j] ? 1.0f : 0.0f;
     }
   }
   fastOut = fast;
@@ -275,6 +329,7 @@ HWY_AFTER_NAMESPACE();
 namespace illum {
 
 HWY_EXPORT(CoverTinyBatch);
+HWY_EXPORT(CoverTinySurfaceBatch);
 HWY_EXPORT(TinyGroupCapacity);
 HWY_EXPORT(SetupTinyGroup);
 
@@ -288,6 +343,11 @@ void setupTinyGroup(const TinyGroupSource& source, int count, TinyBatchLanes& la
 std::size_t coverTinyBatch(const TinyBatchLanes& batch, std::uint32_t members, bool flat, TinyFragment* out,
                            std::uint8_t* covered) {
   return HWY_DYNAMIC_DISPATCH(CoverTinyBatch)(batch, members, flat, out, covered);
+}
+
+std::size_t coverTinyBatch(const TinyBatchLanes& batch, std::uint32_t members, std::uint32_t owner, TinySurface* out,
+                           std::uint8_t* covered) {
+  return HWY_DYNAMIC_DISPATCH(CoverTinySurfaceBatch)(batch, members, owner, out, covered);
 }
 
 void setTinyLanes(TinyBatchLanes& b, int j, const TriangleSetup& t, const Color4* lit, std::uint32_t packed,
@@ -313,7 +373,8 @@ void setTinyLanes(TinyBatchLanes& b, int j, const TriangleSetup& t, const Color4
   b.crosses[j] = 0;
 }
 
-void TinyBatch::add(const TriangleSetup& t, const Color4* lit, std::uint32_t packed, std::uint32_t recordsBefore,
+template <class Pixel>
+void TinyBatch<Pixel>::add(const TriangleSetup& t, const Color4* lit, std::uint32_t packed, std::uint32_t recordsBefore,
                     int tile) {
   const int j = size_++;
   members_ |= 1u << j;
@@ -322,18 +383,19 @@ void TinyBatch::add(const TriangleSetup& t, const Color4* lit, std::uint32_t pac
   if (size_ == TinyBatchLanes::kCapacity) flush();
 }
 
-void TinyBatch::commitAcrossTiles(int j, TinyFragment* pixels, std::size_t count) {
+template <class Pixel>
+void TinyBatch<Pixel>::commitAcrossTiles(int j, Pixel* pixels, std::size_t count) {
   // Its tags are the bounds' first pixel in the first tile plus row · kTileSize + column.
   const std::uint32_t first = lanes_.firstTag[j];
   const std::uint32_t x0 = first % kTileSize, y0 = first / kTileSize;
-  TinyFragment piece[4][kTinyPixels];
+  Pixel piece[4][kTinyPixels];
   std::size_t size[4] = {};
   for (std::size_t k = 0; k < count; ++k) {
     const std::uint32_t offset = pixels[k].tag - first;
     const std::uint32_t x = x0 + offset % kTileSize, y = y0 + offset / kTileSize;
     const unsigned p = unsigned(x >= kTileSize) | unsigned(y >= kTileSize) << 1;
-    piece[p][size[p]++] = {TinyTag::of(recordsBefore_[j][p], (y % kTileSize) * kTileSize + x % kTileSize),
-                           pixels[k].z, pixels[k].color};
+    Pixel& moved = piece[p][size[p]++] = pixels[k];
+    moved.tag = TinyTag::of(recordsBefore_[j][p], (y % kTileSize) * kTileSize + x % kTileSize);
   }
   for (unsigned p = 0; p < 4; ++p) {
     std::copy_n(piece[p], size[p], pixels);
@@ -342,11 +404,13 @@ void TinyBatch::commitAcrossTiles(int j, TinyFragment* pixels, std::size_t count
   }
 }
 
-void TinyBatch::flush() {
+template <class Pixel>
+void TinyBatch<Pixel>::flush() {
   if (members_ == 0) return;
   std::uint8_t covered[TinyBatchLanes::kCapacity];
-  TinyFragment* pixels = out_.room(kTinyBatchRoom);
-  coverTinyBatch(lanes_, members_, flat_, pixels, covered);
+  Pixel* pixels = out_.room(kTinyBatchRoom);
+  if constexpr (std::is_same_v<Pixel, TinySurface>) coverTinyBatch(lanes_, members_, owner_, pixels, covered);
+  else coverTinyBatch(lanes_, members_, flat_, pixels, covered);
   for (std::uint32_t m = members_; m != 0; m &= m - 1) {
     const int j = __builtin_ctz(m);
     if (lanes_.crosses[j] == 0) out_.commit(covered[j], tile_[j]);
@@ -356,6 +420,9 @@ void TinyBatch::flush() {
   members_ = 0;
   size_ = 0;
 }
+
+template class TinyBatch<TinyFragment>;
+template class TinyBatch<TinySurface>;
 
 }  // namespace illum
 #endif  // HWY_ONCE

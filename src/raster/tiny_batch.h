@@ -1,6 +1,7 @@
-// Tiny triangles of flat and Gouraud shading covered a batch at a time. One tiny triangle alone
+// Tiny triangles covered a batch at a time: flat and Gouraud shading's fragments, Phong's visible
+// surface. One tiny triangle alone
 // (tile_raster.h: coverTinyGouraud) is one long chain of dependent steps, edges to coverage to
-// colour, that leaves most of a vector and of the core idle; a batch lays the pixels of up to 16
+// colour (or surface), that leaves most of a vector and of the core idle; a batch lays the pixels of up to 16
 // triangles side by side in the lanes, one pixel per lane, each lane with its own triangle's
 // values, and works them out together: the same formulas (interpolate-inl.h), so the same depths
 // and colours, written in the same order, triangle after triangle.
@@ -29,6 +30,9 @@ struct TinyBatchLanes {
   alignas(64) float edge[3][kCapacity], stepX[3][kCapacity], stepY[3][kCapacity], bias[3][kCapacity];
   alignas(64) float invArea[kCapacity], z[3][kCapacity], invW[3][kCapacity];
   alignas(64) float lit[3][3][kCapacity];  // Gouraud: channel, vertex (counter-clockwise), triangle
+  // Phong: eye-space position and normal (component, vertex, triangle), and 1 where the normal is
+  // negated (the back of a triangle under two-sided lighting).
+  alignas(64) float position[3][3][kCapacity], normal[3][3][kCapacity], negate[kCapacity];
   alignas(64) std::uint32_t packed[kCapacity];  // flat: the RGBA8 colour
   alignas(64) std::uint32_t firstTag[kCapacity];  // the bounds' first pixel, tagged (TinyTag)
   std::uint8_t width[kCapacity], count[kCapacity];  // the bounds' width and pixel count
@@ -51,6 +55,9 @@ void setTinyLanes(TinyBatchLanes& lanes, int j, const TriangleSetup& t, const Co
 constexpr std::size_t kTinyBatchRoom = TinyBatchLanes::kCapacity * (kTinyPixels + 1);
 std::size_t coverTinyBatch(const TinyBatchLanes& batch, std::uint32_t members, bool flat, TinyFragment* out,
                            std::uint8_t* covered);
+// The same for Phong: the visible surface there, as coverTinySurface writes it, named `owner`.
+std::size_t coverTinyBatch(const TinyBatchLanes& batch, std::uint32_t members, std::uint32_t owner, TinySurface* out,
+                           std::uint8_t* covered);
 
 // A run of triangles of one object, for setting a group of them up at once.
 struct TinyGroupSource {
@@ -58,6 +65,7 @@ struct TinyGroupSource {
   const std::uint32_t* indices;  // three per triangle, from the group's first
   int width, height, tilesX;
   bool twoSided, flat;
+  bool surface = false;  // Phong: positions and normals instead of colours
 };
 
 // How many triangles setupTinyGroup takes at a time on this CPU (at most kCapacity).
@@ -65,20 +73,23 @@ int tinyGroupCapacity();
 
 // Sets `count` triangles up in lanes, as setupTriangle and setTinyLanes would, without a branch
 // per triangle: bit j of `fast` says that triangle j is inside the clip volume, tiny and
-// float-exact with opaque colours, and its lanes (all but the records before it in firstTag's
+// float-exact with opaque colours (a surface's need none), and its lanes (all but the records before it in firstTag's
 // upper bits) and tile (of its bounds' first pixel) are filled in, `crosses` saying which tiles
 // its bounds run on into; bit j of `empty` that it is inside the clip volume but covers no pixel
 // centre (setupTriangle would drop it). The others are left to the one-by-one path.
 void setupTinyGroup(const TinyGroupSource& source, int count, TinyBatchLanes& lanes, int* tile, std::uint32_t& fast,
                     std::uint32_t& empty);
 
-// Gathers the tiny triangles of one setup run and hands their pixels to the bins, in the order
-// they came. Only float-exact triangles (TriangleSetup::floatExact) of opaque colours join:
-// one at a time (add, in one tile) or a group set up at once (setGroupUp, then take each fast one
-// in order, in one tile or across up to four). The bins have `tilesX` tiles to a row.
+// Gathers the tiny triangles of one setup run and hands their pixels (TinyFragment, or Phong's
+// TinySurface) to the bins, in the order they came. Only float-exact triangles
+// (TriangleSetup::floatExact) of opaque colours join: one at a time (add, in one tile; fragments
+// only) or a group set up at once (setGroupUp, then take each fast one in order, in one tile or
+// across up to four). The bins have `tilesX` tiles to a row; a surface's pixels name `owner`.
+template <class Pixel>
 class TinyBatch {
  public:
-  TinyBatch(TinyRuns<TinyFragment>& out, bool flat, int tilesX) : out_(out), flat_(flat), tilesX_(tilesX) {}
+  TinyBatch(TinyRuns<Pixel>& out, bool flat, int tilesX, std::uint32_t owner = 0)
+      : out_(out), flat_(flat), tilesX_(tilesX), owner_(owner) {}
   TinyBatch(const TinyBatch&) = delete;
   TinyBatch& operator=(const TinyBatch&) = delete;
 
@@ -114,11 +125,12 @@ class TinyBatch {
   // The tile of piece p of triangle j's bounds: bit 0 of p, the next tile right; bit 1, above.
   int pieceTile(int j, unsigned p) const { return tile_[j] + int(p & 1) + int(p >> 1) * tilesX_; }
   // Sorts the `count` covered pixels of triangle j (crossing tiles) into its tiles and commits them.
-  void commitAcrossTiles(int j, TinyFragment* pixels, std::size_t count);
+  void commitAcrossTiles(int j, Pixel* pixels, std::size_t count);
 
-  TinyRuns<TinyFragment>& out_;
+  TinyRuns<Pixel>& out_;
   bool flat_;
   int tilesX_;
+  std::uint32_t owner_;
   int size_ = 0;               // add: the lanes used
   std::uint32_t members_ = 0;  // the lanes to cover
   int tile_[TinyBatchLanes::kCapacity];

@@ -53,20 +53,23 @@ std::vector<Tiny> randomTinyTriangles(int count) {
 }
 
 // The pixels of each tile's runs, in order.
-std::vector<std::vector<TinyFragment>> byTile(TinyRuns<TinyFragment>& runs) {
+template <class Pixel>
+std::vector<std::vector<Pixel>> byTile(TinyRuns<Pixel>& runs) {
   runs.finish();
-  std::vector<std::vector<TinyFragment>> tiles(16);
+  std::vector<std::vector<Pixel>> tiles(16);
   for (int tile = 0; tile < 16; ++tile)
-    runs.forEachRun(tile, [&](const TinyFragment* first, std::uint32_t count) {
+    runs.forEachRun(tile, [&](const Pixel* first, std::uint32_t count) {
       tiles[std::size_t(tile)].insert(tiles[std::size_t(tile)].end(), first, first + count);
     });
   return tiles;
 }
 
-bool same(const TinyFragment& a, const TinyFragment& b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+template <class Pixel>
+bool same(const Pixel& a, const Pixel& b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
 // Every tile's pixels in `batched` are `single`'s, bit for bit, in the same order.
-void expectSameByTile(TinyRuns<TinyFragment>& single, TinyRuns<TinyFragment>& batched, const std::string& where) {
+template <class Pixel>
+void expectSameByTile(TinyRuns<Pixel>& single, TinyRuns<Pixel>& batched, const std::string& where) {
   const auto expected = byTile(single), actual = byTile(batched);
   for (std::size_t tile = 0; tile < expected.size(); ++tile) {
     ASSERT_EQ(actual[tile].size(), expected[tile].size()) << where << " tile " << tile;
@@ -165,7 +168,7 @@ TEST(TinyBatch, GroupSetupEqualsOneByOneSetupOnEveryTarget) {
             const ShadedVertex* ordered[3] = {&a, drawn && s.swapped ? &c : &b, drawn && s.swapped ? &b : &c};
             const Color4 lit[3] = {back ? ordered[0]->back : ordered[0]->front, back ? ordered[1]->back : ordered[1]->front,
                                    back ? ordered[2]->back : ordered[2]->front};
-            const bool isFast = drawn && isTiny(s) && TinyBatch::joins(s, flat ? nullptr : lit);
+            const bool isFast = drawn && isTiny(s) && TinyBatch<TinyFragment>::joins(s, flat ? nullptr : lit);
             ASSERT_EQ(bool(fast >> j & 1), isFast) << where;
             fastSeen += isFast, emptySeen += inside && !drawn, othersSeen += !isFast && drawn;
             if (!isFast) continue;
@@ -270,6 +273,79 @@ TEST(TinyBatch, GroupAcrossTilesWritesWhatCoveringEachTilesPieceWrites) {
   hwy::SetSupportedTargetsForTest(0);
   EXPECT_GE(targets, 2);
   EXPECT_GT(crossing, 200);
+}
+
+// Phong's tiny triangles: the surface batch writes, tile by tile, what covering each tile's piece
+// one by one (coverTinySurface) writes: positions and renormalized normals (some interpolating to
+// zero length), negated on the back faces under two-sided lighting, in one tile or across several.
+TEST(TinyBatch, SurfaceBatchWritesWhatCoveringEachPieceOneByOneWrites) {
+  std::mt19937 rng(23);
+  const int width = 200, height = 150, tilesX = (width + kTileSize - 1) / kTileSize;
+  std::uniform_int_distribution<int> x(2, 190), y(2, 140), near(-3 * kSubpixelOne, 3 * kSubpixelOne);
+  std::uniform_real_distribution<Real> unit(0, 1), w(0.2f, 3), signedUnit(-1, 1);
+  std::vector<ShadedVertex> vertices;
+  std::vector<std::uint32_t> indices;
+  for (int t = 0; t < 900; ++t) {
+    // A third about the tile edges at 64 and 128, the rest anywhere.
+    const std::int64_t cx = t % 3 == 0 ? kTileSize * (1 + t % 2) : x(rng), cy = t % 3 == 0 ? kTileSize : y(rng);
+    for (int k = 0; k < 3; ++k) {
+      ShadedVertex v;
+      v.outcode = 0;
+      v.hasWindow = true;
+      v.window = {cx * kSubpixelOne + near(rng), cy * kSubpixelOne + near(rng), unit(rng), 1 / w(rng)};
+      v.eyePosition = {signedUnit(rng), signedUnit(rng), -1 - unit(rng)};
+      // Every tenth triangle's normals cancel out: the renormalized normal falls back to +z.
+      v.eyeNormal = t % 10 == 0 ? Vec3(0) : Vec3(signedUnit(rng), signedUnit(rng), signedUnit(rng));
+      indices.push_back(std::uint32_t(vertices.size()));
+      vertices.push_back(v);
+    }
+  }
+  const auto recordsIn = [](int tile) { return std::uint32_t(5 * tile + 1); };
+  const std::uint32_t owner = 77;
+  const int triangles = int(indices.size() / 3);
+  int targets = 0, crossing = 0, backs = 0;
+  for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+    hwy::SetSupportedTargetsForTest(target);
+    ++targets;
+    const int group = tinyGroupCapacity();
+    for (const bool twoSided : {false, true}) {
+      TinyRuns<TinySurface> single, batched;
+      TinyBatch batch(batched, false, tilesX, owner);
+      for (int t0 = 0; t0 < triangles; t0 += group) {
+        const int count = std::min(group, triangles - t0);
+        const TinyGroupSource source{vertices.data(), indices.data() + 3 * t0, width, height, tilesX, twoSided, false,
+                                     true};
+        std::uint32_t fast = 0, empty = 0;
+        batch.setGroupUp(source, count, fast, empty);
+        for (int j = 0; j < count; ++j) {
+          const std::uint32_t* at = indices.data() + 3 * (t0 + j);
+          const ShadedVertex &a = vertices[at[0]], &b = vertices[at[1]], &c = vertices[at[2]];
+          TriangleSetup s;
+          const bool drawn = setupTriangle(a, b, c, width, height, s);
+          ASSERT_EQ(bool(fast >> j & 1), drawn && isTiny(s) && s.floatExact);
+          if (!(fast >> j & 1)) continue;
+          batch.take(j, recordsIn);
+          crossing += !inOneTile(s);
+          SurfaceVertices v;
+          const ShadedVertex* ordered[3] = {&a, s.swapped ? &c : &b, s.swapped ? &b : &c};
+          for (int k = 0; k < 3; ++k) v.position[k] = ordered[k]->eyePosition, v.normal[k] = ordered[k]->eyeNormal;
+          v.negate = twoSided && !s.frontFacing;
+          v.owner = owner;
+          backs += v.negate;
+          forEachTilePiece(s, [&](const TriangleSetup& piece) {
+            const int tile = (piece.minY / kTileSize) * tilesX + piece.minX / kTileSize;
+            single.commit(coverTinySurface(piece, v, recordsIn(tile), single.room(kTinyRoom)), tile);
+          });
+        }
+        batch.flush();
+      }
+      expectSameByTile(single, batched, std::string(hwy::TargetName(target)) + (twoSided ? " two-sided" : ""));
+    }
+  }
+  hwy::SetSupportedTargetsForTest(0);
+  EXPECT_GE(targets, 2);
+  EXPECT_GT(crossing, 100);
+  EXPECT_GT(backs, 200);
 }
 
 }  // namespace
