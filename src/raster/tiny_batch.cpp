@@ -24,10 +24,10 @@ namespace hn = hwy::HWY_NAMESPACE;
 // each vector of slots looks its triangles' values up in the group's rows (TableLookupLanes): the
 // edge values c·A + r·B from the first pixel's, exact in float as in VisitTiny, then barycentrics,
 // depth and the rest as the tile rasterizer has them: coverage for every slot, then, for the
-// covered ones, compressed in the slots' order, emit(k, of, l0, l1, l2, z, tag) stores the pixels
-// of the vector from covered pixel k (the last vector's rest lands in the room past them): of(row)
-// looks each lane's triangle's value up in a row of the batch's lanes. Returns how many pixels
-// are covered.
+// covered ones, compressed in the slots' order, emit(at, count, of, l0, l1, l2, z, tag) stores
+// a vector's `count` pixels from out[at] on (or its whole vector: the last one's rest lands in the
+// room past them); of(row) looks each lane's triangle's value up in a row of the batch's lanes.
+// Returns how many pixels are covered.
 template <class Emit>
 std::size_t CoverGroups(const TinyBatchLanes& b, std::uint32_t members, std::uint8_t* covered, const Emit& emit) {
   const hn::ScalableTag<float> df;
