@@ -1,7 +1,7 @@
-// fragment.h's perspective-correct weights, Gouraud colour and Phong's renormalized normal over lanes, written once for the
-// rasterizer's vectors (one triangle, its values broadcast) and for batches of tiny triangles
-// (tiny_batch.h: each lane its own triangle's values). Float channels. Included once per target
-// (Highway's -inl.h convention).
+// fragment.h's perspective-correct weights, Gouraud colour and Phong's renormalized normal over
+// lanes, written once for the rasterizer's vectors (one triangle, its values broadcast) and for
+// batches of tiny triangles (tiny_batch.h: each lane its own triangle's values). Float channels.
+// Included once per target (Highway's -inl.h convention).
 
 #if defined(ILLUM_RASTER_INTERPOLATE_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef ILLUM_RASTER_INTERPOLATE_INL_H_

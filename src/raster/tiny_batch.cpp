@@ -128,7 +128,8 @@ std::size_t CoverTinyBatch(const TinyBatchLanes& b, std::uint32_t members, bool 
   const hn::ScalableTag<float> df;
   const hn::RebindToUnsigned<decltype(df)> du;
   using VF = hn::VFromD<decltype(df)>;
-  return CoverGroups(b, members, covered, [&](std::size_t at, int, const auto& of, VF l0, VF l1, VF l2, VF z, auto tag) {
+  return CoverGroups(b, members, covered, [&](std::size_t at, int, const auto& of, VF l0, VF l1, VF l2, VF z,
+                                              auto tag) {
     hn::VFromD<decltype(du)> color;
     if (flat) {
       color = of(b.packed);

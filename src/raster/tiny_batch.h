@@ -1,10 +1,10 @@
 // Tiny triangles covered a batch at a time: flat and Gouraud shading's fragments, Phong's visible
-// surface. One tiny triangle alone
-// (tile_raster.h: coverTinyGouraud) is one long chain of dependent steps, edges to coverage to
-// colour (or surface), that leaves most of a vector and of the core idle; a batch lays the pixels of up to 16
-// triangles side by side in the lanes, one pixel per lane, each lane with its own triangle's
-// values, and works them out together: the same formulas (interpolate-inl.h), so the same depths
-// and colours, written in the same order, triangle after triangle.
+// surface. One tiny triangle alone (tile_raster.h: coverTinyGouraud) is one long chain of
+// dependent steps, edges to coverage to colour (or surface), that leaves most of a vector and of
+// the core idle; a batch lays the pixels of up to 16 triangles side by side in the lanes, one
+// pixel per lane, each lane with its own triangle's values, and works them out together: the
+// same formulas (interpolate-inl.h), so the same depths and colours (or surfaces), written in the
+// same order, triangle after triangle.
 #pragma once
 
 #include <illum/real.h>
