@@ -208,6 +208,29 @@ TEST(TinyBatch, GroupSetupEqualsOneByOneSetupOnEveryTarget) {
   EXPECT_GT(crossingSeen, 20);
 }
 
+// Takes the triangles of `source` (indices from its first triangle on) into `batch` a group at a
+// time, as setupTriangles does, flushing after each group: each fast one is taken, then, whether
+// fast or not, handed to reference(a, b, c, fast) with its vertices, before its group is flushed.
+template <class Pixel, class RecordsIn, class Reference>
+void takeInGroups(TinyBatch<Pixel>& batch, const TinyGroupSource& source, int triangles, const RecordsIn& recordsIn,
+                  const Reference& reference) {
+  const int group = tinyGroupCapacity();
+  for (int t0 = 0; t0 < triangles; t0 += group) {
+    const int count = std::min(group, triangles - t0);
+    TinyGroupSource at = source;
+    at.indices = source.indices + 3 * t0;
+    std::uint32_t fast = 0, empty = 0;
+    batch.setGroupUp(at, count, fast, empty);
+    for (int j = 0; j < count; ++j) {
+      const bool isFast = fast >> j & 1;
+      if (isFast) batch.take(j, recordsIn);
+      const std::uint32_t* v = at.indices + 3 * j;
+      reference(source.vertices[v[0]], source.vertices[v[1]], source.vertices[v[2]], isFast);
+    }
+    batch.flush();
+  }
+}
+
 // A group's tiny triangles whose bounds run across tile edges: the batch sorts their pixels into
 // the tiles, each after that tile's records, exactly as covering each tile's piece of them one by
 // one (forEachTilePiece) writes them.
@@ -239,34 +262,25 @@ TEST(TinyBatch, GroupAcrossTilesWritesWhatCoveringEachTilesPieceWrites) {
   for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
     hwy::SetSupportedTargetsForTest(target);
     ++targets;
-    const int group = tinyGroupCapacity();
     for (const bool flat : {false, true}) {
       TinyRuns<TinyFragment> single, batched;
       TinyBatch batch(batched, flat, tilesX);
-      for (int t0 = 0; t0 < triangles; t0 += group) {
-        const int count = std::min(group, triangles - t0);
-        const TinyGroupSource source{vertices.data(), indices.data() + 3 * t0, width, height, tilesX, false, flat};
-        std::uint32_t fast = 0, empty = 0;
-        batch.setGroupUp(source, count, fast, empty);
-        for (int j = 0; j < count; ++j) {
-          if (!(fast >> j & 1)) continue;
-          batch.take(j, recordsIn);
-          const std::uint32_t* at = indices.data() + 3 * (t0 + j);
-          const ShadedVertex &a = vertices[at[0]], &b = vertices[at[1]], &c = vertices[at[2]];
-          TriangleSetup s;
-          ASSERT_TRUE(setupTriangle(a, b, c, width, height, s));
-          crossing += !inOneTile(s);
-          const Color4 lit[3] = {a.front, s.swapped ? c.front : b.front, s.swapped ? b.front : c.front};
-          forEachTilePiece(s, [&](const TriangleSetup& piece) {
-            const int tile = (piece.minY / kTileSize) * tilesX + piece.minX / kTileSize;
-            TinyFragment* room = single.room(kTinyRoom);
-            single.commit(flat ? coverTinyFlat(piece, packUnorm8(c.front), recordsIn(tile), room)
-                               : coverTinyGouraud(piece, lit, recordsIn(tile), room),
-                          tile);
-          });
-        }
-        batch.flush();
-      }
+      const TinyGroupSource source{vertices.data(), indices.data(), width, height, tilesX, false, flat};
+      takeInGroups(batch, source, triangles, recordsIn, [&](const ShadedVertex& a, const ShadedVertex& b,
+                                                            const ShadedVertex& c, bool fast) {
+        if (!fast) return;
+        TriangleSetup s;
+        ASSERT_TRUE(setupTriangle(a, b, c, width, height, s));
+        crossing += !inOneTile(s);
+        const Color4 lit[3] = {a.front, s.swapped ? c.front : b.front, s.swapped ? b.front : c.front};
+        forEachTilePiece(s, [&](const TriangleSetup& piece) {
+          const int tile = (piece.minY / kTileSize) * tilesX + piece.minX / kTileSize;
+          TinyFragment* room = single.room(kTinyRoom);
+          single.commit(flat ? coverTinyFlat(piece, packUnorm8(c.front), recordsIn(tile), room)
+                             : coverTinyGouraud(piece, lit, recordsIn(tile), room),
+                        tile);
+        });
+      });
       expectSameByTile(single, batched, std::string(hwy::TargetName(target)) + (flat ? " flat" : " Gouraud"));
     }
   }
@@ -307,38 +321,28 @@ TEST(TinyBatch, SurfaceBatchWritesWhatCoveringEachPieceOneByOneWrites) {
   for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
     hwy::SetSupportedTargetsForTest(target);
     ++targets;
-    const int group = tinyGroupCapacity();
     for (const bool twoSided : {false, true}) {
       TinyRuns<TinySurface> single, batched;
       TinyBatch batch(batched, false, tilesX, owner);
-      for (int t0 = 0; t0 < triangles; t0 += group) {
-        const int count = std::min(group, triangles - t0);
-        const TinyGroupSource source{vertices.data(), indices.data() + 3 * t0, width, height, tilesX, twoSided, false,
-                                     true};
-        std::uint32_t fast = 0, empty = 0;
-        batch.setGroupUp(source, count, fast, empty);
-        for (int j = 0; j < count; ++j) {
-          const std::uint32_t* at = indices.data() + 3 * (t0 + j);
-          const ShadedVertex &a = vertices[at[0]], &b = vertices[at[1]], &c = vertices[at[2]];
-          TriangleSetup s;
-          const bool drawn = setupTriangle(a, b, c, width, height, s);
-          ASSERT_EQ(bool(fast >> j & 1), drawn && isTiny(s) && s.floatExact);
-          if (!(fast >> j & 1)) continue;
-          batch.take(j, recordsIn);
-          crossing += !inOneTile(s);
-          SurfaceVertices v;
-          const ShadedVertex* ordered[3] = {&a, s.swapped ? &c : &b, s.swapped ? &b : &c};
-          for (int k = 0; k < 3; ++k) v.position[k] = ordered[k]->eyePosition, v.normal[k] = ordered[k]->eyeNormal;
-          v.negate = twoSided && !s.frontFacing;
-          v.owner = owner;
-          backs += v.negate;
-          forEachTilePiece(s, [&](const TriangleSetup& piece) {
-            const int tile = (piece.minY / kTileSize) * tilesX + piece.minX / kTileSize;
-            single.commit(coverTinySurface(piece, v, recordsIn(tile), single.room(kTinyRoom)), tile);
-          });
-        }
-        batch.flush();
-      }
+      const TinyGroupSource source{vertices.data(), indices.data(), width, height, tilesX, twoSided, false, true};
+      takeInGroups(batch, source, triangles, recordsIn, [&](const ShadedVertex& a, const ShadedVertex& b,
+                                                            const ShadedVertex& c, bool fast) {
+        TriangleSetup s;
+        const bool drawn = setupTriangle(a, b, c, width, height, s);
+        ASSERT_EQ(fast, drawn && isTiny(s) && s.floatExact);
+        if (!fast) return;
+        crossing += !inOneTile(s);
+        SurfaceVertices v;
+        const ShadedVertex* ordered[3] = {&a, s.swapped ? &c : &b, s.swapped ? &b : &c};
+        for (int k = 0; k < 3; ++k) v.position[k] = ordered[k]->eyePosition, v.normal[k] = ordered[k]->eyeNormal;
+        v.negate = twoSided && !s.frontFacing;
+        v.owner = owner;
+        backs += v.negate;
+        forEachTilePiece(s, [&](const TriangleSetup& piece) {
+          const int tile = (piece.minY / kTileSize) * tilesX + piece.minX / kTileSize;
+          single.commit(coverTinySurface(piece, v, recordsIn(tile), single.room(kTinyRoom)), tile);
+        });
+      });
       expectSameByTile(single, batched, std::string(hwy::TargetName(target)) + (twoSided ? " two-sided" : ""));
     }
   }
