@@ -1,10 +1,11 @@
 #include "raster/framebuffer.h"
 
+#include "raster/tile_memory.h"
+
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <atomic>
-#include <cstring>
 
 namespace illum {
 
@@ -13,20 +14,21 @@ void Framebuffer::reset(int width, int height, const Color4& clearColor) {
   height_ = height;
   tilesX_ = (width + kTileSize - 1) / kTileSize;
   const std::size_t tiles = std::size_t(tilesX_) * std::size_t((height + kTileSize - 1) / kTileSize);
-  if (depth_.size() != tiles * kTileBlock) {
-    depth_.resize(tiles * kTileBlock);
-    color_.resize(tiles * kTileBlock * 4);
+  if (blocks_ != tiles) {
+    depth_.reset(new Real[tiles * kTileBlock]);
+    color_.reset(new std::uint8_t[tiles * kTileBlock * 4]);
+    blocks_ = tiles;
   }
   clear_ = packUnorm8(clearColor);
   cleared_.assign(tiles, 0);
+  block_.resize(tiles);
+  for (std::size_t t = 0; t < tiles; ++t) block_[t] = ownBlock(t);
 }
 
 void Framebuffer::clearTile(int x0, int y0) {
   const std::size_t t = tileOf(x0, y0);
   if (cleared_[t]) return;
-  std::fill_n(&depth_[t * kTileBlock], kTileBlock, Real(1));
-  std::uint8_t* c = &color_[t * kTileBlock * 4];
-  for (std::size_t i = 0; i < kTileBlock; ++i) std::memcpy(c + 4 * i, &clear_, 4);
+  fillTile(block_[t].depth, reinterpret_cast<std::uint32_t*>(block_[t].color), kTileBlock, clear_);
   cleared_[t] = 1;
 }
 
@@ -51,23 +53,15 @@ void Framebuffer::imageOf(Image& image) const {
 std::size_t Framebuffer::copyTile(int tile, Image& image, std::uint32_t background8) const {
   const int x0 = tile % tilesX_ * kTileSize, y0 = tile / tilesX_ * kTileSize;
   const int count = std::min(kTileSize, width_ - x0), rows = std::min(kTileSize, height_ - y0);
-  const bool drawn = cleared_[std::size_t(tile)];  // else never drawn: the clear colour
-  std::size_t unlike = 0;
-  for (int y = y0; y < y0 + rows; ++y) {
-    std::uint8_t* dst = image.pixel(x0, height_ - 1 - y);
-    if (!drawn) {
-      for (int i = 0; i < count; ++i) std::memcpy(dst + 4 * i, &clear_, 4);
-      continue;
-    }
-    const std::uint8_t* src = &color_[index(x0, y) * 4];
-    std::memcpy(dst, src, std::size_t(count) * 4);
-    for (int i = 0; i < count; ++i) {
-      std::uint32_t p;
-      std::memcpy(&p, src + 4 * i, 4);
-      unlike += p != background8;
-    }
+  // The image's rows run from the top: the tile's bottom row is the lowest of its rows there.
+  std::uint8_t* const dst = image.pixel(x0, height_ - 1 - y0);
+  const std::ptrdiff_t imageStride = -std::ptrdiff_t(width_) * 4;
+  if (!cleared_[std::size_t(tile)]) {  // never drawn: the clear colour
+    fillPixels(dst, imageStride, count, rows, clear_);
+    return std::size_t(clear_ != background8) * std::size_t(count) * std::size_t(rows);
   }
-  return drawn ? unlike : std::size_t(clear_ != background8) * std::size_t(count) * std::size_t(rows);
+  return copyPixels(reinterpret_cast<const std::uint32_t*>(colorAt(x0, y0)), kTileSize * 4, dst, imageStride, count,
+                    rows, background8);
 }
 
 std::size_t Framebuffer::toImage(Image& image, const Color4& background) const {

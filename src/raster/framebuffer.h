@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace illum {
@@ -35,6 +36,12 @@ inline std::uint32_t packUnorm8(const Color4& c) {
          std::uint32_t(toUnorm8(c.a)) << 24;
 }
 
+// One tile's depths and RGBA8 pixels, laid out as the framebuffer lays out each of its own.
+struct TileMemory {
+  alignas(64) Real depth[kTileBlock];
+  alignas(64) std::uint8_t color[kTileBlock * 4];
+};
+
 class Framebuffer {
  public:
   Framebuffer() = default;
@@ -57,20 +64,20 @@ class Framebuffer {
 
   // GL_LESS against the stored depth; on a pass the depth is written and true returned.
   bool depthTest(int x, int y, Real z) {
-    Real& stored = depth_[index(x, y)];
+    Real& stored = depthAt(x, y);
     if (!(z < stored)) return false;
     stored = z;
     return true;
   }
-  Real depth(int x, int y) const { return depth_[index(x, y)]; }
+  Real depth(int x, int y) const { return depthAt(x, y); }
   void writeColor(int x, int y, const Color4& c) {
-    std::uint8_t* p = &color_[index(x, y) * 4];
+    std::uint8_t* p = colorAt(x, y);
     for (int i = 0; i < 4; ++i) p[i] = toUnorm8(c[i]);
   }
 
   // Source-over blending: RGB by (SRC_ALPHA, ONE_MINUS_SRC_ALPHA), alpha by (ONE, ONE_MINUS_SRC_ALPHA).
   void blendColor(int x, int y, const Color4& c) {
-    std::uint8_t* p = &color_[index(x, y) * 4];
+    std::uint8_t* p = colorAt(x, y);
     const Real a = std::clamp(c.a, Real(0), Real(1));
     for (int i = 0; i < 3; ++i) p[i] = toUnorm8(std::clamp(c[i], Real(0), Real(1)) * a + Real(p[i]) / 255 * (1 - a));
     p[3] = toUnorm8(a + Real(p[3]) / 255 * (1 - a));
@@ -89,23 +96,48 @@ class Framebuffer {
   std::size_t copyTile(int tile, Image& image, std::uint32_t background8) const;
   int tileCount() const { return int(cleared_.size()); }
 
-  // The tile whose bottom-left pixel is (x0, y0) (multiples of kTileSize): kTileSize² depths and
-  // RGBA pixels, row by row from the bottom, then kTilePadding spare ones.
-  Real* depthTile(int x0, int y0) { return &depth_[index(x0, y0)]; }
-  std::uint8_t* colorTile(int x0, int y0) { return &color_[index(x0, y0) * 4]; }
-
- private:
-  std::size_t index(int x, int y) const {
-    return tileOf(x, y) * kTileBlock + std::size_t(y % kTileSize) * kTileSize + std::size_t(x % kTileSize);
+  // A tile drawn for the first and last time this frame, straight into the image, can live in
+  // its thread's `memory`, hot in that core's cache, rather than in the framebuffer's own block,
+  // which a 4K frame (67 MB of them) would clear and copy through main memory. lendTile points the
+  // tile (not drawn since reset) at `memory` until returnTile, which forgets what was drawn there:
+  // the tile is undrawn again.
+  bool drawn(int tile) const { return cleared_[std::size_t(tile)] != 0; }
+  void lendTile(int tile, TileMemory& memory) {
+    block_[std::size_t(tile)] = {memory.depth, memory.color};
+  }
+  void returnTile(int tile) {
+    block_[std::size_t(tile)] = ownBlock(std::size_t(tile));
+    cleared_[std::size_t(tile)] = 0;
   }
 
+  // The tile whose bottom-left pixel is (x0, y0) (multiples of kTileSize): kTileSize² depths and
+  // RGBA pixels, row by row from the bottom, then kTilePadding spare ones.
+  Real* depthTile(int x0, int y0) { return block_[tileOf(x0, y0)].depth; }
+  std::uint8_t* colorTile(int x0, int y0) { return block_[tileOf(x0, y0)].color; }
+
+ private:
+  struct Block {
+    Real* depth;
+    std::uint8_t* color;
+  };
+
+  Real& depthAt(int x, int y) const { return block_[tileOf(x, y)].depth[inTile(x, y)]; }
+  std::uint8_t* colorAt(int x, int y) const { return block_[tileOf(x, y)].color + inTile(x, y) * 4; }
+  static std::size_t inTile(int x, int y) {
+    return std::size_t(y % kTileSize) * kTileSize + std::size_t(x % kTileSize);
+  }
   std::size_t tileOf(int x, int y) const { return std::size_t(y / kTileSize) * std::size_t(tilesX_) + std::size_t(x / kTileSize); }
+  Block ownBlock(std::size_t tile) const { return {&depth_[tile * kTileBlock], &color_[tile * kTileBlock * 4]}; }
 
   int width_ = 0, height_ = 0, tilesX_ = 0;
   std::uint32_t clear_ = 0;            // the clear colour as an RGBA8 word
   std::vector<std::uint8_t> cleared_;  // per tile: cleared since reset
-  std::vector<std::uint8_t> color_;
-  std::vector<Real> depth_;
+  std::vector<Block> block_;           // per tile: where its pixels are (its own block, or lent memory)
+  // The tiles' own blocks, left uninitialised until a tile is cleared: a frame whose tiles are all
+  // drawn in lent memory never touches them.
+  std::size_t blocks_ = 0;
+  std::unique_ptr<std::uint8_t[]> color_;
+  std::unique_ptr<Real[]> depth_;
 };
 
 }  // namespace illum

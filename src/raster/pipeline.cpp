@@ -128,8 +128,9 @@ class BinnedFrame {
   }
 
   // The last flush, when nothing is drawn after the triangles: each tile, once drawn, is copied
-  // into `image` by the thread that drew it (Framebuffer::toImage tile by tile). Returns the
-  // pixels unlike the background.
+  // into `image` by the thread that drew it (Framebuffer::toImage tile by tile), a tile that no
+  // earlier flush drew in that thread's own memory (Framebuffer::lendTile). Returns the pixels
+  // unlike the background; the framebuffer keeps only what earlier flushes drew.
   std::size_t flushInto(Image& image, const Color4& background) {
     s_.fb.imageOf(image);
     const std::uint32_t background8 = packUnorm8(background);
@@ -139,8 +140,11 @@ class BinnedFrame {
         [&](const tbb::blocked_range<int>& range) {
           std::size_t n = 0;
           for (int tile = range.begin(); tile < range.end(); ++tile) {
+            const bool lent = used_ > 0 && !s_.fb.drawn(tile);
+            if (lent) s_.fb.lendTile(tile, s_.scratch.local().pixels);
             if (used_ > 0) drawTile(tile);
             n += s_.fb.copyTile(tile, image, background8);
+            if (lent) s_.fb.returnTile(tile);
           }
           unlike += n;
         },
@@ -217,6 +221,9 @@ class BinnedFrame {
     const std::size_t chunks = ranges.size();
     const std::size_t slice = std::max<std::size_t>(1, kBatchTiny / kTriangleChunk);
     for (std::size_t c0 = 0; c0 < chunks; c0 += slice) {
+      // A full batch is drawn when more is to come, not at once: the last one is left to
+      // flushInto, which draws a tile no earlier batch touched in memory that stays in cache.
+      if (batchedRecords_ >= kBatchRecords || batchedTiny_ >= kBatchTiny) flush();
       const std::size_t c1 = std::min(chunks, c0 + slice);
       if (s_.pool.size() < used_ + (c1 - c0)) s_.pool.resize(used_ + (c1 - c0));
       // Statically partitioned: a chunk's arena is set up, and later reused, by the same thread.
@@ -240,7 +247,6 @@ class BinnedFrame {
         batchedTiny_ += chunk.drawn - chunk.records.size();
         stats_.trianglesDrawn += chunk.drawn;
       }
-      if (batchedRecords_ >= kBatchRecords || batchedTiny_ >= kBatchTiny) flush();
     }
   }
 

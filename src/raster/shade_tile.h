@@ -28,6 +28,7 @@ struct TileScratch {
   // Phong's visible surface (tile_raster.h): position, normal, colour planes and owners.
   Real surface[10][kTileBlock];
   std::array<std::uint32_t, kTileBlock> owner;
+  TileMemory pixels;  // a tile drawn straight into the image (Framebuffer::lendTile)
   TileScratch() {
     winners.fill(kNoWinner);
     owner.fill(kNoWinner);
