@@ -5,6 +5,7 @@
 
 #include <illum/lighting.h>
 
+#include "raster/framebuffer.h"  // packUnorm8, the framebuffer's conversion
 #include "shading/brdf.h"
 
 #include <gtest/gtest.h>
@@ -152,6 +153,61 @@ TEST(ShadePoints, EverySimdTargetGivesTheSameBits) {
   hwy::SetSupportedTargetsForTest(0);
   EXPECT_GE(tried, 2);  // at least the SIMD target and the portable one
 }
+
+#if !ILLUM_USE_DOUBLE
+// Each owned point lit with its owner's setup, as shadePoints lights it, whatever the vector's
+// other lanes hold: whole vectors of one owner, vectors split between owners or partly empty
+// (gathered owner by owner before they are lit), owners alternating lane by lane, and an owner
+// with colours of its own. On every SIMD target.
+TEST(ShadeOwnedPoints, LightsEachPointWithItsOwnersSetupWhateverItsVectorHolds) {
+  std::mt19937 rng(7);
+  const std::size_t n = 1024;
+  const Batch b = randomPoints(n, true, rng);
+  const std::vector<EyeLight> lights = lightsOfKind(3);
+  std::vector<ShadeSetup> setups(3, ShadeSetup{lights, {}, LightingModel::BlinnPhong, {}});
+  setups[1].material.shininess = 12;
+  setups[1].material.diffuse = {0.2f, 0.9f, 0.4f, 0.5f};
+  setups[2].model = LightingModel::Phong;
+  setups[2].material.specular = {1, 1, 1, 1};
+  setups[2].material.shininess = 61;
+  const std::vector<std::uint8_t> colored = {0, 1, 0};
+  std::vector<std::uint32_t> owner(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t block = i / 64;  // runs of 64: longer than any vector
+    owner[i] = block % 4 == 0   ? 0
+               : block % 4 == 1 ? (i % 3 == 0 ? kNoOwner : std::uint32_t(i % 2 + 1))  // mixed, lane by lane
+               : block % 4 == 2 ? (i % 64 < 21 ? 2 : i % 64 < 40 ? kNoOwner : 1)      // split runs
+                                : std::uint32_t(rng() % 4 == 0 ? kNoOwner : rng() % 3);
+  }
+  // What each owner's setup gives every point.
+  std::vector<std::vector<Real>> expected;
+  for (std::size_t o = 0; o < setups.size(); ++o) {
+    Batch own = b;
+    if (!colored[o])
+      for (int c = 6; c < 10; ++c) own.v[c].clear();
+    expected.push_back(shadeAll(setups[o], own));
+  }
+  constexpr std::uint32_t kUntouched = 0x12345678;
+  int tried = 0;
+  for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+    hwy::SetSupportedTargetsForTest(target);
+    ++tried;
+    std::vector<std::uint32_t> rgba(n, kUntouched);
+    shadeOwnedPoints(setups, colored, b.points(), owner.data(), rgba.data());
+    for (std::size_t i = 0; i < n; ++i) {
+      if (owner[i] == kNoOwner) {
+        ASSERT_EQ(rgba[i], kUntouched) << "point " << i;
+        continue;
+      }
+      const std::vector<Real>& e = expected[owner[i]];
+      const Color4 c(e[i], e[n + i], e[2 * n + i], e[3 * n + i]);
+      ASSERT_EQ(rgba[i], packUnorm8(c)) << hwy::TargetName(target) << ", point " << i << " of owner " << owner[i];
+    }
+  }
+  hwy::SetSupportedTargetsForTest(0);
+  EXPECT_GE(tried, 2);
+}
+#endif
 
 TEST(PowLobe, FollowsStdPowClosely) {
   for (const Real n : {Real(0.5), Real(1), Real(5), Real(25), Real(128), Real(1000), Real(2.5), Real(77.7), Real(5000)}) {
