@@ -39,51 +39,50 @@ std::size_t CoverGroups(const TinyBatchLanes& b, std::uint32_t members, std::uin
   static_assert(TinyBatchLanes::kCapacity % kGroupMax == 0);
   const int group = std::min<int>(kGroupMax, int(hn::Lanes(df)));
   constexpr int kSlots = kGroupMax * kTinyPixels;
+  constexpr int kOffsetBits = 12, kTileShift = 6;  // a slot's offset: row << kTileShift | column
+  constexpr std::uint32_t kOffsetMask = (1u << kOffsetBits) - 1;
+  static_assert(kTileSize == 1 << kTileShift && (kTinyPixels - 1) * (kTileSize + 1) <= int(kOffsetMask));
   const VF zero = hn::Zero(df);
   std::size_t n = 0;
   for (int g = 0; g < TinyBatchLanes::kCapacity; g += group) {
     const std::uint32_t inGroup = (members >> g) & ((1u << group) - 1);
     if (inGroup == 0) continue;
-    // Slot s: triangle slotOf[s] of the group, pixel (column, row) of its bounds.
-    HWY_ALIGN std::int32_t slotOf[kSlots + kGroupMax];
-    HWY_ALIGN float column[kSlots + kGroupMax], row[kSlots + kGroupMax];
-    HWY_ALIGN std::uint32_t offset[kSlots + kGroupMax];
+    // Slot s: triangle slot[s] >> kOffsetBits of the group, pixel slot[s] & kOffsetMask of its
+    // bounds (its offset in the tile from their first pixel: row · kTileSize + column).
+    HWY_ALIGN std::uint32_t slot[kSlots + kGroupMax];
     int start[kGroupMax];
     int slots = 0;
     for (std::uint32_t m = inGroup; m != 0; m &= m - 1) {
       const int j = __builtin_ctz(m);
-      const int w = b.width[g + j];
-      for (int k = 0; k < kTinyPixels; ++k) {  // a whole row of the tables: no branch per pixel
-        slotOf[slots + k] = j;
-        column[slots + k] = kTinyLanes.column[w][k];
-        row[slots + k] = kTinyLanes.row[w][k];
-        offset[slots + k] = kTinyLanes.offset[w][k];
-      }
+      const std::uint32_t* offsets = kTinyLanes.offset[b.width[g + j]];
+      for (int k = 0; k < kTinyPixels; ++k) slot[slots + k] = std::uint32_t(j) << kOffsetBits | offsets[k];  // no branch per pixel
       start[j] = slots;
       slots += b.count[g + j];
     }
-    for (int k = slots; k < slots + group; ++k) slotOf[k] = 0, column[k] = row[k] = 0, offset[k] = 0;  // the rest
-    // First the coverage of every slot; the covered ones' edge values, triangles and offsets are
-    // kept, in order, for the rest (fewer than half of a dense mesh's slots are covered).
+    for (int k = slots; k < slots + group; ++k) slot[k] = 0;  // the rest
+    const auto triangleOf = [&](VU v) { return hn::IndicesFromVec(df, hn::BitCast(di, hn::ShiftRight<kOffsetBits>(v))); };
+    const VU offsetMask = hn::Set(du, kOffsetMask), columnMask = hn::Set(du, kTileSize - 1);
+    // First the coverage of every slot; the covered ones' edge values and slots are kept, in
+    // order, for the rest (fewer than half of a dense mesh's slots are covered).
     std::uint64_t inside[kSlots / 64 + 1] = {};  // bit s % 64 of word s / 64: slot s is covered
     HWY_ALIGN float keptE[3][kSlots + kGroupMax];
-    HWY_ALIGN std::int32_t keptOf[kSlots + kGroupMax];
-    HWY_ALIGN std::uint32_t keptOffset[kSlots + kGroupMax];
+    HWY_ALIGN std::uint32_t keptSlot[kSlots + kGroupMax];
     int kept = 0;
     for (int s0 = 0; s0 < slots; s0 += group) {
-      const auto lanesOf = hn::IndicesFromVec(df, hn::Load(di, slotOf + s0));
+      const VU v = hn::Load(du, slot + s0);
+      const auto lanesOf = triangleOf(v);
       const auto of = [&](const float* values) { return hn::TableLookupLanes(hn::LoadU(df, values + g), lanesOf); };
-      const VF c = hn::Load(df, column + s0), r = hn::Load(df, row + s0);
+      const VU offset = hn::And(v, offsetMask);
+      const VF c = hn::ConvertTo(df, hn::BitCast(di, hn::And(offset, columnMask)));
+      const VF r = hn::ConvertTo(df, hn::BitCast(di, hn::ShiftRight<kTileShift>(offset)));
       VF E[3];
       auto covers = hn::FirstN(df, std::size_t(slots - s0));
       for (int i = 0; i < 3; ++i) {
         E[i] = of(b.edge[i]) + hn::MulAdd(c, of(b.stepX[i]), r * of(b.stepY[i]));
         covers = hn::And(covers, E[i] + of(b.bias[i]) >= zero);
       }
-      const auto keep = hn::RebindMask(du, covers);
       for (int i = 0; i < 3; ++i) hn::StoreU(hn::Compress(E[i], covers), df, keptE[i] + kept);
-      hn::StoreU(hn::Compress(hn::Load(di, slotOf + s0), hn::RebindMask(di, covers)), di, keptOf + kept);
-      hn::StoreU(hn::Compress(hn::Load(du, offset + s0), keep), du, keptOffset + kept);
+      hn::StoreU(hn::Compress(v, hn::RebindMask(du, covers)), du, keptSlot + kept);
       kept += int(hn::CountTrue(df, covers));
       std::uint8_t bits[8] = {};
       hn::StoreMaskBits(df, covers, bits);
@@ -91,23 +90,21 @@ std::size_t CoverGroups(const TinyBatchLanes& b, std::uint32_t members, std::uin
       for (int k = 0; k < (group + 7) / 8; ++k) word |= std::uint64_t(bits[k]) << (8 * k);
       inside[s0 / 64] |= word << (s0 % 64);  // a vector's slots never straddle two words
     }
-    for (int k = kept; k < kept + group; ++k) {  // the last vector's rest
-      keptOf[k] = 0, keptOffset[k] = 0;
-      keptE[0][k] = keptE[1][k] = keptE[2][k] = 0;
-    }
+    for (int k = kept; k < kept + group; ++k) keptSlot[k] = 0, keptE[0][k] = keptE[1][k] = keptE[2][k] = 0;  // the last vector's rest
     // Then depth and the rest of the covered pixels.
     for (int k0 = 0; k0 < kept; k0 += group) {
-      const auto lanesOf = hn::IndicesFromVec(df, hn::Load(di, keptOf + k0));
+      const VU v = hn::Load(du, keptSlot + k0);
+      const auto lanesOf = triangleOf(v);
       const auto of = [&](const auto* values) {
-        const VF v = hn::TableLookupLanes(hn::LoadU(df, reinterpret_cast<const float*>(values) + g), lanesOf);
-        if constexpr (std::is_same_v<std::remove_cv_t<std::remove_pointer_t<decltype(values)>>, float>) return v;
-        else return hn::BitCast(du, v);  // the same lanes, as bits
+        const VF value = hn::TableLookupLanes(hn::LoadU(df, reinterpret_cast<const float*>(values) + g), lanesOf);
+        if constexpr (std::is_same_v<std::remove_cv_t<std::remove_pointer_t<decltype(values)>>, float>) return value;
+        else return hn::BitCast(du, value);  // the same lanes, as bits
       };
       const VF invArea = of(b.invArea);
       const VF l0 = hn::Load(df, keptE[0] + k0) * invArea, l1 = hn::Load(df, keptE[1] + k0) * invArea,
                l2 = hn::Load(df, keptE[2] + k0) * invArea;
       const VF z = l0 * of(b.z[0]) + l1 * of(b.z[1]) + l2 * of(b.z[2]);
-      const VU tag = hn::Add(of(b.firstTag), hn::Load(du, keptOffset + k0));
+      const VU tag = hn::Add(of(b.firstTag), hn::And(v, offsetMask));
       emit(n + std::size_t(k0), std::min(group, kept - k0), of, l0, l1, l2, z, tag);
     }
     n += std::size_t(kept);
