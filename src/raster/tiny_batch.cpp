@@ -55,12 +55,15 @@ std::size_t CoverGroups(const TinyBatchLanes& b, std::uint32_t members, std::uin
     for (std::uint32_t m = inGroup; m != 0; m &= m - 1) {
       const int j = __builtin_ctz(m);
       const std::uint32_t* offsets = kTinyLanes.offset[b.width[g + j]];
-      for (int k = 0; k < kTinyPixels; ++k) slot[slots + k] = std::uint32_t(j) << kOffsetBits | offsets[k];  // no branch per pixel
+      for (int k = 0; k < kTinyPixels; ++k)  // a whole row of the table: no branch per pixel
+        slot[slots + k] = std::uint32_t(j) << kOffsetBits | offsets[k];
       start[j] = slots;
       slots += b.count[g + j];
     }
     for (int k = slots; k < slots + group; ++k) slot[k] = 0;  // the rest
-    const auto triangleOf = [&](VU v) { return hn::IndicesFromVec(df, hn::BitCast(di, hn::ShiftRight<kOffsetBits>(v))); };
+    const auto triangleOf = [&](VU v) {
+      return hn::IndicesFromVec(df, hn::BitCast(di, hn::ShiftRight<kOffsetBits>(v)));
+    };
     const VU offsetMask = hn::Set(du, kOffsetMask), columnMask = hn::Set(du, kTileSize - 1);
     // First the coverage of every slot; the covered ones' edge values and slots are kept, in
     // order, for the rest (fewer than half of a dense mesh's slots are covered).
@@ -90,7 +93,8 @@ std::size_t CoverGroups(const TinyBatchLanes& b, std::uint32_t members, std::uin
       for (int k = 0; k < (group + 7) / 8; ++k) word |= std::uint64_t(bits[k]) << (8 * k);
       inside[s0 / 64] |= word << (s0 % 64);  // a vector's slots never straddle two words
     }
-    for (int k = kept; k < kept + group; ++k) keptSlot[k] = 0, keptE[0][k] = keptE[1][k] = keptE[2][k] = 0;  // the last vector's rest
+    for (int k = kept; k < kept + group; ++k)  // the last vector's rest
+      keptSlot[k] = 0, keptE[0][k] = keptE[1][k] = keptE[2][k] = 0;
     // Then depth and the rest of the covered pixels.
     for (int k0 = 0; k0 < kept; k0 += group) {
       const VU v = hn::Load(du, keptSlot + k0);
