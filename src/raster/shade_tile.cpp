@@ -3,6 +3,7 @@
 #include "raster/fragment.h"
 #include "shading/shade_points.h"
 
+#include <cstdint>
 #include <cstring>
 
 namespace illum {
@@ -158,13 +159,13 @@ class TinyDrawer {
     for (; run_ < runs_.size(); ++run_, next_ = 0) {
       const TinyRun<Pixel>& run = runs_[run_];
       if (next_ == 0 && run_ + 2 < runs_.size()) {
-        const char* ahead = reinterpret_cast<const char*>(runs_[run_ + 2].first);
-        __builtin_prefetch(ahead);
-        __builtin_prefetch(ahead + 64);
+        const Pixel* ahead = runs_[run_ + 2].first;
+        prefetch(ahead, 0);
+        prefetch(ahead, 64);
       }
       for (; next_ < run.count; ++next_) {
         const Pixel& p = run.first[next_];
-        __builtin_prefetch(&p + kTinyAhead);
+        prefetch(&p, kTinyAhead * sizeof(Pixel));
         if (run.recordsBefore + TinyTag::recordsBefore(p.tag) > record) return passed;
         const std::uint32_t at = TinyTag::pixel(p.tag);
         if (!(p.z < depth_[at])) continue;
@@ -177,7 +178,11 @@ class TinyDrawer {
   }
 
  private:
-  static constexpr int kTinyAhead = 48;
+  static constexpr std::size_t kTinyAhead = 48;
+  // The line `bytes` after `p`, wherever that is (an address only: no pointer past the run).
+  static void prefetch(const Pixel* p, std::size_t bytes) {
+    __builtin_prefetch(reinterpret_cast<const void*>(reinterpret_cast<std::uintptr_t>(p) + bytes));
+  }
   std::span<const TinyRun<Pixel>> runs_;
   Real* depth_;
   const Write& write_;
