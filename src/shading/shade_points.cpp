@@ -92,24 +92,38 @@ class EdgeLanes {
   EdgeLanes(std::span<const ShadeSetup> setups, std::span<const std::uint8_t> colored, std::uint32_t* rgba)
       : setups_(setups), colored_(colored), rgba_(rgba) {}
 
-  // The lanes `mine` of pixels [i, i + lanes), all owner `o`'s.
+  // The lanes `mine` of pixels [i, i + lanes), all owner `o`'s. A whole vector of one owner's
+  // lanes is lit as soon as it is gathered; the lanes past it wait for the next.
   void add(std::uint32_t o, hn::Mask<D> mine, std::size_t i, const Vec3L<hn::Vec<D>>& P, const Vec3L<hn::Vec<D>>& N,
            const SurfacePoints& p) {
     const D d;
     const DU du;
-    const std::size_t n = hn::CountTrue(d, mine);
-    if (count_ > 0 && (owner_ != o || count_ + n > hn::Lanes(d))) flush();
+    if (count_ > 0 && owner_ != o) flush();
     owner_ = o;
     const hn::Vec<D> planes[6] = {P.x, P.y, P.z, N.x, N.y, N.z};
     for (int c = 0; c < 6; ++c) hn::CompressStore(planes[c], mine, d, plane_[c] + count_);
     if (colored_[o])
       for (int c = 0; c < 4; ++c) hn::CompressStore(hn::LoadU(d, p.color[c] + i), mine, d, plane_[6 + c] + count_);
     hn::CompressStore(hn::Iota(du, std::uint32_t(i)), hn::RebindMask(du, mine), du, pixel_ + count_);
-    count_ += n;
+    count_ += hn::CountTrue(d, mine);
+    const std::size_t lanes = hn::Lanes(d);
+    if (count_ < lanes) return;
+    light(lanes);
+    // The rest down to the planes' start.
+    for (int c = 0; c < (colored_[o] ? 10 : 6); ++c) hn::Store(hn::Load(d, plane_[c] + lanes), d, plane_[c]);
+    hn::Store(hn::Load(du, pixel_ + lanes), du, pixel_);
+    count_ -= lanes;
   }
 
   void flush() {
     if (count_ == 0) return;
+    light(count_);
+    count_ = 0;
+  }
+
+ private:
+  // Lights the first `n` lanes of the planes and writes them to their pixels.
+  void light(std::size_t n) {
     const D d;
     const DU du;
     using V = hn::Vec<D>;
@@ -121,11 +135,9 @@ class EdgeLanes {
     LitColor(d, setups_[owner_], s, colored_[owner_] ? color : nullptr, r, g, b, a);
     HWY_ALIGN std::uint32_t packed[hn::MaxLanes(du)];
     hn::Store(PackUnorm8(d, r, g, b, a), du, packed);
-    for (std::size_t k = 0; k < count_; ++k) rgba_[pixel_[k]] = packed[k];
-    count_ = 0;
+    for (std::size_t k = 0; k < n; ++k) rgba_[pixel_[k]] = packed[k];
   }
 
- private:
   std::span<const ShadeSetup> setups_;
   std::span<const std::uint8_t> colored_;
   std::uint32_t* rgba_;

@@ -157,8 +157,8 @@ TEST(ShadePoints, EverySimdTargetGivesTheSameBits) {
 #if !ILLUM_USE_DOUBLE
 // Each owned point lit with its owner's setup, as shadePoints lights it, whatever the vector's
 // other lanes hold: whole vectors of one owner, vectors split between owners or partly empty
-// (gathered owner by owner before they are lit), owners alternating lane by lane, and an owner
-// with colours of its own. On every SIMD target.
+// (gathered owner by owner before they are lit), owners alternating lane by lane, one owner's
+// lanes with holes in every vector, and an owner with colours of its own. On every SIMD target.
 TEST(ShadeOwnedPoints, LightsEachPointWithItsOwnersSetupWhateverItsVectorHolds) {
   std::mt19937 rng(7);
   const std::size_t n = 1024;
@@ -174,10 +174,13 @@ TEST(ShadeOwnedPoints, LightsEachPointWithItsOwnersSetupWhateverItsVectorHolds) 
   std::vector<std::uint32_t> owner(n);
   for (std::size_t i = 0; i < n; ++i) {
     const std::size_t block = i / 64;  // runs of 64: longer than any vector
-    owner[i] = block % 4 == 0   ? 0
-               : block % 4 == 1 ? (i % 3 == 0 ? kNoOwner : std::uint32_t(i % 2 + 1))  // mixed, lane by lane
-               : block % 4 == 2 ? (i % 64 < 21 ? 2 : i % 64 < 40 ? kNoOwner : 1)      // split runs
-                                : std::uint32_t(rng() % 4 == 0 ? kNoOwner : rng() % 3);
+    owner[i] = block % 6 == 0   ? 0
+               : block % 6 == 1 ? (i % 3 == 0 ? kNoOwner : std::uint32_t(i % 2 + 1))  // mixed, lane by lane
+               : block % 6 == 2 ? (i % 64 < 21 ? 2 : i % 64 < 40 ? kNoOwner : 1)      // split runs
+               : block % 6 == 3 ? std::uint32_t(rng() % 4 == 0 ? kNoOwner : rng() % 3)
+               // One owner with holes: its lanes gathered across vectors, more than one vector's worth.
+               : block % 6 == 4 ? (i % 5 == 0 ? kNoOwner : 1)
+                                : (i % 7 == 3 ? kNoOwner : 2);
   }
   // What each owner's setup gives every point.
   std::vector<std::vector<Real>> expected;
