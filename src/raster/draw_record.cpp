@@ -161,7 +161,7 @@ std::size_t setupTriangles(const FrameContext& frame, const Object& object, std:
     // the next groups go one by one instead. Either way the same pixels in the same order.
     const TinyGroupSource source{vertices.data(), nullptr, frame.width, frame.height, binning->bins.tilesX(),
                                  frame.lightModel.twoSided, frame.shading == Shading::Flat,
-                                 frame.shading == Shading::Phong};
+                                 frame.shading == Shading::Phong, vertices.size()};
     const std::size_t group = std::size_t(tinyGroupCapacity());
     const auto recordsIn = [&](int tile) { return binning->bins.recordsIn(tile); };
     constexpr int kMostOneByOne = 5;  // at most 2^5 − 1 groups one by one between tries

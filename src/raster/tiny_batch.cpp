@@ -13,6 +13,9 @@
 #include "raster/tiny_batch.h"
 
 #include <algorithm>
+#include <bit>
+#include <cstddef>
+#include <cstring>
 #include <type_traits>
 
 HWY_BEFORE_NAMESPACE();
@@ -175,6 +178,66 @@ std::size_t CoverTinySurfaceBatch(const TinyBatchLanes& b, std::uint32_t members
 }
 
 
+// The rows SetupTinyGroup works from, gathered from the vertices a field at a time over all the
+// group's triangles (one lane each): window x and y (their low 32 bits: inside the clip volume
+// they are below 2^23, clip.h), depth, 1/w, the outcodes and, with `colors`, the lit colours.
+// Lanes from `count` on are zero and outside. A vertex's fields are found at its index times
+// its size in 32-bit words, which fits an int32 up to kGatherableVertices vertices.
+constexpr std::size_t kVertexWords = sizeof(ShadedVertex) / 4;
+constexpr std::size_t kGatherableVertices = (std::size_t(1) << 31) / kVertexWords;
+static_assert(sizeof(ShadedVertex) % 4 == 0 && std::endian::native == std::endian::little);
+
+template <int kN>
+HWY_INLINE void GatherVertexRows(const TinyGroupSource& src, int count, bool colors, double (&x)[3][kN],
+                                 double (&y)[3][kN], double (&z)[3][kN], double (&invW)[3][kN], double (&inside)[kN],
+                                 double (&front)[3][4][kN], double (&back)[3][4][kN]) {
+  const hn::ScalableTag<std::int32_t> di;
+  const hn::RebindToUnsigned<decltype(di)> du;
+  const hn::RebindToFloat<decltype(di)> df;
+  const hn::ScalableTag<double> dd;
+  const hn::Rebind<std::int32_t, decltype(dd)> dih;
+  const hn::Rebind<float, decltype(dd)> dfh;
+  using VI = hn::VFromD<decltype(di)>;
+  // The group's indices, past `count` vertex 0's (never read past the source's triangles).
+  HWY_ALIGN std::uint32_t index[3 * hn::MaxLanes(du)] = {};
+  std::memcpy(index, src.indices, 3 * std::size_t(count) * sizeof(std::uint32_t));
+  hn::VFromD<decltype(du)> triangleIndex[3];
+  hn::LoadInterleaved3(du, index, triangleIndex[0], triangleIndex[1], triangleIndex[2]);
+  const auto valid = hn::FirstN(di, std::size_t(count));
+  const auto* words = reinterpret_cast<const std::int32_t*>(src.vertices);
+  const auto* floats = reinterpret_cast<const float*>(src.vertices);
+  const auto wordOf = [](std::size_t offset) { return std::ptrdiff_t(offset / 4); };
+  // A row of doubles from a vector of int32 or float lanes.
+  HWY_ALIGN std::int32_t wordsOut[hn::MaxLanes(di)];
+  HWY_ALIGN float floatsOut[hn::MaxLanes(df)];
+  const auto rowOfWords = [&](VI v, double* row) {
+    hn::Store(hn::IfThenElseZero(valid, v), di, wordsOut);
+    for (int j = 0; j < int(hn::Lanes(di)); j += int(hn::Lanes(dd)))
+      hn::Store(hn::PromoteTo(dd, hn::Load(dih, wordsOut + j)), dd, row + j);
+  };
+  const auto rowOfFloats = [&](hn::VFromD<decltype(df)> v, double* row) {
+    hn::Store(hn::IfThenElseZero(hn::RebindMask(df, valid), v), df, floatsOut);
+    for (int j = 0; j < int(hn::Lanes(df)); j += int(hn::Lanes(dd)))
+      hn::Store(hn::PromoteTo(dd, hn::Load(dfh, floatsOut + j)), dd, row + j);
+  };
+  VI codes = hn::Zero(di);
+  for (int k = 0; k < 3; ++k) {
+    const VI at = hn::BitCast(di, triangleIndex[k]) * hn::Set(di, std::int32_t(kVertexWords));
+    const auto word = [&](std::size_t offset) { return hn::GatherIndex(di, words + wordOf(offset), at); };
+    const auto real = [&](std::size_t offset) { return hn::GatherIndex(df, floats + wordOf(offset), at); };
+    codes = hn::Or(codes, word(offsetof(ShadedVertex, outcode)));  // kOutcodeUnknown is not 0
+    rowOfWords(word(offsetof(ShadedVertex, window) + offsetof(WindowPosition, x)), x[k]);
+    rowOfWords(word(offsetof(ShadedVertex, window) + offsetof(WindowPosition, y)), y[k]);
+    rowOfFloats(real(offsetof(ShadedVertex, window) + offsetof(WindowPosition, z)), z[k]);
+    rowOfFloats(real(offsetof(ShadedVertex, window) + offsetof(WindowPosition, invW)), invW[k]);
+    if (!colors) continue;
+    for (int c = 0; c < 4; ++c) rowOfFloats(real(offsetof(ShadedVertex, front) + 4 * std::size_t(c)), front[k][c]);
+    if (src.twoSided)
+      for (int c = 0; c < 4; ++c) rowOfFloats(real(offsetof(ShadedVertex, back) + 4 * std::size_t(c)), back[k][c]);
+  }
+  rowOfWords(hn::IfThenElseZero(codes == hn::Zero(di), hn::Set(di, 1)), inside);
+}
+
 // setupTriangle (setup.cpp) and TinyBatch::add over lanes, one triangle per double lane: the
 // window coordinates are integers of at most 2^23 (the guard band, clip.h) whose products and sums
 // here stay below 2^53, so every integer of the scalar setup is exact in double; the float values
@@ -195,25 +258,30 @@ void SetupTinyGroup(const TinyGroupSource& src, int count, TinyBatchLanes& b, in
   // The triangles' vertices as rows of lanes (vertex k of triangle j at [k][j]).
   HWY_ALIGN double x[3][kN], y[3][kN], z[3][kN], invW[3][kN], inside[kN];
   HWY_ALIGN double front[3][4][kN], back[3][4][kN];
-  for (int j = 0; j < count; ++j) {
-    unsigned codes = 0;
-    for (int k = 0; k < 3; ++k) {
-      const ShadedVertex& v = src.vertices[src.indices[3 * j + k]];
-      codes |= v.outcode;  // kOutcodeUnknown is not 0
-      x[k][j] = double(v.window.x), y[k][j] = double(v.window.y);
-      z[k][j] = v.window.z, invW[k][j] = v.window.invW;
-      if (src.surface) continue;  // lit per pixel: no colours
-      for (int c = 0; c < 4; ++c) front[k][c][j] = v.front[c];
-      if (src.twoSided)
-        for (int c = 0; c < 4; ++c) back[k][c][j] = v.back[c];
+  const bool colors = !src.surface && !src.flat;  // lit per pixel, or one colour per triangle (below)
+  if (src.vertexCount > 0 && src.vertexCount <= kGatherableVertices) {
+    GatherVertexRows(src, count, colors, x, y, z, invW, inside, front, back);
+  } else {
+    for (int j = 0; j < count; ++j) {
+      unsigned codes = 0;
+      for (int k = 0; k < 3; ++k) {
+        const ShadedVertex& v = src.vertices[src.indices[3 * j + k]];
+        codes |= v.outcode;  // kOutcodeUnknown is not 0
+        x[k][j] = double(v.window.x), y[k][j] = double(v.window.y);
+        z[k][j] = v.window.z, invW[k][j] = v.window.invW;
+        if (!colors) continue;
+        for (int c = 0; c < 4; ++c) front[k][c][j] = v.front[c];
+        if (src.twoSided)
+          for (int c = 0; c < 4; ++c) back[k][c][j] = v.back[c];
+      }
+      inside[j] = codes == 0 ? 1 : 0;
     }
-    inside[j] = codes == 0 ? 1 : 0;
-  }
-  for (int j = count; j < kN; ++j) {  // the last vector's rest: outside, no values to trip over
-    inside[j] = 0;
-    for (int k = 0; k < 3; ++k) {
-      x[k][j] = y[k][j] = z[k][j] = invW[k][j] = 0;
-      for (int c = 0; c < 4; ++c) front[k][c][j] = back[k][c][j] = 0;
+    for (int j = count; j < kN; ++j) {  // the last vector's rest: outside, no values to trip over
+      inside[j] = 0;
+      for (int k = 0; k < 3; ++k) {
+        x[k][j] = y[k][j] = z[k][j] = invW[k][j] = 0;
+        for (int c = 0; c < 4; ++c) front[k][c][j] = back[k][c][j] = 0;
+      }
     }
   }
   const VD zero = hn::Zero(dd), one = hn::Set(dd, 1.0);
@@ -266,7 +334,7 @@ void SetupTinyGroup(const TinyGroupSource& src, int count, TinyBatchLanes& b, in
       };
       hn::Store(hn::DemoteTo(df, pick(&z[0][0])), df, b.z[k] + j0);
       hn::Store(hn::DemoteTo(df, pick(&invW[0][0])), df, b.invW[k] + j0);
-      if (src.flat || src.surface) continue;
+      if (!colors) continue;
       for (int c = 0; c < 4; ++c) {
         const auto channel = [&](const double (*rows)[4][kN]) {
           const VD kept = hn::Load(dd, rows[k][c] + j0);

@@ -66,6 +66,9 @@ struct TinyGroupSource {
   int width, height, tilesX;
   bool twoSided, flat;
   bool surface = false;  // Phong: positions and normals instead of colours
+  // How many vertices `vertices` holds (0: not known). Up to 2^26 of them, each field of the
+  // group's vertices is gathered into lanes at once; beyond, or not known, they are read one by one.
+  std::size_t vertexCount = 0;
 };
 
 // How many triangles setupTinyGroup takes at a time on this CPU (at most kCapacity).

@@ -110,7 +110,8 @@ TEST(TinyBatch, WritesWhatCoveringOneByOneWritesOnEveryTarget) {
 // the same verdicts (fast: inside, tiny, float-exact, opaque; empty: inside, no pixel centre) and
 // the same bits in every lane of every fast triangle, for triangles of both windings, two-sided
 // lighting, translucent vertices, horizontal and vertical edges, degenerate and big ones, slivers
-// the viewport cuts small, vertices outside the clip volume, and groups that are not whole vectors.
+// the viewport cuts small, vertices outside the clip volume, and groups that are not whole vectors;
+// with the vertices' fields gathered into lanes and read one by one.
 TEST(TinyBatch, GroupSetupEqualsOneByOneSetupOnEveryTarget) {
   std::mt19937 rng(5);
   const int width = 300, height = 200;
@@ -149,9 +150,11 @@ TEST(TinyBatch, GroupSetupEqualsOneByOneSetupOnEveryTarget) {
     const int group = tinyGroupCapacity();
     for (const bool twoSided : {false, true})
       for (const bool flat : {false, true})
+       for (const bool gathered : {false, true})  // the vertices' fields gathered into lanes, or read one by one
         for (int t0 = 0; t0 < triangles; t0 += group) {
           const int count = std::min(group, triangles - t0);
-          const TinyGroupSource source{vertices.data(), indices.data() + 3 * t0, width, height, tilesX, twoSided, flat};
+          const TinyGroupSource source{vertices.data(), indices.data() + 3 * t0, width, height, tilesX, twoSided, flat,
+                                       false, gathered ? vertices.size() : 0};
           TinyBatchLanes lanes, expected;
           int tile[TinyBatchLanes::kCapacity];
           std::uint32_t fast = 0, empty = 0;
@@ -159,7 +162,8 @@ TEST(TinyBatch, GroupSetupEqualsOneByOneSetupOnEveryTarget) {
           for (int j = 0; j < count; ++j) {
             const std::uint32_t* at = indices.data() + 3 * (t0 + j);
             const ShadedVertex &a = vertices[at[0]], &b = vertices[at[1]], &c = vertices[at[2]];
-            const std::string where = std::string(hwy::TargetName(target)) + " triangle " + std::to_string(t0 + j);
+            const std::string where = std::string(hwy::TargetName(target)) + (gathered ? " gathered" : "") +
+                                      " triangle " + std::to_string(t0 + j);
             TriangleSetup s;
             const bool inside = a.outcode == 0 && b.outcode == 0 && c.outcode == 0;
             const bool drawn = inside && setupTriangle(a, b, c, width, height, s);
@@ -265,7 +269,8 @@ TEST(TinyBatch, GroupAcrossTilesWritesWhatCoveringEachTilesPieceWrites) {
     for (const bool flat : {false, true}) {
       TinyRuns<TinyFragment> single, batched;
       TinyBatch batch(batched, flat, tilesX);
-      const TinyGroupSource source{vertices.data(), indices.data(), width, height, tilesX, false, flat};
+      const TinyGroupSource source{vertices.data(), indices.data(), width, height, tilesX, false, flat, false,
+                                   vertices.size()};
       takeInGroups(batch, source, triangles, recordsIn, [&](const ShadedVertex& a, const ShadedVertex& b,
                                                             const ShadedVertex& c, bool fast) {
         if (!fast) return;
@@ -324,7 +329,8 @@ TEST(TinyBatch, SurfaceBatchWritesWhatCoveringEachPieceOneByOneWrites) {
     for (const bool twoSided : {false, true}) {
       TinyRuns<TinySurface> single, batched;
       TinyBatch batch(batched, false, tilesX, owner);
-      const TinyGroupSource source{vertices.data(), indices.data(), width, height, tilesX, twoSided, false, true};
+      const TinyGroupSource source{vertices.data(), indices.data(), width, height, tilesX, twoSided, false, true,
+                                   vertices.size()};
       takeInGroups(batch, source, triangles, recordsIn, [&](const ShadedVertex& a, const ShadedVertex& b,
                                                             const ShadedVertex& c, bool fast) {
         TriangleSetup s;
