@@ -7,7 +7,6 @@
 
 #include "raster/tile_memory.h"
 
-#include <cstring>
 
 HWY_BEFORE_NAMESPACE();
 namespace illum::HWY_NAMESPACE {

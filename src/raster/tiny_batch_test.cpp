@@ -148,61 +148,65 @@ TEST(TinyBatch, GroupSetupEqualsOneByOneSetupOnEveryTarget) {
     hwy::SetSupportedTargetsForTest(target);
     ++targets;
     const int group = tinyGroupCapacity();
-    for (const bool twoSided : {false, true})
-      for (const bool flat : {false, true})
-       for (const bool gathered : {false, true})  // the vertices' fields gathered into lanes, or read one by one
-        for (int t0 = 0; t0 < triangles; t0 += group) {
-          const int count = std::min(group, triangles - t0);
-          const TinyGroupSource source{vertices.data(), indices.data() + 3 * t0, width, height, tilesX, twoSided, flat,
-                                       false, gathered ? vertices.size() : 0};
-          TinyBatchLanes lanes, expected;
-          int tile[TinyBatchLanes::kCapacity];
-          std::uint32_t fast = 0, empty = 0;
-          setupTinyGroup(source, count, lanes, tile, fast, empty);
-          for (int j = 0; j < count; ++j) {
-            const std::uint32_t* at = indices.data() + 3 * (t0 + j);
-            const ShadedVertex &a = vertices[at[0]], &b = vertices[at[1]], &c = vertices[at[2]];
-            const std::string where = std::string(hwy::TargetName(target)) + (gathered ? " gathered" : "") +
-                                      " triangle " + std::to_string(t0 + j);
-            TriangleSetup s;
-            const bool inside = a.outcode == 0 && b.outcode == 0 && c.outcode == 0;
-            const bool drawn = inside && setupTriangle(a, b, c, width, height, s);
-            EXPECT_EQ(bool(empty >> j & 1), inside && !drawn) << where;
-            const bool back = twoSided && drawn && !s.frontFacing;
-            const ShadedVertex* ordered[3] = {&a, drawn && s.swapped ? &c : &b, drawn && s.swapped ? &b : &c};
-            const Color4 lit[3] = {back ? ordered[0]->back : ordered[0]->front, back ? ordered[1]->back : ordered[1]->front,
-                                   back ? ordered[2]->back : ordered[2]->front};
-            const bool isFast = drawn && isTiny(s) && TinyBatch<TinyFragment>::joins(s, flat ? nullptr : lit);
-            ASSERT_EQ(bool(fast >> j & 1), isFast) << where;
-            fastSeen += isFast, emptySeen += inside && !drawn, othersSeen += !isFast && drawn;
-            if (!isFast) continue;
-            setTinyLanes(expected, j, s, flat ? nullptr : lit, packUnorm8(back ? c.back : c.front), 0);
-            EXPECT_EQ(tile[j], (s.minY / kTileSize) * tilesX + s.minX / kTileSize) << where;
-            const auto sameLane = [&](const auto& x, const auto& y) { return std::memcmp(&x[j], &y[j], sizeof x[j]) == 0; };
-            for (int i = 0; i < 3; ++i) {
-              EXPECT_TRUE(sameLane(lanes.edge[i], expected.edge[i]) && sameLane(lanes.stepX[i], expected.stepX[i]) &&
-                          sameLane(lanes.stepY[i], expected.stepY[i]) && sameLane(lanes.bias[i], expected.bias[i]))
-                  << where << " edge " << i;
-              EXPECT_TRUE(sameLane(lanes.z[i], expected.z[i]) && sameLane(lanes.invW[i], expected.invW[i])) << where;
-              for (int k = 0; k < 3; ++k) {
-                if (!flat) {
-                  EXPECT_TRUE(sameLane(lanes.lit[i][k], expected.lit[i][k])) << where << " colour " << i << k;
+    for (const bool gathered : {false, true})  // the vertices' fields gathered into lanes, or read one by one
+      for (const bool twoSided : {false, true})
+        for (const bool flat : {false, true})
+          for (int t0 = 0; t0 < triangles; t0 += group) {
+            const int count = std::min(group, triangles - t0);
+            const TinyGroupSource source{vertices.data(), indices.data() + 3 * t0, width, height,
+                                         tilesX, twoSided, flat, false,
+                                         gathered ? vertices.size() : 0};
+            TinyBatchLanes lanes, expected;
+            int tile[TinyBatchLanes::kCapacity];
+            std::uint32_t fast = 0, empty = 0;
+            setupTinyGroup(source, count, lanes, tile, fast, empty);
+            for (int j = 0; j < count; ++j) {
+              const std::uint32_t* at = indices.data() + 3 * (t0 + j);
+              const ShadedVertex &a = vertices[at[0]], &b = vertices[at[1]], &c = vertices[at[2]];
+              const std::string where = std::string(hwy::TargetName(target)) + (gathered ? " gathered" : "") +
+                                        " triangle " + std::to_string(t0 + j);
+              TriangleSetup s;
+              const bool inside = a.outcode == 0 && b.outcode == 0 && c.outcode == 0;
+              const bool drawn = inside && setupTriangle(a, b, c, width, height, s);
+              EXPECT_EQ(bool(empty >> j & 1), inside && !drawn) << where;
+              const bool back = twoSided && drawn && !s.frontFacing;
+              const ShadedVertex* ordered[3] = {&a, drawn && s.swapped ? &c : &b, drawn && s.swapped ? &b : &c};
+              const Color4 lit[3] = {back ? ordered[0]->back : ordered[0]->front,
+                                     back ? ordered[1]->back : ordered[1]->front,
+                                     back ? ordered[2]->back : ordered[2]->front};
+              const bool isFast = drawn && isTiny(s) && TinyBatch<TinyFragment>::joins(s, flat ? nullptr : lit);
+              ASSERT_EQ(bool(fast >> j & 1), isFast) << where;
+              fastSeen += isFast, emptySeen += inside && !drawn, othersSeen += !isFast && drawn;
+              if (!isFast) continue;
+              setTinyLanes(expected, j, s, flat ? nullptr : lit, packUnorm8(back ? c.back : c.front), 0);
+              EXPECT_EQ(tile[j], (s.minY / kTileSize) * tilesX + s.minX / kTileSize) << where;
+              const auto sameLane = [&](const auto& x, const auto& y) {
+                return std::memcmp(&x[j], &y[j], sizeof x[j]) == 0;
+              };
+              for (int i = 0; i < 3; ++i) {
+                EXPECT_TRUE(sameLane(lanes.edge[i], expected.edge[i]) && sameLane(lanes.stepX[i], expected.stepX[i]) &&
+                            sameLane(lanes.stepY[i], expected.stepY[i]) && sameLane(lanes.bias[i], expected.bias[i]))
+                    << where << " edge " << i;
+                EXPECT_TRUE(sameLane(lanes.z[i], expected.z[i]) && sameLane(lanes.invW[i], expected.invW[i])) << where;
+                for (int k = 0; k < 3; ++k) {
+                  if (!flat) {
+                    EXPECT_TRUE(sameLane(lanes.lit[i][k], expected.lit[i][k])) << where << " colour " << i << k;
+                  }
                 }
               }
+              EXPECT_TRUE(sameLane(lanes.invArea, expected.invArea)) << where;
+              if (flat) {
+                EXPECT_EQ(lanes.packed[j], expected.packed[j]) << where;
+              }
+              EXPECT_EQ(lanes.firstTag[j], expected.firstTag[j]) << where;
+              EXPECT_EQ(lanes.width[j], expected.width[j]) << where;
+              EXPECT_EQ(lanes.count[j], expected.count[j]) << where;
+              const int crosses =
+                  int(s.minX / kTileSize != s.maxX / kTileSize) | int(s.minY / kTileSize != s.maxY / kTileSize) << 1;
+              EXPECT_EQ(lanes.crosses[j], crosses) << where;
+              crossingSeen += crosses != 0;
             }
-            EXPECT_TRUE(sameLane(lanes.invArea, expected.invArea)) << where;
-            if (flat) {
-              EXPECT_EQ(lanes.packed[j], expected.packed[j]) << where;
-            }
-            EXPECT_EQ(lanes.firstTag[j], expected.firstTag[j]) << where;
-            EXPECT_EQ(lanes.width[j], expected.width[j]) << where;
-            EXPECT_EQ(lanes.count[j], expected.count[j]) << where;
-            const int crosses =
-                int(s.minX / kTileSize != s.maxX / kTileSize) | int(s.minY / kTileSize != s.maxY / kTileSize) << 1;
-            EXPECT_EQ(lanes.crosses[j], crosses) << where;
-            crossingSeen += crosses != 0;
           }
-        }
   }
   hwy::SetSupportedTargetsForTest(0);
   EXPECT_GE(targets, 2);
