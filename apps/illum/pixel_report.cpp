@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 namespace illum::cli {
 namespace {
@@ -40,15 +41,15 @@ Color4 printEquation(const Scene& scene, const Material& material, const Vec3& P
   const SurfaceGeometry surface{P, N, V};
   const Mat4 view = scene.camera.viewFromWorld();
   std::printf("  %-22s %9s %9s %9s\n", "", "R", "G", "B");
-  row("emission", Color3(material.emission));
-  row("global ambient", scene.lightModel.ambient * Color3(material.ambient));
-  LightingTerms total;
-  total.emission = Color3(material.emission);
-  total.ambient = scene.lightModel.ambient * Color3(material.ambient);
+  const LightingTerms unlit = evaluateTerms({}, scene.lightModel, material, model, surface);
+  row("emission", unlit.emission);
+  row("global ambient", unlit.ambient);
+  std::vector<EyeLight> lights;
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {
-    const EyeLight light = toEyeSpace(scene.lights[i], view);
+    const EyeLight& light = lights.emplace_back(toEyeSpace(scene.lights[i], view));
+    LightingTerms share;
     LightDetail d;
-    accumulateLight(total, light, material, model, surface, &d);
+    accumulateLight(share, light, material, model, surface, &d);
     const std::string name = "light " + std::to_string(i);
     std::printf("  %s: %s, L = %s", name.c_str(), d.positional ? "positional" : "directional", vec(d.L).c_str());
     if (d.positional) std::printf(", distance %.4f", double(d.distance));
@@ -70,7 +71,8 @@ Color4 printEquation(const Scene& scene, const Material& material, const Vec3& P
     if (model == LightingModel::BlinnPhong || model == LightingModel::Phong || model == LightingModel::CookTorrance)
       row(name + " specular", d.terms.specular);
   }
-  const Color4 lit = clampedColor(total, material);
+  // The sum as the renderer forms it (the lights' shares above may differ from it in the last bit).
+  const Color4 lit = clampedColor(evaluateTerms(lights, scene.lightModel, material, model, surface), material);
   row("total (clamped)", Color3(lit));
   return lit;
 }

@@ -163,7 +163,9 @@ struct LightDetail {
 };
 
 // One light's contribution (attenuation and spot applied) added into `terms`; with `detail`,
-// every intermediate is recorded there too.
+// every intermediate is recorded there too. For one light this is exactly evaluateTerms' sum; for
+// several, evaluateTerms sums the lights before the material's colours multiply them, which may
+// round the last bit differently from adding each light's contribution.
 void accumulateLight(LightingTerms& terms, const EyeLight& light, const Material& material,
                      LightingModel model, const SurfaceGeometry& surface, LightDetail* detail = nullptr);
 

@@ -1,8 +1,12 @@
 // How a GL material answers (OpenGL 2.1 §2.14.1), over lanes, and the one composition of the
 // equation:
 //   c = e_cm + a_cm·a_cs + Σ_i att_i · spot_i · [a_cm·a_cli + (n⊙VP)·d_cm·d_cli + f_i·(n⊙ĥ)^s·s_cm·s_cli]
-// per channel in eye space. The vertex stage, the per-pixel kernels, the reference pipeline,
-// `illum eval` and `--debug-pixel` all come here; the recorder (kRecord) writes every
+// per channel in eye space. The material's colours a_cm, d_cm and s_cm are common factors of every
+// light's bracket, so the lights are summed first and the material multiplies the sums once:
+//   c = e_cm + a_cm·a_cs + a_cm·Σ_i att_i·spot_i·a_cli + d_cm·Σ_i att_i·spot_i·(n⊙VP)·d_cli
+//         + s_cm·Σ_i att_i·spot_i·f_i·(n⊙ĥ)^s·s_cli
+// (nine multiplications fewer per light). The vertex stage, the per-pixel kernels, the reference
+// pipeline, `illum eval` and `--debug-pixel` all come here; the recorder (kRecord) writes every
 // intermediate of lane 0 without changing what is computed.
 
 #if defined(ILLUM_SHADING_GL_LIGHTING_INL_H_) == defined(HWY_TARGET_TOGGLE)
@@ -40,6 +44,29 @@ template <class V>
 struct TermsL {
   Vec3L<V> emission, ambient, diffuse, specular;
 };
+
+// The lights' colours as they reach the surface, summed over the lights before the material's
+// colours multiply them: Σ att·spot·a_cli, Σ att·spot·(n⊙VP)·d_cli and Σ att·spot·f·(n⊙ĥ)^s·s_cli
+// (the early models fill `diffuse` alone).
+template <class V>
+struct LightSumsL {
+  Vec3L<V> ambient, diffuse, specular;
+};
+
+template <class D, class V = hn::VFromD<D>>
+HWY_INLINE LightSumsL<V> NoLight(D d) {
+  const Vec3L<V> zero = Broadcast(d, Vec3(0));
+  return {zero, zero, zero};
+}
+
+// The material's colours times the lights' sums, added to `terms`.
+template <class D, class V = hn::VFromD<D>>
+HWY_INLINE void AddReflected(D d, TermsL<V>& terms, const LightSumsL<V>& sums, const Material& material,
+                             const MaterialColorsL<V>& colors) {
+  terms.ambient = terms.ambient + Mul(colors.ambient, sums.ambient);
+  terms.diffuse = terms.diffuse + Mul(colors.diffuse, sums.diffuse);
+  terms.specular = terms.specular + Mul(Broadcast(d, Vec3(material.specular)), sums.specular);
+}
 
 // The material's own colours at every lane: GL's ambient and diffuse, or for cook-torrance the
 // base colour in both (which vertex colours replace as they replace GL's two).
@@ -79,7 +106,7 @@ HWY_INLINE TermsL<V> TermsWithoutLights(D d, const LightModel& lightModel, const
 //   bouknight (Bouknight 1970): d_cm·d_cli·max(N·L, 0), Lambert's law from a light at infinity
 //     (no attenuation, no spot, no light ambient); the ambient term is the light model's.
 template <bool kRecord, class D, class V = hn::VFromD<D>>
-HWY_INLINE void AccumulateEarlyLight(D d, TermsL<V>& terms, const EyeLight& light, const MaterialColorsL<V>& colors,
+HWY_INLINE void AccumulateEarlyLight(D d, LightSumsL<V>& sums, const EyeLight& light, const MaterialColorsL<V>& colors,
                                      LightingModel model, const SurfaceL<V>& s, LightDetail* record) {
   const LightSample<V> ls = SampleLight(d, light, s.P, s.N);
   const V NoL = Dot(s.N, ls.L);
@@ -96,14 +123,15 @@ HWY_INLINE void AccumulateEarlyLight(D d, TermsL<V>& terms, const EyeLight& ligh
   } else {
     factor = Fd_LambertCosine(NoL);
   }
-  const Vec3L<V> diffuse = Mul(factor * colors.diffuse, Broadcast(d, light.diffuse));
-  if constexpr (kRecord) record->terms = {Vec3(0), Vec3(0), Lane0(diffuse), Vec3(0)};
-  terms.diffuse = terms.diffuse + diffuse;
+  const Vec3L<V> diffuse = factor * Broadcast(d, light.diffuse);
+  if constexpr (kRecord) record->terms = {Vec3(0), Vec3(0), Lane0(Mul(colors.diffuse, diffuse)), Vec3(0)};
+  sums.diffuse = sums.diffuse + diffuse;
 }
 
-// One light's bracket, attenuation and spot applied, added to `terms`.
+// One light's bracket without the material's colours, attenuation and spot applied, added to
+// `sums`; the recorder's terms are the light's share with the material's colours (`colors`).
 template <bool kRecord, class D, class V = hn::VFromD<D>>
-HWY_INLINE void AccumulateGlLight(D d, TermsL<V>& terms, const EyeLight& light, const Material& material,
+HWY_INLINE void AccumulateGlLight(D d, LightSumsL<V>& sums, const EyeLight& light, const Material& material,
                                   const MaterialColorsL<V>& colors, LightingModel model, const SurfaceL<V>& s,
                                   LightDetail* record) {
   // Where is the light.
@@ -118,8 +146,8 @@ HWY_INLINE void AccumulateGlLight(D d, TermsL<V>& terms, const EyeLight& light, 
 
   // How the surface answers: ambient, Lambert's diffuse and the model's specular lobe, the last
   // only where N·L > 0 (f_i = 0: no highlight without direct light).
-  const Vec3L<V> ambient = Mul(scale * colors.ambient, Broadcast(d, light.ambient));
-  const Vec3L<V> diffuse = Mul((scale * Fd_LambertCosine(NoL)) * colors.diffuse, Broadcast(d, light.diffuse));
+  const Vec3L<V> ambient = scale * Broadcast(d, light.ambient);
+  const Vec3L<V> diffuse = (scale * Fd_LambertCosine(NoL)) * Broadcast(d, light.diffuse);
   const auto lit = NoL > hn::Zero(d);
   V lobe = hn::Zero(d);
   if (model == LightingModel::BlinnPhong && (kRecord || !hn::AllFalse(d, lit))) {
@@ -140,29 +168,35 @@ HWY_INLINE void AccumulateGlLight(D d, TermsL<V>& terms, const EyeLight& light, 
     lobe = hn::IfThenElseZero(lit, Fs_Phong(d, RoV, material.shininess));
     if constexpr (kRecord) record->R = Lane0(R), record->RoV = hn::GetLane(RoV);
   }
-  const Vec3L<V> specular = Mul((scale * lobe) * Broadcast(d, Vec3(material.specular)), Broadcast(d, light.specular));
+  const Vec3L<V> specular = (scale * lobe) * Broadcast(d, light.specular);
   if constexpr (kRecord) {
     record->lobe = hn::GetLane(lobe);
-    if (hn::GetLane(scale) != 0) record->terms = {Vec3(0), Lane0(ambient), Lane0(diffuse), Lane0(specular)};
+    if (hn::GetLane(scale) != 0) {
+      TermsL<V> share{Broadcast(d, Vec3(0)), Broadcast(d, Vec3(0)), Broadcast(d, Vec3(0)), Broadcast(d, Vec3(0))};
+      AddReflected(d, share, {ambient, diffuse, specular}, material, colors);
+      record->terms = {Vec3(0), Lane0(share.ambient), Lane0(share.diffuse), Lane0(share.specular)};
+    }
   }
-  terms.ambient = terms.ambient + ambient;
-  terms.diffuse = terms.diffuse + diffuse;
-  terms.specular = terms.specular + specular;
+  sums.ambient = sums.ambient + ambient;
+  sums.diffuse = sums.diffuse + diffuse;
+  sums.specular = sums.specular + specular;
 }
 
-// One light's terms under the model: a GL material's answer, or a physically based one's
-// (`physical` is physicalOf(material), computed once by the caller).
+// One light under the model: a GL material's answer added to `sums` (AddReflected applies the
+// material's colours), or a physically based one's, whose colours vary with the light (Fresnel's
+// F), added to `terms` as it is (`physical` is physicalOf(material), computed once by the caller).
 template <bool kRecord, class D, class V = hn::VFromD<D>>
-HWY_INLINE void AccumulateLight(D d, TermsL<V>& terms, const EyeLight& light, const Material& material,
-                                const PhysicalMaterial& physical, const MaterialColorsL<V>& colors,
-                                LightingModel model, const SurfaceL<V>& s, LightDetail* record) {
+HWY_INLINE void AccumulateLight(D d, TermsL<V>& terms, LightSumsL<V>& sums, const EyeLight& light,
+                                const Material& material, const PhysicalMaterial& physical,
+                                const MaterialColorsL<V>& colors, LightingModel model, const SurfaceL<V>& s,
+                                LightDetail* record) {
   if (model == LightingModel::CookTorrance)
     AccumulateCookTorrance<kRecord>(d, terms.ambient, terms.diffuse, terms.specular, light, physical, colors.diffuse,
                                     s.P, s.N, s.toViewer, record);
   else if (model == LightingModel::Wylie || model == LightingModel::Bouknight)
-    AccumulateEarlyLight<kRecord>(d, terms, light, colors, model, s, record);
+    AccumulateEarlyLight<kRecord>(d, sums, light, colors, model, s, record);
   else
-    AccumulateGlLight<kRecord>(d, terms, light, material, colors, model, s, record);
+    AccumulateGlLight<kRecord>(d, sums, light, material, colors, model, s, record);
 }
 
 // The whole equation at each lane: emission, global ambient, then every light in order.
@@ -172,8 +206,10 @@ HWY_INLINE TermsL<V> ShadeEquation(D d, std::span<const EyeLight> lights, const 
                                    const SurfaceL<V>& s) {
   TermsL<V> terms = TermsWithoutLights(d, lightModel, material, colors, model);
   const PhysicalMaterial physical = model == LightingModel::CookTorrance ? physicalOf(material) : PhysicalMaterial{};
+  LightSumsL<V> sums = NoLight(d);
   for (const EyeLight& light : lights)
-    AccumulateLight<false>(d, terms, light, material, physical, colors, model, s, nullptr);
+    AccumulateLight<false>(d, terms, sums, light, material, physical, colors, model, s, nullptr);
+  if (model != LightingModel::CookTorrance && !lights.empty()) AddReflected(d, terms, sums, material, colors);
   return terms;
 }
 

@@ -254,6 +254,55 @@ TEST(Equation, SeveralColouredLightsAddPerChannel) {
   expectColor(t.diffuse, {1, 0, 0.5});
 }
 
+// The material's colours multiply the lights' sums (gl_lighting-inl.h): the same equation as
+// Σ_i att_i·spot_i·[a_cm·a_cli + ...], light by light. With one light the two are the same
+// numbers exactly (what `illum eval` reports is what the renderer computes); with several, each
+// light's share (accumulateLight, as --debug-pixel lists them) adds up to the total to rounding.
+TEST(Equation, MaterialColoursMultiplyTheLightsSums) {
+  Material m;
+  m.ambient = {0.3, 0.25, 0.2, 1};
+  m.diffuse = {0.2, 0.8, 0.5, 1};
+  m.specular = {0.8, 0.7, 0.6, 1};
+  m.shininess = 28;
+  LightModel lm;
+  lm.ambient = Color3(0.1);
+  std::vector<EyeLight> lights;
+  for (int i = 0; i < 3; ++i) {
+    EyeLight l;
+    l.position = {Real(2 - 2 * i), Real(1 + i), 3, 1};
+    l.ambient = Color3(Real(0.02 * (i + 1)));
+    l.diffuse = {Real(0.6 - 0.1 * i), 0.54, Real(0.18 + 0.2 * i)};
+    l.specular = Color3(0.7);
+    l.attenuation = {1, 0.05, 0.01};
+    lights.push_back(l);
+  }
+  const SurfaceGeometry s{Vec3(0.1, -0.2, 0.3), glm::normalize(Vec3(0.2, 0.3, 1)), Vec3(0, 0, 1)};
+  for (const LightingModel model : {LightingModel::Lambert, LightingModel::Phong, LightingModel::BlinnPhong}) {
+    LightingTerms shares = evaluateTerms({}, lm, m, model, s);
+    for (const EyeLight& l : lights) {
+      LightingTerms one = evaluateTerms({}, lm, m, model, s);
+      accumulateLight(one, l, m, model, s);
+      const LightingTerms whole = evaluateTerms({&l, 1}, lm, m, model, s);
+      EXPECT_EQ(one.ambient, whole.ambient);
+      EXPECT_EQ(one.diffuse, whole.diffuse);
+      EXPECT_EQ(one.specular, whole.specular);
+      accumulateLight(shares, l, m, model, s);
+    }
+    const LightingTerms sum = evaluateTerms(lights, lm, m, model, s);
+    expectColor(sum.ambient, shares.ambient, Real(1e-6));
+    expectColor(sum.diffuse, shares.diffuse, Real(1e-6));
+    expectColor(sum.specular, shares.specular, Real(1e-6));
+    // The closed form of the ambient channel: a_cm·a_cs + a_cm·Σ att_i·a_cli.
+    Real lightAmbient = 0;
+    for (const EyeLight& l : lights) {
+      const Real d = glm::length(Vec3(l.position) - s.position);
+      lightAmbient += l.ambient.r / (1 + Real(0.05) * d + Real(0.01) * d * d);
+    }
+    EXPECT_NEAR(sum.ambient.r, m.ambient.r * (Real(0.1) + lightAmbient), Real(1e-6));
+    if (model != LightingModel::Lambert) EXPECT_GT(sum.specular.g, 0);  // a highlight to compare
+  }
+}
+
 TEST(Lights, TransformedToEyeSpaceLikeGlLight) {
   // A view that turns the world 90° about Y and moves it 5 units away.
   Mat4 view = glm::translate(Mat4(1), Vec3(0, 0, -5));

@@ -235,15 +235,18 @@ void accumulateLight(LightingTerms& terms, const EyeLight& light, const Material
   const HWY_NAMESPACE::TermsL<one::V> zero{one::lanes(Vec3(0)), one::lanes(Vec3(0)), one::lanes(Vec3(0)),
                                                 one::lanes(Vec3(0))};
   auto t = zero;
+  auto sums = HWY_NAMESPACE::NoLight(one::d);
   const PhysicalMaterial physical = model == LightingModel::CookTorrance ? physicalOf(material) : PhysicalMaterial{};
+  const auto colors = one::colors(material, model);
   if (detail) {
     *detail = LightDetail{};
-    HWY_NAMESPACE::AccumulateLight<true>(one::d, t, light, material, physical, one::colors(material, model), model,
+    HWY_NAMESPACE::AccumulateLight<true>(one::d, t, sums, light, material, physical, colors, model,
                                          one::surface(surface), detail);
   } else {
-    HWY_NAMESPACE::AccumulateLight<false>(one::d, t, light, material, physical, one::colors(material, model), model,
+    HWY_NAMESPACE::AccumulateLight<false>(one::d, t, sums, light, material, physical, colors, model,
                                           one::surface(surface), nullptr);
   }
+  if (model != LightingModel::CookTorrance) HWY_NAMESPACE::AddReflected(one::d, t, sums, material, colors);
   terms.ambient += HWY_NAMESPACE::Lane0(t.ambient);
   terms.diffuse += HWY_NAMESPACE::Lane0(t.diffuse);
   terms.specular += HWY_NAMESPACE::Lane0(t.specular);
