@@ -68,26 +68,27 @@ std::size_t CoverGroups(const TinyBatchLanes& b, std::uint32_t members, std::uin
       return hn::IndicesFromVec(df, hn::BitCast(di, hn::ShiftRight<kOffsetBits>(v)));
     };
     const VU offsetMask = hn::Set(du, kOffsetMask), columnMask = hn::Set(du, kTileSize - 1);
-    // First the coverage of every slot; the covered ones' edge values and slots are kept, in
-    // order, for the rest (fewer than half of a dense mesh's slots are covered).
+    // The edge values of a vector of slots: c·A + r·B from the first pixel's.
+    const auto edgeValues = [&](VU v, const auto& of, VF (&E)[3]) {
+      const VU offset = hn::And(v, offsetMask);
+      const VF c = hn::ConvertTo(df, hn::BitCast(di, hn::And(offset, columnMask)));
+      const VF r = hn::ConvertTo(df, hn::BitCast(di, hn::ShiftRight<kTileShift>(offset)));
+      for (int i = 0; i < 3; ++i) E[i] = of(b.edge[i]) + hn::MulAdd(c, of(b.stepX[i]), r * of(b.stepY[i]));
+    };
+    // First the coverage of every slot; the covered ones' slots are kept, in order, for the rest
+    // (fewer than half of a dense mesh's slots are covered, and working their edge values out
+    // again costs less than keeping every slot's).
     std::uint64_t inside[kSlots / 64 + 1] = {};  // bit s % 64 of word s / 64: slot s is covered
-    HWY_ALIGN float keptE[3][kSlots + kGroupMax];
     HWY_ALIGN std::uint32_t keptSlot[kSlots + kGroupMax];
     int kept = 0;
     for (int s0 = 0; s0 < slots; s0 += group) {
       const VU v = hn::Load(du, slot + s0);
       const auto lanesOf = triangleOf(v);
       const auto of = [&](const float* values) { return hn::TableLookupLanes(hn::LoadU(df, values + g), lanesOf); };
-      const VU offset = hn::And(v, offsetMask);
-      const VF c = hn::ConvertTo(df, hn::BitCast(di, hn::And(offset, columnMask)));
-      const VF r = hn::ConvertTo(df, hn::BitCast(di, hn::ShiftRight<kTileShift>(offset)));
       VF E[3];
+      edgeValues(v, of, E);
       auto covers = hn::FirstN(df, std::size_t(slots - s0));
-      for (int i = 0; i < 3; ++i) {
-        E[i] = of(b.edge[i]) + hn::MulAdd(c, of(b.stepX[i]), r * of(b.stepY[i]));
-        covers = hn::And(covers, E[i] + of(b.bias[i]) >= zero);
-      }
-      for (int i = 0; i < 3; ++i) hn::StoreU(hn::Compress(E[i], covers), df, keptE[i] + kept);
+      for (int i = 0; i < 3; ++i) covers = hn::And(covers, E[i] + of(b.bias[i]) >= zero);
       hn::StoreU(hn::Compress(v, hn::RebindMask(du, covers)), du, keptSlot + kept);
       kept += int(hn::CountTrue(df, covers));
       std::uint8_t bits[8] = {};
@@ -96,8 +97,7 @@ std::size_t CoverGroups(const TinyBatchLanes& b, std::uint32_t members, std::uin
       for (int k = 0; k < (group + 7) / 8; ++k) word |= std::uint64_t(bits[k]) << (8 * k);
       inside[s0 / 64] |= word << (s0 % 64);  // a vector's slots never straddle two words
     }
-    for (int k = kept; k < kept + group; ++k)  // the last vector's rest
-      keptSlot[k] = 0, keptE[0][k] = keptE[1][k] = keptE[2][k] = 0;
+    for (int k = kept; k < kept + group; ++k) keptSlot[k] = 0;  // the last vector's rest
     // Then depth and the rest of the covered pixels.
     for (int k0 = 0; k0 < kept; k0 += group) {
       const VU v = hn::Load(du, keptSlot + k0);
@@ -107,9 +107,10 @@ std::size_t CoverGroups(const TinyBatchLanes& b, std::uint32_t members, std::uin
         if constexpr (std::is_same_v<std::remove_cv_t<std::remove_pointer_t<decltype(values)>>, float>) return value;
         else return hn::BitCast(du, value);  // the same lanes, as bits
       };
+      VF E[3];
+      edgeValues(v, of, E);
       const VF invArea = of(b.invArea);
-      const VF l0 = hn::Load(df, keptE[0] + k0) * invArea, l1 = hn::Load(df, keptE[1] + k0) * invArea,
-               l2 = hn::Load(df, keptE[2] + k0) * invArea;
+      const VF l0 = E[0] * invArea, l1 = E[1] * invArea, l2 = E[2] * invArea;
       const VF z = l0 * of(b.z[0]) + l1 * of(b.z[1]) + l2 * of(b.z[2]);
       const VU tag = hn::Add(of(b.firstTag), hn::And(v, offsetMask));
       emit(n + std::size_t(k0), std::min(group, kept - k0), of, l0, l1, l2, z, tag);
