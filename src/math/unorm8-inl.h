@@ -20,19 +20,16 @@ namespace hn = hwy::HWY_NAMESPACE;
 
 // One channel: ⌊c·255 + ½⌋ of c clamped to [0, 1], as 32-bit lanes.
 #if HWY_NATIVE_FMA
-// q = fl(c·255 + ½) rounds the exact sum, which lies in [k, k + 1) for the answer k, to a float in
-// [k, k + 1] (rounding is monotonic and integers up to 256 are floats), so n = ⌊q⌋ is k or k + 1; it
-// is k + 1 exactly when c·255 + ½ − n < 0, whose sign one fused multiply-add gets right (½ − n is
-// exact, and a single rounding keeps the sign of a result that is not zero).
+// The exact product c·255 is never a tie k + ½ except at c = ½ (c = m/2^e with m odd gives
+// 255·m·2^(1−e) = 2k + 1 only for e = 1, m = 1), where ties to even also gives 128: so rounding it
+// to nearest, ties to even, is ⌊c·255 + ½⌋. One fused multiply-add rounds the exact c·255 + 2^23 to
+// the float grid of spacing 1 there, 2^23 + k, whose low mantissa bits are k.
 template <class DF, class V = hn::VFromD<DF>>
 HWY_INLINE hn::VFromD<hn::Rebind<std::uint32_t, DF>> Unorm8(DF df, V c) {
-  const hn::Rebind<std::int32_t, DF> di;
-  const V scale = hn::Set(df, 255.0f), half = hn::Set(df, 0.5f);
+  const hn::Rebind<std::uint32_t, DF> du;
   c = hn::Min(hn::Max(c, hn::Zero(df)), hn::Set(df, 1.0f));
-  const V n = hn::Floor(hn::MulAdd(c, scale, half));
-  const auto over = hn::MulAdd(c, scale, half - n) < hn::Zero(df);
-  const auto k = hn::ConvertTo(di, n) + hn::BitCast(di, hn::VecFromMask(df, over));  // a true mask is −1
-  return hn::BitCast(hn::Rebind<std::uint32_t, DF>(), k);
+  const V shifted = hn::MulAdd(c, hn::Set(df, 255.0f), hn::Set(df, 8388608.0f));  // 2^23 + k
+  return hn::And(hn::BitCast(du, shifted), hn::Set(du, 0xFFu));
 }
 #else
 // Without a fused multiply-add (SSE4 and older, the scalar targets): c·255 and the half are exact
