@@ -59,6 +59,12 @@ HWY_INLINE LightSumsL<V> NoLight(D d) {
   return {zero, zero, zero};
 }
 
+template <class D, class V = hn::VFromD<D>>
+HWY_INLINE TermsL<V> NoTerms(D d) {
+  const Vec3L<V> zero = Broadcast(d, Vec3(0));
+  return {zero, zero, zero, zero};
+}
+
 // The material's colours times the lights' sums, added to `terms`.
 template <class D, class V = hn::VFromD<D>>
 HWY_INLINE void AddReflected(D d, TermsL<V>& terms, const LightSumsL<V>& sums, const Material& material,
@@ -172,7 +178,7 @@ HWY_INLINE void AccumulateGlLight(D d, LightSumsL<V>& sums, const EyeLight& ligh
   if constexpr (kRecord) {
     record->lobe = hn::GetLane(lobe);
     if (hn::GetLane(scale) != 0) {
-      TermsL<V> share{Broadcast(d, Vec3(0)), Broadcast(d, Vec3(0)), Broadcast(d, Vec3(0)), Broadcast(d, Vec3(0))};
+      TermsL<V> share = NoTerms(d);
       AddReflected(d, share, {ambient, diffuse, specular}, material, colors);
       record->terms = {Vec3(0), Lane0(share.ambient), Lane0(share.diffuse), Lane0(share.specular)};
     }

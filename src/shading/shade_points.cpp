@@ -232,9 +232,7 @@ HWY_NAMESPACE::MaterialColorsL<V> colors(const Material& m, LightingModel model)
 
 void accumulateLight(LightingTerms& terms, const EyeLight& light, const Material& material, LightingModel model,
                      const SurfaceGeometry& surface, LightDetail* detail) {
-  const HWY_NAMESPACE::TermsL<one::V> zero{one::lanes(Vec3(0)), one::lanes(Vec3(0)), one::lanes(Vec3(0)),
-                                                one::lanes(Vec3(0))};
-  auto t = zero;
+  auto t = HWY_NAMESPACE::NoTerms(one::d);
   auto sums = HWY_NAMESPACE::NoLight(one::d);
   const PhysicalMaterial physical = model == LightingModel::CookTorrance ? physicalOf(material) : PhysicalMaterial{};
   const auto colors = one::colors(material, model);
