@@ -116,7 +116,9 @@ std::size_t setupTriangles(const FrameContext& frame, const Object& object, std:
         }
         forEachTilePiece(r.setup, [&](const TriangleSetup& piece) {
           const int tile = bins.tileOf(piece.minX, piece.minY);
-          if (frame.shading == Shading::Phong) {
+          if (frame.shading == Shading::Phong && !grouping && TinyBatch<TinySurface>::joins(piece, nullptr)) {
+            surfaces->add(piece, s, bins.recordsIn(tile), tile);
+          } else if (frame.shading == Shading::Phong) {
             surfaces->flush();  // its pixels come first
             bins.surfaces.commit(coverTinySurface(piece, s, bins.recordsIn(tile), bins.surfaces.room(kTinyRoom)), tile);
           } else if (!grouping && TinyBatch<TinyFragment>::joins(piece, flat ? nullptr : lit)) {

@@ -444,6 +444,12 @@ void setTinyLanes(TinyBatchLanes& b, int j, const TriangleSetup& t, const Color4
   b.crosses[j] = 0;
 }
 
+void setTinySurfaceLanes(TinyBatchLanes& b, int j, const SurfaceVertices& v) {
+  for (int k = 0; k < 3; ++k)
+    for (int c = 0; c < 3; ++c) b.position[c][k][j] = v.position[k][c], b.normal[c][k][j] = v.normal[k][c];
+  b.negate[j] = v.negate ? 1.0f : 0.0f;
+}
+
 template <class Pixel>
 void TinyBatch<Pixel>::add(const TriangleSetup& t, const Color4* lit, std::uint32_t packed, std::uint32_t recordsBefore,
                     int tile) {

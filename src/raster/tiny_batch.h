@@ -12,6 +12,7 @@
 #if !ILLUM_USE_DOUBLE
 #include "raster/bin.h"
 #include "raster/setup.h"
+#include "raster/tile_raster.h"
 #include "raster/tiny_fragment.h"
 #include "raster/vertex.h"
 
@@ -47,6 +48,9 @@ struct TinyBatchLanes {
 // tile's records.
 void setTinyLanes(TinyBatchLanes& lanes, int j, const TriangleSetup& t, const Color4* lit, std::uint32_t packed,
                   std::uint32_t recordsBefore);
+
+// Lane j's surface, for Phong's tiny triangle `v` (its vertices counter-clockwise, no colours).
+void setTinySurfaceLanes(TinyBatchLanes& lanes, int j, const SurfaceVertices& v);
 
 // Covers the batch's triangles named by the bits of `members` (bit j: triangle j): their covered
 // pixels go to `out` (room for kTinyBatchRoom), triangle after triangle, each triangle's in rows
@@ -85,8 +89,7 @@ void setupTinyGroup(const TinyGroupSource& source, int count, TinyBatchLanes& la
 
 // Gathers the tiny triangles of one setup run and hands their pixels (TinyFragment, or Phong's
 // TinySurface) to the bins, in the order they came. Only float-exact triangles
-// (TriangleSetup::floatExact) of opaque colours join: one at a time (add, in one tile; fragments
-// only) or a group set up at once (setGroupUp, then take each fast one in order, in one tile or
+// (TriangleSetup::floatExact) of opaque colours join: one at a time (add, in one tile) or a group set up at once (setGroupUp, then take each fast one in order, in one tile or
 // across up to four). The bins have `tilesX` tiles to a row; a surface's pixels name `owner`.
 template <class Pixel>
 class TinyBatch {
@@ -101,6 +104,11 @@ class TinyBatch {
   }
   // Adds a triangle whose bounds lie in `tile` (setTinyLanes).
   void add(const TriangleSetup& t, const Color4* lit, std::uint32_t packed, std::uint32_t recordsBefore, int tile);
+  // The same for Phong's surface (a batch of TinySurface, whose owner is v.owner).
+  void add(const TriangleSetup& t, const SurfaceVertices& v, std::uint32_t recordsBefore, int tile) {
+    setTinySurfaceLanes(lanes_, size_, v);
+    add(t, nullptr, 0, recordsBefore, tile);
+  }
 
   // Sets the next `count` (≤ tinyGroupCapacity()) triangles up at once (setupTinyGroup); the batch
   // must be empty.

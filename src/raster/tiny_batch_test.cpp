@@ -105,6 +105,43 @@ TEST(TinyBatch, WritesWhatCoveringOneByOneWritesOnEveryTarget) {
   EXPECT_GE(targets, 2);
 }
 
+// Phong's tiny triangles added one at a time: the surface batch writes what coverTinySurface
+// writes, positions and renormalized normals (some of zero length), negated on some.
+TEST(TinyBatch, SurfacesAddedOneByOneWriteWhatCoveringEachWrites) {
+  const std::vector<Tiny> triangles = randomTinyTriangles(203);
+  std::mt19937 rng(29);
+  std::uniform_real_distribution<Real> signedUnit(-1, 1);
+  std::vector<SurfaceVertices> surfaces(triangles.size());
+  for (std::size_t i = 0; i < surfaces.size(); ++i) {
+    SurfaceVertices& v = surfaces[i];
+    for (int k = 0; k < 3; ++k) {
+      v.position[k] = {signedUnit(rng), signedUnit(rng), signedUnit(rng) - 2};
+      v.normal[k] = i % 10 == 0 ? Vec3(0) : Vec3(signedUnit(rng), signedUnit(rng), signedUnit(rng));
+    }
+    v.negate = i % 3 == 1;
+    v.owner = 9;
+  }
+  int targets = 0;
+  for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+    hwy::SetSupportedTargetsForTest(target);
+    ++targets;
+    TinyRuns<TinySurface> single, batched;
+    TinyBatch batch(batched, false, 4, 9);
+    std::size_t covered = 0;
+    for (std::size_t i = 0; i < triangles.size(); ++i) {
+      const Tiny& t = triangles[i];
+      const std::size_t n = coverTinySurface(t.setup, surfaces[i], t.recordsBefore, single.room(kTinyRoom));
+      single.commit(n, t.tile);
+      covered += n;
+      batch.add(t.setup, surfaces[i], t.recordsBefore, t.tile);
+    }
+    batch.flush();
+    ASSERT_GT(covered, triangles.size());
+    expectSameByTile(single, batched, hwy::TargetName(target));
+  }
+  hwy::SetSupportedTargetsForTest(0);
+  EXPECT_GE(targets, 2);
+}
 
 // setupTinyGroup sets up on every target what setupTriangle and setTinyLanes set up one by one:
 // the same verdicts (fast: inside, tiny, float-exact, opaque; empty: inside, no pixel centre) and
