@@ -89,8 +89,9 @@ void setupTinyGroup(const TinyGroupSource& source, int count, TinyBatchLanes& la
 
 // Gathers the tiny triangles of one setup run and hands their pixels (TinyFragment, or Phong's
 // TinySurface) to the bins, in the order they came. Only float-exact triangles
-// (TriangleSetup::floatExact) of opaque colours join: one at a time (add, in one tile) or a group set up at once (setGroupUp, then take each fast one in order, in one tile or
-// across up to four). The bins have `tilesX` tiles to a row; a surface's pixels name `owner`.
+// (TriangleSetup::floatExact) of opaque colours join: one at a time (add, in one tile) or a group
+// set up at once (setGroupUp, then take each fast one in order, in one tile or across up to four).
+// The bins have `tilesX` tiles to a row; a surface's pixels name `owner`.
 template <class Pixel>
 class TinyBatch {
  public:
@@ -104,7 +105,8 @@ class TinyBatch {
   }
   // Adds a triangle whose bounds lie in `tile` (setTinyLanes).
   void add(const TriangleSetup& t, const Color4* lit, std::uint32_t packed, std::uint32_t recordsBefore, int tile);
-  // The same for Phong's surface (a batch of TinySurface, whose owner is v.owner).
+  // The same for Phong's surface (a batch of TinySurface; its pixels name the batch's owner, which
+  // must be v.owner).
   void add(const TriangleSetup& t, const SurfaceVertices& v, std::uint32_t recordsBefore, int tile) {
     setTinySurfaceLanes(lanes_, size_, v);
     add(t, nullptr, 0, recordsBefore, tile);

@@ -59,6 +59,7 @@ HWY_INLINE LightSumsL<V> NoLight(D d) {
   return {zero, zero, zero};
 }
 
+// Terms of nothing yet: what a light's share or a sum of shares starts from.
 template <class D, class V = hn::VFromD<D>>
 HWY_INLINE TermsL<V> NoTerms(D d) {
   const Vec3L<V> zero = Broadcast(d, Vec3(0));
