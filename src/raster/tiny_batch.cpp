@@ -181,7 +181,8 @@ std::size_t CoverTinySurfaceBatch(const TinyBatchLanes& b, std::uint32_t members
 
 // The rows SetupTinyGroup works from, gathered from the vertices a field at a time over all the
 // group's triangles (one lane each): window x and y (their low 32 bits: inside the clip volume
-// they are below 2^23, clip.h), depth, 1/w, the outcodes and, with `colors`, the lit colours.
+// they are below 2^23, clip.h) and whether all three outcodes are 0, as doubles for the setup's
+// integer arithmetic; depth, 1/w and, with `colors`, the lit colours, as the floats they are.
 // Lanes from `count` on are zero and outside. A vertex's fields are found at its index times
 // its size in 32-bit words, which fits an int32 up to kGatherableVertices vertices.
 constexpr std::size_t kVertexWords = sizeof(ShadedVertex) / 4;
@@ -190,15 +191,15 @@ static_assert(sizeof(ShadedVertex) % 4 == 0 && std::endian::native == std::endia
 
 template <int kN>
 HWY_INLINE void GatherVertexRows(const TinyGroupSource& src, int count, bool colors, double (&x)[3][kN],
-                                 double (&y)[3][kN], double (&z)[3][kN], double (&invW)[3][kN], double (&inside)[kN],
-                                 double (&front)[3][4][kN], double (&back)[3][4][kN]) {
+                                 double (&y)[3][kN], double (&inside)[kN], float (&z)[3][kN], float (&invW)[3][kN],
+                                 float (&front)[3][4][kN], float (&back)[3][4][kN]) {
   const hn::ScalableTag<std::int32_t> di;
   const hn::RebindToUnsigned<decltype(di)> du;
   const hn::RebindToFloat<decltype(di)> df;
   const hn::ScalableTag<double> dd;
   const hn::Rebind<std::int32_t, decltype(dd)> dih;
-  const hn::Rebind<float, decltype(dd)> dfh;
   using VI = hn::VFromD<decltype(di)>;
+  static_assert(hn::MaxLanes(df) <= kN);
   // The group's indices, past `count` vertex 0's (never read past the source's triangles).
   HWY_ALIGN std::uint32_t index[3 * hn::MaxLanes(du)] = {};
   std::memcpy(index, src.indices, 3 * std::size_t(count) * sizeof(std::uint32_t));
@@ -208,18 +209,15 @@ HWY_INLINE void GatherVertexRows(const TinyGroupSource& src, int count, bool col
   const auto* words = reinterpret_cast<const std::int32_t*>(src.vertices);
   const auto* floats = reinterpret_cast<const float*>(src.vertices);
   const auto wordOf = [](std::size_t offset) { return std::ptrdiff_t(offset / 4); };
-  // A row of doubles from a vector of int32 or float lanes.
+  // A row of doubles from a vector of int32 lanes; a row of floats.
   HWY_ALIGN std::int32_t wordsOut[hn::MaxLanes(di)];
-  HWY_ALIGN float floatsOut[hn::MaxLanes(df)];
   const auto rowOfWords = [&](VI v, double* row) {
     hn::Store(hn::IfThenElseZero(valid, v), di, wordsOut);
     for (int j = 0; j < int(hn::Lanes(di)); j += int(hn::Lanes(dd)))
       hn::Store(hn::PromoteTo(dd, hn::Load(dih, wordsOut + j)), dd, row + j);
   };
-  const auto rowOfFloats = [&](hn::VFromD<decltype(df)> v, double* row) {
-    hn::Store(hn::IfThenElseZero(hn::RebindMask(df, valid), v), df, floatsOut);
-    for (int j = 0; j < int(hn::Lanes(df)); j += int(hn::Lanes(dd)))
-      hn::Store(hn::PromoteTo(dd, hn::Load(dfh, floatsOut + j)), dd, row + j);
+  const auto rowOfFloats = [&](hn::VFromD<decltype(df)> v, float* row) {
+    hn::Store(hn::IfThenElseZero(hn::RebindMask(df, valid), v), df, row);
   };
   VI codes = hn::Zero(di);
   for (int k = 0; k < 3; ++k) {
@@ -237,6 +235,19 @@ HWY_INLINE void GatherVertexRows(const TinyGroupSource& src, int count, bool col
       for (int c = 0; c < 4; ++c) rowOfFloats(real(offsetof(ShadedVertex, back) + 4 * std::size_t(c)), back[k][c]);
   }
   rowOfWords(hn::IfThenElseZero(codes == hn::Zero(di), hn::Set(di, 1)), inside);
+}
+
+// Bit j: lane j of the mask `m` (of at most 16 lanes); and back.
+template <class D, class M>
+HWY_INLINE std::uint32_t MaskBits(D d, M m) {
+  std::uint8_t bits[8] = {};
+  hn::StoreMaskBits(d, m, bits);
+  return std::uint32_t(bits[0]) | std::uint32_t(bits[1]) << 8;
+}
+template <class D>
+HWY_INLINE auto MaskFromBits(D d, std::uint32_t bits) {
+  const std::uint8_t bytes[8] = {std::uint8_t(bits), std::uint8_t(bits >> 8)};
+  return hn::LoadMaskBits(d, bytes);
 }
 
 // setupTriangle (setup.cpp) and TinyBatch::add over lanes, one triangle per double lane: the
@@ -257,11 +268,11 @@ void SetupTinyGroup(const TinyGroupSource& src, int count, TinyBatchLanes& b, in
   using MD = decltype(hn::FirstN(dd, 0));
   const int lanes = int(hn::Lanes(dd));
   // The triangles' vertices as rows of lanes (vertex k of triangle j at [k][j]).
-  HWY_ALIGN double x[3][kN], y[3][kN], z[3][kN], invW[3][kN], inside[kN];
-  HWY_ALIGN double front[3][4][kN], back[3][4][kN];
+  HWY_ALIGN double x[3][kN], y[3][kN], inside[kN];
+  HWY_ALIGN float z[3][kN], invW[3][kN], front[3][4][kN], back[3][4][kN];
   const bool colors = !src.surface && !src.flat;  // lit per pixel, or one colour per triangle (below)
   if (src.vertexCount > 0 && src.vertexCount <= kGatherableVertices) {
-    GatherVertexRows(src, count, colors, x, y, z, invW, inside, front, back);
+    GatherVertexRows(src, count, colors, x, y, inside, z, invW, front, back);
   } else {
     for (int j = 0; j < count; ++j) {
       unsigned codes = 0;
@@ -288,8 +299,8 @@ void SetupTinyGroup(const TinyGroupSource& src, int count, TinyBatchLanes& b, in
   const VD zero = hn::Zero(dd), one = hn::Set(dd, 1.0);
   const VD sub = hn::Set(dd, double(kSubpixelOne)), invSub = hn::Set(dd, 1.0 / double(kSubpixelOne));
   const VD tileSize = hn::Set(dd, double(kTileSize)), invTile = hn::Set(dd, 1.0 / double(kTileSize));
-  HWY_ALIGN std::int32_t tile[kN], width[kN], pixels[kN], pixel[kN], backFace[kN], crosses[kN], clockwise[kN];
-  std::uint32_t fast = 0, empty = 0;
+  HWY_ALIGN std::int32_t tile[kN], width[kN], pixels[kN], pixel[kN], crosses[kN];
+  std::uint32_t fast = 0, empty = 0, clockwiseBits = 0, backBits = 0;
   for (int j0 = 0; j0 < count; j0 += lanes) {
     VD X[3], Y[3];
     for (int k = 0; k < 3; ++k) X[k] = hn::Load(dd, x[k] + j0), Y[k] = hn::Load(dd, y[k] + j0);
@@ -325,38 +336,14 @@ void SetupTinyGroup(const TinyGroupSource& src, int count, TinyBatchLanes& b, in
     hn::Store(hn::Set(df, 1.0f) / hn::DemoteTo(df, hn::Abs(area2)), df, b.invArea + j0);
     // The lit side: the back of a clockwise triangle under two-sided lighting.
     const MD backSide = src.twoSided ? hn::Not(area2 > zero) : hn::FirstN(dd, 0);
-    MD opaque = hn::FirstN(dd, std::size_t(lanes));
-    for (int k = 0; k < 3; ++k) {
-      const int from = k == 0 ? 0 : (k == 1 ? 2 : 1);  // vertex k of the swapped order
-      const auto pick = [&](const double* rows) {
-        const VD kept = hn::Load(dd, rows + k * kN + j0);
-        const VD other = hn::Load(dd, rows + from * kN + j0);
-        return k == 0 ? kept : hn::IfThenElse(swapped, other, kept);
-      };
-      hn::Store(hn::DemoteTo(df, pick(&z[0][0])), df, b.z[k] + j0);
-      hn::Store(hn::DemoteTo(df, pick(&invW[0][0])), df, b.invW[k] + j0);
-      if (!colors) continue;
-      for (int c = 0; c < 4; ++c) {
-        const auto channel = [&](const double (*rows)[4][kN]) {
-          const VD kept = hn::Load(dd, rows[k][c] + j0);
-          const VD other = hn::Load(dd, rows[from][c] + j0);
-          return k == 0 ? kept : hn::IfThenElse(swapped, other, kept);
-        };
-        const VD value = src.twoSided ? hn::IfThenElse(backSide, channel(back), channel(front)) : channel(front);
-        if (c < 3) hn::Store(hn::DemoteTo(df, value), df, b.lit[c][k] + j0);
-        else opaque = hn::And(opaque, value == one);
-      }
-    }
-    const MD isFast = hn::And(hn::And(in, covers), hn::And(tiny, opaque));
+    const MD isFast = hn::And(hn::And(in, covers), tiny);  // and opaque (below)
     const MD isEmpty = hn::AndNot(covers, in);
-    const auto bitsOf = [&](MD m) {
-      std::uint8_t bits[8] = {};
-      hn::StoreMaskBits(dd, m, bits);
-      return (std::uint32_t(bits[0]) | std::uint32_t(bits[1]) << 8) << j0;
-    };
+    const auto bitsOf = [&](MD m) { return MaskBits(dd, m) << j0; };
     const std::uint32_t valid = (1u << std::min(lanes, count - j0)) - 1;
     fast |= bitsOf(isFast) & (valid << j0);
     empty |= bitsOf(isEmpty) & (valid << j0);
+    clockwiseBits |= bitsOf(swapped) & (valid << j0);
+    backBits |= bitsOf(backSide) & (valid << j0);
     const VD tileX = hn::Floor(minX * invTile), tileY = hn::Floor(minY * invTile);
     const VD crossesX = hn::IfThenElseZero(hn::Floor(maxX * invTile) != tileX, one);
     const VD crossesY = hn::IfThenElseZero(hn::Floor(maxY * invTile) != tileY, hn::Set(dd, 2.0));
@@ -365,8 +352,30 @@ void SetupTinyGroup(const TinyGroupSource& src, int count, TinyBatchLanes& b, in
     hn::Store(hn::DemoteTo(di, (minY - tileY * tileSize) * tileSize + (minX - tileX * tileSize)), di, pixel + j0);
     hn::Store(hn::DemoteTo(di, hn::IfThenElseZero(isFast, w)), di, width + j0);
     hn::Store(hn::DemoteTo(di, hn::IfThenElseZero(isFast, w * h)), di, pixels + j0);
-    hn::Store(hn::DemoteTo(di, hn::IfThenElseZero(backSide, one)), di, backFace + j0);
-    hn::Store(hn::DemoteTo(di, hn::IfThenElseZero(swapped, one)), di, clockwise + j0);
+  }
+  // Depth, 1/w and the colours of the vertices in counter-clockwise order, the colours of the lit
+  // side, in float lanes as they were gathered; a colour that is not opaque leaves the fast path.
+  const hn::ScalableTag<float> dv;
+  for (int j0 = 0; j0 < count; j0 += int(hn::Lanes(dv))) {
+    const auto swapped = MaskFromBits(dv, clockwiseBits >> j0), backSide = MaskFromBits(dv, backBits >> j0);
+    auto opaque = hn::FirstN(dv, hn::Lanes(dv));
+    for (int k = 0; k < 3; ++k) {
+      const int from = k == 0 ? 0 : (k == 1 ? 2 : 1);  // vertex k of the swapped order
+      const auto pick = [&](const float* kept, const float* other) {
+        const auto value = hn::Load(dv, kept + j0);
+        return k == 0 ? value : hn::IfThenElse(swapped, hn::Load(dv, other + j0), value);
+      };
+      hn::Store(pick(z[k], z[from]), dv, b.z[k] + j0);
+      hn::Store(pick(invW[k], invW[from]), dv, b.invW[k] + j0);
+      if (!colors) continue;
+      for (int c = 0; c < 4; ++c) {
+        const auto value = src.twoSided ? hn::IfThenElse(backSide, pick(back[k][c], back[from][c]), pick(front[k][c], front[from][c]))
+                                        : pick(front[k][c], front[from][c]);
+        if (c < 3) hn::Store(value, dv, b.lit[c][k] + j0);
+        else opaque = hn::And(opaque, value == hn::Set(dv, 1.0f));
+      }
+    }
+    fast &= ~(MaskBits(dv, hn::Not(opaque)) << j0);
   }
   for (std::uint32_t m = fast; m != 0; m &= m - 1) {
     const int j = __builtin_ctz(m);
@@ -377,16 +386,17 @@ void SetupTinyGroup(const TinyGroupSource& src, int count, TinyBatchLanes& b, in
     b.crosses[j] = std::uint8_t(crosses[j]);
     if (src.flat) {  // the provoking (last) vertex's colour
       const ShadedVertex& c = src.vertices[src.indices[3 * j + 2]];
-      b.packed[j] = packUnorm8(backFace[j] ? c.back : c.front);
+      b.packed[j] = packUnorm8((backBits >> j & 1) ? c.back : c.front);
     }
     if (src.surface) {  // counter-clockwise, as setupTriangle's caller orders them
       const std::uint32_t* at = src.indices + 3 * j;
-      const std::uint32_t ordered[3] = {at[0], clockwise[j] ? at[2] : at[1], clockwise[j] ? at[1] : at[2]};
+      const bool clockwise = clockwiseBits >> j & 1;
+      const std::uint32_t ordered[3] = {at[0], clockwise ? at[2] : at[1], clockwise ? at[1] : at[2]};
       for (int k = 0; k < 3; ++k) {
         const ShadedVertex& v = src.vertices[ordered[k]];
         for (int c = 0; c < 3; ++c) b.position[c][k][j] = v.eyePosition[c], b.normal[c][k][j] = v.eyeNormal[c];
       }
-      b.negate[j] = backFace[j] ? 1.0f : 0.0f;
+      b.negate[j] = (backBits >> j & 1) ? 1.0f : 0.0f;
     }
   }
   fastOut = fast;
