@@ -207,32 +207,46 @@ HWY_INLINE void GatherVertexRows(const TinyGroupSource& src, int count, bool col
   hn::LoadInterleaved3(du, index, triangleIndex[0], triangleIndex[1], triangleIndex[2]);
   const auto valid = hn::FirstN(di, std::size_t(count));
   const auto* words = reinterpret_cast<const std::int32_t*>(src.vertices);
-  const auto* floats = reinterpret_cast<const float*>(src.vertices);
   const auto wordOf = [](std::size_t offset) { return std::ptrdiff_t(offset / 4); };
-  // A row of doubles from a vector of int32 lanes; a row of floats.
+  // A row of doubles from a vector of int32 lanes.
   HWY_ALIGN std::int32_t wordsOut[hn::MaxLanes(di)];
   const auto rowOfWords = [&](VI v, double* row) {
     hn::Store(hn::IfThenElseZero(valid, v), di, wordsOut);
     for (int j = 0; j < int(hn::Lanes(di)); j += int(hn::Lanes(dd)))
       hn::Store(hn::PromoteTo(dd, hn::Load(dih, wordsOut + j)), dd, row + j);
   };
-  const auto rowOfFloats = [&](hn::VFromD<decltype(df)> v, float* row) {
-    hn::Store(hn::IfThenElseZero(hn::RebindMask(df, valid), v), df, row);
+  // Two neighbouring floats at `offset`, gathered as one 64-bit word (half the lanes a gather
+  // fetches), into their rows.
+  const hn::ScalableTag<std::int64_t> dq;
+  const hn::Rebind<std::int32_t, decltype(dq)> dqi;
+  const auto* pairsIn = reinterpret_cast<const std::int64_t*>(src.vertices);
+  HWY_ALIGN std::int32_t pairIndex[hn::MaxLanes(di)];
+  HWY_ALIGN std::int64_t pairsOut[hn::MaxLanes(df)];
+  const auto rowsOfPairs = [&](std::size_t offset, float* first, float* second) {
+    for (int j = 0; j < int(hn::Lanes(df)); j += int(hn::Lanes(dq)))
+      hn::Store(hn::GatherIndex(dq, pairsIn + offset / 8, hn::PromoteTo(dq, hn::Load(dqi, pairIndex + j))), dq,
+                pairsOut + j);
+    hn::VFromD<decltype(df)> a, b;
+    hn::LoadInterleaved2(df, reinterpret_cast<const float*>(pairsOut), a, b);
+    hn::Store(hn::IfThenElseZero(hn::RebindMask(df, valid), a), df, first);
+    hn::Store(hn::IfThenElseZero(hn::RebindMask(df, valid), b), df, second);
   };
+  constexpr std::size_t kDepth = offsetof(ShadedVertex, window) + offsetof(WindowPosition, z);
+  static_assert(offsetof(WindowPosition, invW) == offsetof(WindowPosition, z) + 4 && kDepth % 8 == 0 &&
+                offsetof(ShadedVertex, front) % 8 == 0 && offsetof(ShadedVertex, back) % 8 == 0);
   VI codes = hn::Zero(di);
   for (int k = 0; k < 3; ++k) {
     const VI at = hn::BitCast(di, triangleIndex[k]) * hn::Set(di, std::int32_t(kVertexWords));
+    hn::Store(hn::ShiftRight<1>(at), di, pairIndex);
     const auto word = [&](std::size_t offset) { return hn::GatherIndex(di, words + wordOf(offset), at); };
-    const auto real = [&](std::size_t offset) { return hn::GatherIndex(df, floats + wordOf(offset), at); };
     codes = hn::Or(codes, word(offsetof(ShadedVertex, outcode)));  // kOutcodeUnknown is not 0
     rowOfWords(word(offsetof(ShadedVertex, window) + offsetof(WindowPosition, x)), x[k]);
     rowOfWords(word(offsetof(ShadedVertex, window) + offsetof(WindowPosition, y)), y[k]);
-    rowOfFloats(real(offsetof(ShadedVertex, window) + offsetof(WindowPosition, z)), z[k]);
-    rowOfFloats(real(offsetof(ShadedVertex, window) + offsetof(WindowPosition, invW)), invW[k]);
+    rowsOfPairs(kDepth, z[k], invW[k]);
     if (!colors) continue;
-    for (int c = 0; c < 4; ++c) rowOfFloats(real(offsetof(ShadedVertex, front) + 4 * std::size_t(c)), front[k][c]);
+    for (int c = 0; c < 4; c += 2) rowsOfPairs(offsetof(ShadedVertex, front) + 4 * std::size_t(c), front[k][c], front[k][c + 1]);
     if (src.twoSided)
-      for (int c = 0; c < 4; ++c) rowOfFloats(real(offsetof(ShadedVertex, back) + 4 * std::size_t(c)), back[k][c]);
+      for (int c = 0; c < 4; c += 2) rowsOfPairs(offsetof(ShadedVertex, back) + 4 * std::size_t(c), back[k][c], back[k][c + 1]);
   }
   rowOfWords(hn::IfThenElseZero(codes == hn::Zero(di), hn::Set(di, 1)), inside);
 }
