@@ -189,7 +189,7 @@ HWY_INLINE void AccumulateGlLight(D d, LightSumsL<V>& sums, const EyeLight& ligh
   sums.specular = sums.specular + specular;
 }
 
-// One light under the model: a GL material's answer added to `sums` (AddReflected applies the
+// One light under the model: a GL material's answer added to `sums` (AddLightSums applies the
 // material's colours), or a physically based one's, whose colours vary with the light (Fresnel's
 // F), added to `terms` as it is (`physical` is physicalOf(material), computed once by the caller).
 template <bool kRecord, class D, class V = hn::VFromD<D>>
@@ -206,6 +206,14 @@ HWY_INLINE void AccumulateLight(D d, TermsL<V>& terms, LightSumsL<V>& sums, cons
     AccumulateGlLight<kRecord>(d, sums, light, material, colors, model, s, record);
 }
 
+// The lights' `sums` reflected by the material's colours into `terms` (AddReflected), under
+// every model but Cook-Torrance, whose lights add to `terms` themselves (AccumulateLight).
+template <class D, class V = hn::VFromD<D>>
+HWY_INLINE void AddLightSums(D d, TermsL<V>& terms, const LightSumsL<V>& sums, const Material& material,
+                             const MaterialColorsL<V>& colors, LightingModel model) {
+  if (model != LightingModel::CookTorrance) AddReflected(d, terms, sums, material, colors);
+}
+
 // The whole equation at each lane: emission, global ambient, then every light in order.
 template <class D, class V = hn::VFromD<D>>
 HWY_INLINE TermsL<V> ShadeEquation(D d, std::span<const EyeLight> lights, const LightModel& lightModel,
@@ -216,7 +224,7 @@ HWY_INLINE TermsL<V> ShadeEquation(D d, std::span<const EyeLight> lights, const 
   LightSumsL<V> sums = NoLight(d);
   for (const EyeLight& light : lights)
     AccumulateLight<false>(d, terms, sums, light, material, physical, colors, model, s, nullptr);
-  if (model != LightingModel::CookTorrance && !lights.empty()) AddReflected(d, terms, sums, material, colors);
+  if (!lights.empty()) AddLightSums(d, terms, sums, material, colors, model);
   return terms;
 }
 

@@ -244,7 +244,7 @@ void accumulateLight(LightingTerms& terms, const EyeLight& light, const Material
     HWY_NAMESPACE::AccumulateLight<false>(one::d, t, sums, light, material, physical, colors, model,
                                           one::surface(surface), nullptr);
   }
-  if (model != LightingModel::CookTorrance) HWY_NAMESPACE::AddReflected(one::d, t, sums, material, colors);
+  HWY_NAMESPACE::AddLightSums(one::d, t, sums, material, colors, model);
   terms.ambient += HWY_NAMESPACE::Lane0(t.ambient);
   terms.diffuse += HWY_NAMESPACE::Lane0(t.diffuse);
   terms.specular += HWY_NAMESPACE::Lane0(t.specular);
