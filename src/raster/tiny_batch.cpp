@@ -489,20 +489,28 @@ void TinyBatch<Pixel>::commitAcrossTiles(int j, Pixel* pixels, std::size_t count
   // Its tags are the bounds' first pixel in the first tile plus row · kTileSize + column.
   const std::uint32_t first = lanes_.firstTag[j];
   const std::uint32_t x0 = first % kTileSize, y0 = first / kTileSize;
-  Pixel piece[4][kTinyPixels];
-  std::size_t size[4] = {};
+  std::uint8_t pieceOf[kTinyPixels];
+  std::uint32_t size[4] = {};
   for (std::size_t k = 0; k < count; ++k) {
     const std::uint32_t offset = pixels[k].tag - first;
     const std::uint32_t x = x0 + offset % kTileSize, y = y0 + offset / kTileSize;
     const unsigned p = unsigned(x >= kTileSize) | unsigned(y >= kTileSize) << 1;
-    Pixel& moved = piece[p][size[p]++] = pixels[k];
-    moved.tag = TinyTag::of(recordsBefore_[j][p], (y % kTileSize) * kTileSize + x % kTileSize);
+    pieceOf[k] = std::uint8_t(p);
+    ++size[p];
+    pixels[k].tag = TinyTag::of(recordsBefore_[j][p], (y % kTileSize) * kTileSize + x % kTileSize);
   }
-  for (unsigned p = 0; p < 4; ++p) {
-    std::copy_n(piece[p], size[p], pixels);
-    out_.commit(size[p], pieceTile(j, p));
-    pixels += size[p];
-  }
+  // Covered in one tile only (the bounds cross, the pixels need not): already in place.
+  for (unsigned p = 0; p < 4; ++p)
+    if (size[p] == count) {
+      out_.commit(count, pieceTile(j, p));
+      return;
+    }
+  // Otherwise each piece's pixels after the previous piece's, each in the order it came.
+  Pixel sorted[kTinyPixels];
+  std::uint32_t at[4] = {0, size[0], size[0] + size[1], size[0] + size[1] + size[2]};
+  for (std::size_t k = 0; k < count; ++k) sorted[at[pieceOf[k]]++] = pixels[k];
+  for (std::size_t k = 0; k < count; ++k) pixels[k] = sorted[k];
+  for (unsigned p = 0; p < 4; ++p) out_.commit(size[p], pieceTile(j, p));
 }
 
 template <class Pixel>
