@@ -22,6 +22,19 @@ HWY_BEFORE_NAMESPACE();
 namespace illum::HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
+// Bit j: lane j of the mask `m` (of at most 16 lanes); and back.
+template <class D, class M>
+HWY_INLINE std::uint32_t MaskBits(D d, M m) {
+  std::uint8_t bits[8] = {};
+  hn::StoreMaskBits(d, m, bits);
+  return std::uint32_t(bits[0]) | std::uint32_t(bits[1]) << 8;
+}
+template <class D>
+HWY_INLINE auto MaskFromBits(D d, std::uint32_t bits) {
+  const std::uint8_t bytes[8] = {std::uint8_t(bits), std::uint8_t(bits >> 8)};
+  return hn::LoadMaskBits(d, bytes);
+}
+
 // The batch in groups of as many triangles as a float vector has lanes. A group's pixels are
 // laid out in slots, triangle after triangle (each its bounds' pixels, kTinyLanes' order), and
 // each vector of slots looks its triangles' values up in the group's rows (TableLookupLanes): the
@@ -53,14 +66,12 @@ std::size_t CoverGroups(const TinyBatchLanes& b, std::uint32_t members, std::uin
     // Slot s: triangle slot[s] >> kOffsetBits of the group, pixel slot[s] & kOffsetMask of its
     // bounds (its offset in the tile from their first pixel: row · kTileSize + column).
     HWY_ALIGN std::uint32_t slot[kSlots + kGroupMax];
-    int start[kGroupMax];
     int slots = 0;
     for (std::uint32_t m = inGroup; m != 0; m &= m - 1) {
       const int j = __builtin_ctz(m);
       const std::uint32_t* offsets = kTinyLanes.offset[b.width[g + j]];
       for (int k = 0; k < kTinyPixels; ++k)  // a whole row of the table: no branch per pixel
         slot[slots + k] = std::uint32_t(j) << kOffsetBits | offsets[k];
-      start[j] = slots;
       slots += b.count[g + j];
     }
     for (int k = slots; k < slots + group; ++k) slot[k] = 0;  // the rest
@@ -78,7 +89,9 @@ std::size_t CoverGroups(const TinyBatchLanes& b, std::uint32_t members, std::uin
     // First the coverage of every slot; the covered ones' slots are kept, in order, for the rest
     // (fewer than half of a dense mesh's slots are covered, and working their edge values out
     // again costs less than keeping every slot's).
-    std::uint64_t inside[kSlots / 64 + 1] = {};  // bit s % 64 of word s / 64: slot s is covered
+    // Per vector of slots: its covered lanes and how many slots before it are covered.
+    std::uint32_t coveredLanes[kSlots + 1];
+    int keptBefore[kSlots + 1];
     HWY_ALIGN std::uint32_t keptSlot[kSlots + kGroupMax];
     int kept = 0;
     for (int s0 = 0; s0 < slots; s0 += group) {
@@ -90,13 +103,12 @@ std::size_t CoverGroups(const TinyBatchLanes& b, std::uint32_t members, std::uin
       auto covers = hn::FirstN(df, std::size_t(slots - s0));
       for (int i = 0; i < 3; ++i) covers = hn::And(covers, E[i] + of(b.bias[i]) >= zero);
       hn::StoreU(hn::Compress(v, hn::RebindMask(du, covers)), du, keptSlot + kept);
+      coveredLanes[s0 / group] = MaskBits(df, covers);
+      keptBefore[s0 / group] = kept;
       kept += int(hn::CountTrue(df, covers));
-      std::uint8_t bits[8] = {};
-      hn::StoreMaskBits(df, covers, bits);
-      std::uint64_t word = 0;
-      for (int k = 0; k < (group + 7) / 8; ++k) word |= std::uint64_t(bits[k]) << (8 * k);
-      inside[s0 / 64] |= word << (s0 % 64);  // a vector's slots never straddle two words
     }
+    coveredLanes[(slots + group - 1) / group] = 0;  // the slots' end
+    keptBefore[(slots + group - 1) / group] = kept;
     for (int k = kept; k < kept + group; ++k) keptSlot[k] = 0;  // the last vector's rest
     // Then depth and the rest of the covered pixels.
     for (int k0 = 0; k0 < kept; k0 += group) {
@@ -116,12 +128,17 @@ std::size_t CoverGroups(const TinyBatchLanes& b, std::uint32_t members, std::uin
       emit(n + std::size_t(k0), std::min(group, kept - k0), of, l0, l1, l2, z, tag);
     }
     n += std::size_t(kept);
+    // How many of the slots before slot s are covered.
+    const auto keptAt = [&](int s) {
+      return keptBefore[s / group] + __builtin_popcount(coveredLanes[s / group] & ((1u << (s % group)) - 1));
+    };
+    int end = 0, before = 0;  // the members' slots, one after another from slot 0
     for (std::uint32_t m = inGroup; m != 0; m &= m - 1) {
       const int j = __builtin_ctz(m);
-      const int word = start[j] / 64, bit = start[j] % 64;
-      std::uint64_t bits = inside[word] >> bit;
-      if (bit > 64 - kTinyPixels) bits |= inside[word + 1] << (64 - bit);
-      covered[g + j] = std::uint8_t(__builtin_popcountll(bits & ((std::uint64_t(1) << b.count[g + j]) - 1)));
+      end += b.count[g + j];
+      const int after = keptAt(end);
+      covered[g + j] = std::uint8_t(after - before);
+      before = after;
     }
   }
   return n;
@@ -249,19 +266,6 @@ HWY_INLINE void GatherVertexRows(const TinyGroupSource& src, int count, bool col
       for (int c = 0; c < 4; c += 2) rowsOfPairs(offsetof(ShadedVertex, back) + 4 * std::size_t(c), back[k][c], back[k][c + 1]);
   }
   rowOfWords(hn::IfThenElseZero(codes == hn::Zero(di), hn::Set(di, 1)), inside);
-}
-
-// Bit j: lane j of the mask `m` (of at most 16 lanes); and back.
-template <class D, class M>
-HWY_INLINE std::uint32_t MaskBits(D d, M m) {
-  std::uint8_t bits[8] = {};
-  hn::StoreMaskBits(d, m, bits);
-  return std::uint32_t(bits[0]) | std::uint32_t(bits[1]) << 8;
-}
-template <class D>
-HWY_INLINE auto MaskFromBits(D d, std::uint32_t bits) {
-  const std::uint8_t bytes[8] = {std::uint8_t(bits), std::uint8_t(bits >> 8)};
-  return hn::LoadMaskBits(d, bytes);
 }
 
 // setupTriangle (setup.cpp) and TinyBatch::add over lanes, one triangle per double lane: the
