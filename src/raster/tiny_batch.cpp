@@ -261,9 +261,11 @@ HWY_INLINE void GatherVertexRows(const TinyGroupSource& src, int count, bool col
     rowOfWords(word(offsetof(ShadedVertex, window) + offsetof(WindowPosition, y)), y[k]);
     rowsOfPairs(kDepth, z[k], invW[k]);
     if (!colors) continue;
-    for (int c = 0; c < 4; c += 2) rowsOfPairs(offsetof(ShadedVertex, front) + 4 * std::size_t(c), front[k][c], front[k][c + 1]);
+    for (int c = 0; c < 4; c += 2)
+      rowsOfPairs(offsetof(ShadedVertex, front) + 4 * std::size_t(c), front[k][c], front[k][c + 1]);
     if (src.twoSided)
-      for (int c = 0; c < 4; c += 2) rowsOfPairs(offsetof(ShadedVertex, back) + 4 * std::size_t(c), back[k][c], back[k][c + 1]);
+      for (int c = 0; c < 4; c += 2)
+        rowsOfPairs(offsetof(ShadedVertex, back) + 4 * std::size_t(c), back[k][c], back[k][c + 1]);
   }
   rowOfWords(hn::IfThenElseZero(codes == hn::Zero(di), hn::Set(di, 1)), inside);
 }
@@ -387,8 +389,8 @@ void SetupTinyGroup(const TinyGroupSource& src, int count, TinyBatchLanes& b, in
       hn::Store(pick(invW[k], invW[from]), dv, b.invW[k] + j0);
       if (!colors) continue;
       for (int c = 0; c < 4; ++c) {
-        const auto value = src.twoSided ? hn::IfThenElse(backSide, pick(back[k][c], back[from][c]), pick(front[k][c], front[from][c]))
-                                        : pick(front[k][c], front[from][c]);
+        const auto lit = pick(front[k][c], front[from][c]);
+        const auto value = src.twoSided ? hn::IfThenElse(backSide, pick(back[k][c], back[from][c]), lit) : lit;
         if (c < 3) hn::Store(value, dv, b.lit[c][k] + j0);
         else opaque = hn::And(opaque, value == hn::Set(dv, 1.0f));
       }
