@@ -288,9 +288,6 @@ int runBatch(const RenderOptions& o, const std::vector<BatchJob>& allJobs) {
   if (!o.debugPixel.empty()) throw InputError("--debug-pixel: reports one picture; render one input for it");
   if (o.output == "-") throw InputError("-o -: standard output takes one picture; render one input for it");
   if (o.turntable && o.orbitLight) throw InputError("--turntable and --orbit-light: expected one of them");
-  if (o.turntable < 0 || o.orbitLight < 0 || o.turntable > 3600 || o.orbitLight > 3600)
-    throw InputError("--turntable, --orbit-light: expected 1 to 3600 frames");
-  if (o.fps < 1 || o.fps > 120) throw InputError("--fps: expected 1 to 120 frames per second");
   if (o.bitDepth != 8 && o.bitDepth != 16) throw InputError("--bit-depth: expected 8 or 16, got " + std::to_string(o.bitDepth));
   const std::vector<BatchJob> jobs = o.shard.empty() ? allJobs : shardOf(allJobs, o.shard);
   const bool frames = o.turntable > 0 || o.orbitLight > 0;
@@ -364,7 +361,9 @@ int runBatch(const RenderOptions& o, const std::vector<BatchJob>& allJobs) {
       progress.say(std::string("illum: error: ") + (std::string(e.what()).rfind(job.input, 0) == 0 ? "" : job.input + ": ") + e.what());
     }
     ++done;
-    if (o.json) std::printf("%s\n", line.dump().c_str()), std::fflush(stdout);
+    // File names and the messages that quote them are bytes, not always UTF-8: a byte that is not
+    // becomes U+FFFD, so that no name stops the batch.
+    if (o.json) std::printf("%s\n", line.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace).c_str()), std::fflush(stdout);
     progress.update(done, failed);
     if (failed && o.failFast) break;
   }

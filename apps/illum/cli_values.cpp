@@ -94,4 +94,29 @@ Vec3 parseColor(const std::string& option, const std::string& text, bool unitRan
   return c;
 }
 
+CLI::Validator finiteRange(double min, double max) {
+  std::ostringstream range;
+  range << "[" << min << ", " << max << "]";
+  return CLI::Validator(
+      [min, max, range = range.str()](std::string& text) -> std::string {
+        double v = 0;
+        if (!toNumber(text, v)) return "expected a finite number in " + range + ", got \"" + text + "\"";
+        if (v < min || v > max) return "expected a number in " + range + ", got " + text;
+        return {};
+      },
+      "FINITE in " + range.str());
+}
+
+CLI::Validator wholeRange(long long min, long long max) {
+  const std::string range = "[" + std::to_string(min) + ", " + std::to_string(max) + "]";
+  return CLI::Validator(
+      [min, max, range](std::string& text) -> std::string {
+        double v = 0;
+        if (!toNumber(text, v) || v != std::floor(v)) return "expected a whole number in " + range + ", got \"" + text + "\"";
+        if (v < double(min) || v > double(max)) return "expected a whole number in " + range + ", got " + text;
+        return {};
+      },
+      "INT in " + range);
+}
+
 }  // namespace illum::cli

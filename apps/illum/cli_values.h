@@ -3,6 +3,8 @@
 
 #include <illum/real.h>
 
+#include <CLI/CLI.hpp>
+
 #include <string>
 
 namespace illum::cli {
@@ -15,5 +17,11 @@ Vec3 parseColor(const std::string& option, const std::string& text, bool unitRan
 Real parseNumber(const std::string& option, const std::string& text, Real min, Real max);
 // A whole number in [min, max] ("10.5" is refused).
 int parseInteger(const std::string& option, const std::string& text, int min, int max);
+
+// The check of every real-valued option: a finite number in [min, max]. CLI11's own Range lets
+// NaN through (every comparison with it is false) and reads "inf" as a number.
+CLI::Validator finiteRange(double min, double max);
+// The check of a count: a whole number in [min, max] (0 frames or -5 light turns are refused).
+CLI::Validator wholeRange(long long min, long long max);
 
 }  // namespace illum::cli

@@ -176,9 +176,13 @@ Command addRenderCommand(CLI::App& app) {
                   "turntables: .gif, .webp, .mp4 (ffmpeg) or PNGs named with {frame}");
   cmd->add_option("--output-dir", o->outputDir, "Many inputs: the folder the output names are in (made if missing)");
   cmd->add_option("--format", o->format, "What standard input (-) holds: its extension (ply, stl, obj, glb, json, ...)");
-  cmd->add_option("--turntable", o->turntable, "Render N frames with the camera orbiting the up axis");
-  cmd->add_option("--orbit-light", o->orbitLight, "Render N frames with the key light orbiting the up axis");
-  cmd->add_option("--fps", o->fps, "Frames per second of .gif, .webp and .mp4 outputs")->capture_default_str();
+  cmd->add_option("--turntable", o->turntable, "Render N frames with the camera orbiting the up axis")
+      ->check(wholeRange(1, kMaxFrames));
+  cmd->add_option("--orbit-light", o->orbitLight, "Render N frames with the key light orbiting the up axis")
+      ->check(wholeRange(1, kMaxFrames));
+  cmd->add_option("--fps", o->fps, "Frames per second of .gif, .webp and .mp4 outputs")
+      ->check(wholeRange(1, 120))
+      ->capture_default_str();
   cmd->add_option("--shard", o->shard, "I/N: render only the I-th (from 0) of N equal slices of the inputs (job arrays)");
   cmd->add_flag("--skip-existing", o->skipExisting, "Skip inputs whose outputs exist (resume a batch)");
   cmd->add_flag("--fail-fast", o->failFast, "Stop a batch at the first input that fails");

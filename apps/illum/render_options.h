@@ -10,6 +10,9 @@
 
 namespace illum::cli {
 
+// The most frames a turntable or light orbit draws (a tenth of a degree a frame).
+constexpr int kMaxFrames = 3600;
+
 struct RenderOptions {
   SceneOptions scene;
   std::vector<std::string> inputs;

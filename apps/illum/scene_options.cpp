@@ -313,9 +313,9 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o, std::vector<std::string>* i
   cmd.add_flag("--grid", o.grid, "Draw a ground grid under the scene (rasterizer)");
   cmd.add_flag("--axes", o.axes, "Draw the world's axes in the lower left corner");
   cmd.add_option("--point-size", o.pointSize, "Pixel size of the points of point clouds [scenes 1 (GL's), models 3]")
-      ->check(CLI::Range(double(kMinPrimitiveSize), double(kMaxPrimitiveSize)));
+      ->check(finiteRange(double(kMinPrimitiveSize), double(kMaxPrimitiveSize)));
   cmd.add_option("--line-width", o.lineWidth, "Pixel width of the lines of line sets [1]")
-      ->check(CLI::Range(double(kMinPrimitiveSize), double(kMaxPrimitiveSize)));
+      ->check(finiteRange(double(kMinPrimitiveSize), double(kMaxPrimitiveSize)));
   cmd.add_flag("--ambient-occlusion", o.ambientOcclusion, "Scale the ambient term by ray-traced occlusion (rasterizer)");
   cmd.add_flag("--no-ambient-occlusion", o.noAmbientOcclusion, "No ambient occlusion, even where the scene file asks for it");
   cmd.add_option("--up", o.up, "Model files: the up axis, +Y, -Y, +Z, -Z, +X or -X [the file's: +Z for STL and 3DS, FBX's metadata, else +Y]");
@@ -340,7 +340,13 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o, std::vector<std::string>* i
   cmd.add_option("--max-memory", o.limits.maxMemoryMiB,
                   "MiB the model importer may use [512 + 32 × the file's size]")->check(CLI::PositiveNumber);
   cmd.add_option("--max-time", o.limits.maxSeconds, "Seconds the model importer may take [1.5 + 0.5 per MiB]")
-      ->check(CLI::Range(0.001, 1e6));
+      ->check(finiteRange(0.001, 1e6));
+  cmd.add_option_function<std::uint64_t>(
+         "--max-scene-size", [&o](std::uint64_t mib) { o.limits.maxSceneBytes = mib << 20; },
+         "Refuse scene files (and scenes on standard input) of more MiB [64]; their JSON values are limited in proportion")
+      ->check(wholeRange(1, 1 << 20));
+  cmd.add_option("--max-json-depth", o.limits.maxJsonDepth, "Refuse scene files whose arrays and objects nest deeper [64]")
+      ->check(wholeRange(1, 10000));
   cmd.add_option("--threads", o.threads, "Worker threads (default: every core); the picture is the same for any count")
       ->check(CLI::Range(1, 1024));
   cmd.add_flag("-v,--verbose", o.verbose, "Print model statistics, bounds, times and peak memory on stderr");

@@ -17,6 +17,12 @@ struct Limits {
   std::uint64_t maxMemoryMiB = 0;  // --max-memory
   // Seconds (CPU and wall clock) the importer may take; 0 chooses 1.5 s + 0.5 s per MiB of the file.
   double maxSeconds = 0;  // --max-time
+  // Bytes of a scene file (or a scene on standard input), checked before it is read; its JSON may
+  // hold at most one value for every 4 of these bytes (an empty array or object counts 4), so
+  // that the parsed tree stays within a small multiple of this.
+  std::uint64_t maxSceneBytes = std::uint64_t(64) << 20;  // --max-scene-size, in MiB
+  // How deep a scene file's arrays and objects may nest (a real scene nests 5 deep).
+  int maxJsonDepth = 64;  // --max-json-depth
 
   std::uint64_t memoryBytesFor(std::uint64_t fileBytes) const;
   double secondsFor(std::uint64_t fileBytes) const;

@@ -129,7 +129,7 @@ struct RayTracing {
   std::optional<int> samples;  // rays per pixel: 1 through the centre, more jittered (fixed seeds)
   Color3 environment{0};       // the path tracer: radiance arriving from everywhere rays escape to
   // ... or from an equirectangular .hdr image, times `environment` (which is then 1 unless given)
-  std::shared_ptr<const EnvironmentMap> environmentMap;
+  std::shared_ptr<const EnvironmentMapFile> environmentMap;
 };
 
 // The multisample counts the rasterizer takes.

@@ -1,5 +1,7 @@
 #include <illum/limits.h>
 
+#include <algorithm>
+
 namespace illum {
 namespace {
 
@@ -19,7 +21,10 @@ constexpr double kSanitizerSlowdown = 1;
 
 std::uint64_t Limits::memoryBytesFor(std::uint64_t fileBytes) const {
   constexpr std::uint64_t MiB = std::uint64_t(1) << 20;
-  if (maxMemoryMiB != 0) return maxMemoryMiB * MiB;
+  // A petabyte is no limit on any machine, and sums and products with it cannot overflow: larger
+  // values of --max-memory (2^43 MiB and up once wrapped to 0) mean "unlimited".
+  constexpr std::uint64_t kUnlimitedMiB = std::uint64_t(1) << 30;
+  if (maxMemoryMiB != 0) return std::min(maxMemoryMiB, kUnlimitedMiB) * MiB;
   // A reader needs memory in proportion to what it reads; compressed formats (glb, zae, 3mf)
   // expand, so the factor is generous, and small files get a floor that any sane one fits in.
   return 512 * MiB + 32 * fileBytes;

@@ -1,36 +1,139 @@
 #include <illum/environment.h>
 #include <illum/error.h>
 
+#include "core/input_file.h"
+
 #include <stb_image.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
-#include <memory>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <deque>
 
 namespace illum {
+namespace {
 
-EnvironmentMap::EnvironmentMap(int width, int height, std::vector<Vec3> texels)
-    : width_(width), height_(height), texels_(std::move(texels)) {}
+// stb_image keeps its reason in a global: good enough for a message, which is all it is used for.
+std::string stbReason() {
+  const char* r = stbi_failure_reason();
+  return r ? r : "unknown reason";
+}
+
+// A cursor over a Radiance file's bytes that refuses to read past the end.
+class HdrReader {
+ public:
+  HdrReader(const std::string& bytes, const std::string& name) : bytes_(bytes), name_(name) {}
+  // The next header line, without its '\n'.
+  std::string line() {
+    const std::size_t end = bytes_.find('\n', pos_);
+    if (end == std::string::npos) fail("the header ends without the line that gives the size");
+    std::string l = bytes_.substr(pos_, end - pos_);
+    pos_ = end + 1;
+    return l;
+  }
+  unsigned byte() {
+    if (pos_ >= bytes_.size()) cutShort();
+    return static_cast<unsigned char>(bytes_[pos_++]);
+  }
+  void skip(std::size_t n) {
+    if (bytes_.size() - pos_ < n) cutShort();
+    pos_ += n;
+  }
+  [[noreturn]] void fail(const std::string& why) const {
+    throw InputError(name_ + ": not a Radiance .hdr environment map that can be read: " + why);
+  }
+
+ private:
+  [[noreturn]] void cutShort() const { fail("the pixel data is cut short (a truncated file?)"); }
+  const std::string& bytes_;
+  const std::string& name_;
+  std::size_t pos_ = 0;
+};
+
+}  // namespace
+
+HdrSize checkRadianceHdr(const std::string& bytes, const std::string& name, const Limits& limits) {
+  HdrReader in(bytes, name);
+  // ---- Header: identifier, variables up to an empty line, then "-Y height +X width" ----
+  const std::string magic = in.line();
+  if (magic != "#?RADIANCE" && magic != "#?RGBE") in.fail("expected #?RADIANCE or #?RGBE on its first line");
+  bool rgbe = false;
+  for (std::string l = in.line(); !l.empty(); l = in.line()) rgbe = rgbe || l == "FORMAT=32-bit_rle_rgbe";
+  if (!rgbe) in.fail("expected FORMAT=32-bit_rle_rgbe (the only format of light probes it reads)");
+  const std::string resolution = in.line();
+  long height = 0, width = 0;
+  char end = 0;
+  const int read = std::sscanf(resolution.c_str(), "-Y %ld +X %ld%c", &height, &width, &end);
+  if (read < 2 || (read == 3 && !std::isspace(static_cast<unsigned char>(end))))
+    in.fail("expected the size as \"-Y height +X width\" (rows from the top), got \"" + resolution.substr(0, 40) + "\"");
+  if (width < 1 || height < 1)
+    in.fail("the map has no pixels (" + std::to_string(width) + "×" + std::to_string(height) + ")");
+  if (std::uint64_t(width) * std::uint64_t(height) > limits.maxPixels || width >= (1 << 24) || height >= (1 << 24))
+    throw InputError(name + ": the environment map has " + std::to_string(width) + "×" + std::to_string(height) +
+                     " pixels, more than the limit of " + withThousands(limits.maxPixels) + " (raise it with --max-pixels)");
+  HdrSize size{int(width), int(height)};
+
+  // ---- Pixels: walked as stb_image decodes them, without storing any ----
+  const std::size_t pixels = std::size_t(width) * std::size_t(height);
+  if (width < 8 || width >= 32768) {  // such widths are stored flat, 4 bytes a pixel
+    in.skip(4 * pixels);
+    return size;
+  }
+  for (long y = 0; y < height; ++y) {
+    const unsigned c1 = in.byte(), c2 = in.byte(), hi = in.byte();
+    if (c1 != 2 || c2 != 2 || (hi & 0x80)) {
+      // An old-style flat file: this was its first pixel, and the rest follow, 4 bytes each.
+      if (y != 0) in.fail("row " + std::to_string(y) + " is not run-length encoded as the rows before it");
+      in.skip(4 * pixels - 3);
+      return size;
+    }
+    if (long((hi << 8) | in.byte()) != width) in.fail("row " + std::to_string(y) + " does not hold the width's pixels");
+    for (int channel = 0; channel < 4; ++channel)
+      for (long x = 0; x < width;) {
+        unsigned count = in.byte();
+        const bool run = count > 128;
+        if (run) count -= 128;
+        if (count == 0) in.fail("row " + std::to_string(y) + " has a run of length 0");
+        if (long(count) > width - x) in.fail("row " + std::to_string(y) + " runs past the width");
+        in.skip(run ? 1 : count);
+        x += long(count);
+      }
+  }
+  return size;
+}
+
+EnvironmentMap::EnvironmentMap(int width, int height, const std::vector<Vec3>& texels) : width_(width), height_(height) {
+  std::shared_ptr<float> rgb(new float[3 * texels.size()], std::default_delete<float[]>());
+  for (std::size_t i = 0; i < texels.size(); ++i)
+    for (int c = 0; c < 3; ++c) rgb.get()[3 * i + std::size_t(c)] = float(texels[i][c]);
+  rgb_ = std::move(rgb);
+}
+
+EnvironmentMap EnvironmentMap::decode(const std::string& bytes, const std::string& name, const Limits& limits) {
+  const HdrSize size = checkRadianceHdr(bytes, name, limits);
+  int w = 0, h = 0, channels = 0;
+  float* data = stbi_loadf_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), int(bytes.size()), &w, &h, &channels, 3);
+  if (!data) throw InputError(name + ": cannot decode the environment map: " + stbReason());
+  std::shared_ptr<const float> rgb(data, stbi_image_free);
+  if (w != size.width || h != size.height) throw InputError(name + ": cannot decode the environment map: its size changed");
+  // Radiance stays finite and non-negative whatever the file says (in place: the map is big).
+  for (std::size_t i = 0, n = 3 * std::size_t(w) * std::size_t(h); i < n; ++i)
+    data[i] = std::isfinite(data[i]) ? std::max(0.0f, data[i]) : 0.0f;
+  return EnvironmentMap(w, h, std::move(rgb));
+}
+
+namespace {
+
+// A Radiance file is at most 4 bytes a pixel plus its header.
+std::uint64_t largestHdrFile(const Limits& limits) { return 4 * limits.maxPixels + (1 << 16); }
+
+}  // namespace
 
 EnvironmentMap EnvironmentMap::load(const std::filesystem::path& path, const Limits& limits) {
-  int w = 0, h = 0, channels = 0;
-  if (!stbi_info(path.c_str(), &w, &h, &channels))
-    throw InputError(path.string() + ": cannot read the environment map (expected a Radiance .hdr image): " +
-                     stbi_failure_reason());
-  if (!stbi_is_hdr(path.c_str()))
-    throw InputError(path.string() + ": the environment map is not a high dynamic range image (expected a Radiance .hdr)");
-  if (std::uint64_t(w) * std::uint64_t(h) > limits.maxPixels)
-    throw InputError(path.string() + ": the environment map has " + withThousands(std::uint64_t(w) * std::uint64_t(h)) +
-                     " pixels, more than the limit of " + withThousands(limits.maxPixels) + " (raise it with --max-pixels)");
-  const std::unique_ptr<float, void (*)(void*)> data(stbi_loadf(path.c_str(), &w, &h, &channels, 3), stbi_image_free);
-  if (!data) throw InputError(path.string() + ": cannot decode the environment map: " + stbi_failure_reason());
-  std::vector<Vec3> texels(std::size_t(w) * std::size_t(h));
-  for (std::size_t i = 0; i < texels.size(); ++i) {
-    const float* p = data.get() + 3 * i;
-    // Radiance stays finite and non-negative whatever the file says.
-    for (int c = 0; c < 3; ++c) texels[i][c] = std::isfinite(p[c]) ? std::max(0.0f, p[c]) : 0.0f;
-  }
-  return EnvironmentMap(w, h, std::move(texels));
+  return decode(readInputFile(path, largestHdrFile(limits), {"environment map", "--max-pixels"}), path.string(), limits);
 }
 
 Vec3 EnvironmentMap::radiance(const Vec3& d) const {
@@ -41,12 +144,49 @@ Vec3 EnvironmentMap::radiance(const Vec3& d) const {
   const Real x = u * Real(width_) - Real(0.5), y = v * Real(height_) - Real(0.5);
   const int x0 = int(std::floor(x)), y0 = int(std::floor(y));
   const Real fx = x - Real(x0), fy = y - Real(y0);
-  const auto at = [&](int i, int j) {
-    i = ((i % width_) + width_) % width_;
-    j = std::clamp(j, 0, height_ - 1);
-    return texels_[std::size_t(j) * std::size_t(width_) + std::size_t(i)];
-  };
+  const auto at = [&](int i, int j) { return texel(((i % width_) + width_) % width_, std::clamp(j, 0, height_ - 1)); };
   return (1 - fy) * ((1 - fx) * at(x0, y0) + fx * at(x0 + 1, y0)) + fy * ((1 - fx) * at(x0, y0 + 1) + fx * at(x0 + 1, y0 + 1));
+}
+
+std::shared_ptr<const EnvironmentMapFile> EnvironmentMapFile::open(const std::filesystem::path& path, const Limits& limits) {
+  auto file = std::make_shared<EnvironmentMapFile>();
+  file->path_ = path;
+  file->bytes_ = readInputFile(path, largestHdrFile(limits), {"environment map", "--max-pixels"});
+  file->limits_ = limits;
+  file->size_ = checkRadianceHdr(file->bytes_, path.string(), limits);
+  return file;
+}
+
+std::shared_ptr<const EnvironmentMapFile> EnvironmentMapFile::of(std::shared_ptr<const EnvironmentMap> map) {
+  auto file = std::make_shared<EnvironmentMapFile>();
+  file->size_ = {map->width(), map->height()};
+  file->map_ = std::move(map);
+  return file;
+}
+
+const EnvironmentMap& EnvironmentMapFile::map() const {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  if (map_) return *map_;
+  // The maps decoded last, by their bytes: a sheet's panels, a batch's scenes, a turntable's frames
+  // read the same file again, and decode it once. Two are kept, so that memory follows the maps in
+  // use rather than every map a batch has met.
+  struct Decoded {
+    std::string bytes;
+    std::shared_ptr<const EnvironmentMap> map;
+  };
+  static std::mutex cacheMutex;
+  static std::deque<Decoded> cache;
+  constexpr std::size_t kKept = 2;
+  {
+    const std::lock_guard<std::mutex> cacheLock(cacheMutex);
+    for (const Decoded& d : cache)
+      if (d.bytes == bytes_) return *(map_ = d.map);
+  }
+  auto decoded = std::make_shared<const EnvironmentMap>(EnvironmentMap::decode(bytes_, path_.string(), limits_));
+  const std::lock_guard<std::mutex> cacheLock(cacheMutex);
+  cache.push_front({bytes_, decoded});
+  if (cache.size() > kKept) cache.pop_back();
+  return *(map_ = std::move(decoded));
 }
 
 }  // namespace illum

@@ -2,6 +2,7 @@
 
 #include <illum/error.h>
 
+#include "core/input_file.h"
 #include "scene/model_precheck.h"
 #include "scene/texture_lookup.h"
 
@@ -386,8 +387,7 @@ bool isModelFileName(const fs::path& path) {
 
 ImportedModel importModelInProcess(const fs::path& path, const ImportOptions& options) {
   std::error_code ec;
-  if (!fs::exists(path, ec)) throw InputError(path.string() + ": no such model file");
-  if (!fs::is_regular_file(path, ec)) throw InputError(path.string() + ": not a regular file");
+  checkRegularFile(path, {"model file", nullptr});
   if (fs::file_size(path, ec) == 0) throw InputError(path.string() + ": the model file is empty");
   precheckModelFile(path, options.limits);
 

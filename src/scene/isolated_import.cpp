@@ -4,6 +4,7 @@
 
 #include <illum/error.h>
 
+#include "core/input_file.h"
 #include "core/isolate.h"
 #include "scene/model_wire.h"
 
@@ -21,8 +22,7 @@ PendingImport startImport(const std::filesystem::path& path, const ImportOptions
   try {
     std::error_code ec;
     // The quick refusals need no child.
-    if (!std::filesystem::exists(path, ec)) throw InputError(path.string() + ": no such model file");
-    if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path.string() + ": not a regular file");
+    checkRegularFile(path, {"model file", nullptr});
     const std::uint64_t size = std::filesystem::file_size(path, ec);
     if (ec || size == 0) throw InputError(path.string() + ": the model file is empty");
 
@@ -50,7 +50,7 @@ ImportedModel PendingImport::finish() {
   if (error_) std::rethrow_exception(std::exchange(error_, nullptr));
   if (!child_) throw Error("the model import was already finished");
   const IsolationOutcome outcome = std::exchange(child_, nullptr)->wait();
-  const std::string mib = std::to_string((memoryBytes_ + (1 << 20) - 1) >> 20);
+  const std::string mib = std::to_string(memoryBytes_ / (1 << 20) + (memoryBytes_ % (1 << 20) != 0));
   const std::string where = path_.string() + ": ";
   switch (outcome.kind) {
     case IsolationOutcome::Kind::Finished: return readModel({outcome.payload.begin(), outcome.payload.size()});

@@ -1,5 +1,7 @@
 #include "scene/json_reader.h"
 
+#include <illum/limits.h>
+
 #include <cmath>
 #include <functional>
 #include <set>
@@ -36,13 +38,17 @@ namespace {
 // in each open object.
 class DuplicateKeyCheck {
  public:
-  explicit DuplicateKeyCheck(const std::string& name) : name_(name) {}
+  DuplicateKeyCheck(const std::string& name, const JsonBudget& budget) : name_(name), budget_(budget) {}
 
-  bool operator()(int, Json::parse_event_t event, Json& parsed) {
+  bool operator()(int depth, Json::parse_event_t event, Json& parsed) {
     switch (event) {
       case Json::parse_event_t::object_start:
       case Json::parse_event_t::array_start: {
         std::string token = nextToken();
+        if (depth >= budget_.maxDepth)
+          throw InputError(name_ + ": " + pointer() + "/" + token + ": nested more than " + std::to_string(budget_.maxDepth) +
+                           " arrays and objects deep (raise it with " + budget_.raiseDepthWith + ")");
+        count(4, token);
         stack_.push_back({event == Json::parse_event_t::array_start, 0, {}, std::move(token)});
         break;
       }
@@ -59,7 +65,7 @@ class DuplicateKeyCheck {
         break;
       }
       case Json::parse_event_t::value:
-        nextToken();
+        count(1, nextToken());
         break;
     }
     return true;
@@ -85,15 +91,24 @@ class DuplicateKeyCheck {
     return p;
   }
 
+  void count(std::uint64_t cost, const std::string& token) {
+    values_ += cost;
+    if (values_ > budget_.maxValues)
+      throw InputError(name_ + ": " + pointer() + "/" + token + ": more than " + withThousands(budget_.maxValues) +
+                       " JSON values (an array or object counts 4; raise it with " + budget_.raiseValuesWith + ")");
+  }
+
   const std::string& name_;
+  const JsonBudget& budget_;
   std::vector<Frame> stack_;
   std::string pendingKey_;
+  std::uint64_t values_ = 0;
 };
 
 }  // namespace
 
-Json parseJsonStrict(const std::string& text, const std::string& name) {
-  DuplicateKeyCheck check(name);
+Json parseJsonStrict(const std::string& text, const std::string& name, const JsonBudget& budget) {
+  DuplicateKeyCheck check(name, budget);
   return Json::parse(text, std::ref(check));
 }
 

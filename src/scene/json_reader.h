@@ -18,9 +18,20 @@ using Json = nlohmann::json;
 // A key as a JSON pointer token ("~" → "~0", "/" → "~1").
 std::string jsonPointerToken(const std::string& key);
 
+// How much JSON a parse may build: nesting depth, and values (an array or object counts 4: it
+// costs a container besides its slot), so that neither a deep nest nor a flood of empty arrays
+// can take more memory than a small multiple of the text's size limit.
+struct JsonBudget {
+  int maxDepth = 64;
+  std::uint64_t maxValues = std::uint64_t(16) << 20;
+  const char* raiseDepthWith = "--max-json-depth";
+  const char* raiseValuesWith = "--max-scene-size";
+};
+
 // Parses JSON text, refusing duplicate keys (which JSON parsers silently resolve, so that a
-// repeated key would render as if the first were never written). `name` is used in messages.
-Json parseJsonStrict(const std::string& text, const std::string& name);
+// repeated key would render as if the first were never written) and anything over `budget`, at
+// the value that crosses it. `name` is used in messages.
+Json parseJsonStrict(const std::string& text, const std::string& name, const JsonBudget& budget = {});
 
 class JsonReader {
  public:

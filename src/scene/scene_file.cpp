@@ -5,6 +5,7 @@
 #include <map>
 
 #include <illum/import.h>
+#include "core/input_file.h"
 #include "scene/json_reader.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -374,7 +375,10 @@ Scene parseScene(const std::string& text, const std::string& name, const std::fi
   if (models) models->nextScene();
   Json root;
   try {
-    root = parseJsonStrict(text, name);
+    JsonBudget budget;
+    budget.maxDepth = limits.maxJsonDepth;
+    budget.maxValues = limits.maxSceneBytes / 4;
+    root = parseJsonStrict(text, name, budget);
   } catch (const Json::parse_error& e) {
     throw InputError(name + ": " + describeParseError(e, text));
   } catch (const Json::out_of_range& e) {
@@ -459,7 +463,7 @@ Scene parseScene(const std::string& text, const std::string& name, const std::fi
   if (j.has("environment_map")) {
     const std::filesystem::path file = baseDir / j.at("environment_map").string();
     try {
-      s.rayTracing.environmentMap = std::make_shared<const EnvironmentMap>(EnvironmentMap::load(file, limits));
+      s.rayTracing.environmentMap = EnvironmentMapFile::open(file, limits);
     } catch (const InputError& e) {
       j.at("environment_map").fail(std::string("expected a readable Radiance .hdr image; ") + e.what());
     }
@@ -491,12 +495,8 @@ Scene parseScene(const std::string& text, const std::string& name, const std::fi
 }
 
 Scene loadSceneFile(const std::filesystem::path& path, const Limits& limits, SceneModelCache* models) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path.string() + ": cannot open the scene file (does it exist and is it readable?)");
-  std::ostringstream buf;
-  buf << in.rdbuf();
-  if (in.bad()) throw InputError(path.string() + ": cannot read the scene file");
-  return parseScene(buf.str(), path.string(), path.parent_path(), limits, models);
+  const std::string text = readInputFile(path, limits.maxSceneBytes, {"scene file", "--max-scene-size"});
+  return parseScene(text, path.string(), path.parent_path(), limits, models);
 }
 
 }  // namespace illum

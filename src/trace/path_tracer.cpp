@@ -47,16 +47,17 @@ PathTracer::PathTracer(const Scene& scene, const RayScene& rays) : scene_(scene)
   const Mat4 viewFromWorld = scene.camera.viewFromWorld();
   worldFromView_ = glm::transpose(Mat3(viewFromWorld));  // a rotation: its inverse is its transpose
   for (const Light& l : scene.lights) lights_.push_back(toEyeSpace(l, viewFromWorld));
-  if (scene.rayTracing.environmentMap && luminance(scene.rayTracing.environment) > 0) {
-    environmentLight_.emplace(*scene.rayTracing.environmentMap);
+  if (scene.rayTracing.environmentMap) environmentMap_ = &scene.rayTracing.environmentMap->map();
+  if (environmentMap_ && luminance(scene.rayTracing.environment) > 0) {
+    environmentLight_.emplace(*environmentMap_);
     if (environmentLight_->empty()) environmentLight_.reset();
   }
 }
 
 Color3 PathTracer::environment(const Vec3& eyeDirection) const {
   const Color3& scale = scene_.rayTracing.environment;
-  if (!scene_.rayTracing.environmentMap) return scale;
-  return scale * scene_.rayTracing.environmentMap->radiance(glm::normalize(worldFromView_ * eyeDirection));
+  if (!environmentMap_) return scale;
+  return scale * environmentMap_->radiance(glm::normalize(worldFromView_ * eyeDirection));
 }
 
 Color4 PathTracer::primary(const Ray& primaryRay, const RayHit* primaryHit, const RayCone& primaryCone,

@@ -36,6 +36,7 @@ class PathTracer {
   const RayScene& rays_;
   std::vector<EyeLight> lights_;
   AreaLights area_;
+  const EnvironmentMap* environmentMap_ = nullptr;     // the scene's, decoded when this tracer is made
   std::optional<EnvironmentLight> environmentLight_;  // an environment map, sampled as a light
   Mat3 worldFromView_{1};
 };

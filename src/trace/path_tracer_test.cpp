@@ -145,7 +145,7 @@ TEST(PathTracer, AnEnvironmentMapLightsWhatSeesItsBrightHalf) {
     s.camera.eye = {0, up ? 5.0f : -5.0f, 0};
     s.camera.up = {0, 0, -1};
     s.rayTracing.samples = 256;
-    s.rayTracing.environmentMap = std::make_shared<const EnvironmentMap>(EnvironmentMap::load(path, Limits{}));
+    s.rayTracing.environmentMap = EnvironmentMapFile::open(path, Limits{});
     s.rayTracing.environment = Color3(1);
     Object plane;
     plane.mesh = up ? quad({-50, 0, 50}, {50, 0, 50}, {50, 0, -50}, {-50, 0, -50})
@@ -313,7 +313,7 @@ TEST(PathTracer, ASmallSunInTheEnvironmentMapIsSampledAsALight) {
   s.camera.up = {0, 0, -1};
   s.rayTracing.samples = 16;
   s.rayTracing.maxDepth = 1;
-  s.rayTracing.environmentMap = map;
+  s.rayTracing.environmentMap = EnvironmentMapFile::of(map);
   s.rayTracing.environment = Color3(1);
   Object plane;
   plane.mesh = quad({-50, 0, 50}, {50, 0, 50}, {50, 0, -50}, {-50, 0, -50});
