@@ -8,7 +8,9 @@
 #include <illum/output_file.h>
 #include <illum/render.h>
 
+#include "output_guard.h"
 #include "render_options.h"
+#include "stdin_input.h"
 
 #include <nlohmann/json.hpp>
 
@@ -145,11 +147,11 @@ struct JobResult {
 double msBetween(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); }
 
 // The files a job writes: one animation, or one picture per frame.
-std::vector<std::string> outputNames(const RenderOptions& o, const BatchJob& job, const std::string& pattern) {
+std::vector<std::string> outputNames(const RenderOptions& o, const BatchJob& job, const OutputPattern& out) {
   const int frames = std::max({1, o.turntable, o.orbitLight});
-  const bool animation = containerOf(expandTemplate(pattern, job, 0)) != Container::Png;
+  const bool animation = containerOf(out.name(job, 0)) != Container::Png;
   std::vector<std::string> names;
-  for (int f = 0; f < (animation ? 1 : frames); ++f) names.push_back(expandTemplate(pattern, job, f));
+  for (int f = 0; f < (animation ? 1 : frames); ++f) names.push_back(out.name(job, f));
   return names;
 }
 
@@ -173,14 +175,14 @@ struct ReadAhead {
 // Starts reading jobs[index]'s model, if it is a model file worth reading ahead; whatever goes
 // wrong here is left for the job itself to meet and report.
 std::optional<ReadAhead> startReadAhead(const RenderOptions& o, const std::vector<BatchJob>& jobs, std::size_t index,
-                                        const std::string& pattern, int threads) {
+                                        const OutputPattern& out, int threads) {
   // A big model is read in its turn: several read ahead would be held in memory at once.
   constexpr std::uintmax_t kLargestReadAhead = std::uintmax_t(64) << 20;
   const BatchJob& job = jobs[index];
   try {
     std::error_code ec;
     if (job.input == "-" || !isModelInput(job.input) || fs::file_size(job.input, ec) > kLargestReadAhead || ec ||
-        alreadyDone(o, outputNames(o, job, pattern)))
+        alreadyDone(o, outputNames(o, job, out)))
       return std::nullopt;
     SceneOptions so = o.scene;
     so.input = job.input;
@@ -196,16 +198,16 @@ std::optional<ReadAhead> startReadAhead(const RenderOptions& o, const std::vecto
   }
 }
 
-JobResult renderJob(const RenderOptions& o, const BatchJob& job, const std::string& input, const std::string& pattern,
+JobResult renderJob(const RenderOptions& o, const BatchJob& job, const std::string& input, const OutputPattern& out,
                     Renderer& renderer, ModelCache& cache, std::optional<ReadAhead> ahead) {
   JobResult result;
   const int frames = std::max({1, o.turntable, o.orbitLight});
-  const Container container = containerOf(expandTemplate(pattern, job, 0));
+  const Container container = containerOf(out.name(job, 0));
   const bool animation = container != Container::Png;
-  if (frames > 1 && !animation && pattern.find("{frame") == std::string::npos)
+  if (frames > 1 && !animation && out.pattern.find("{frame") == std::string::npos)
     throw InputError("-o: " + std::to_string(frames) + " frames need {frame} in the name (\"{stem}_{frame:03}.png\"), or a "
                      ".gif, .webp or .mp4 output");
-  const std::vector<std::string> names = outputNames(o, job, pattern);
+  const std::vector<std::string> names = outputNames(o, job, out);
   if (alreadyDone(o, names)) {
     result.outputs = names;
     result.skipped = true;
@@ -222,11 +224,13 @@ JobResult renderJob(const RenderOptions& o, const BatchJob& job, const std::stri
     so.input = input;
     const Real degrees = Real(360) * Real(f) / Real(frames);
     // A model's light rig follows its camera: its turntable turns the camera by its azimuth.
-    const bool model = !input.empty() && lower(fs::path(input).extension().string()) != ".json";
+    const bool model = input == "-" ? !o.scene.stdinInput->isScene()
+                                    : !input.empty() && lower(fs::path(input).extension().string()) != ".json";
     if (o.turntable && model) so.azimuth = so.azimuth.value_or(35) + double(degrees);
     const auto start = Clock::now();
     double loadMs = 0;
     Scene scene = prepareScene(so, &loadMs, &cache, f == 0 ? &result.warnings : nullptr);
+    if (f == 0) checkOutputsSpareScene(scene, names);
     if (o.turntable && !model) orbit(scene, degrees, false);
     if (o.orbitLight) orbit(scene, degrees, true);
     const auto loaded = Clock::now();
@@ -291,22 +295,28 @@ int runBatch(const RenderOptions& o, const std::vector<BatchJob>& allJobs) {
   if (o.bitDepth != 8 && o.bitDepth != 16) throw InputError("--bit-depth: expected 8 or 16, got " + std::to_string(o.bitDepth));
   const std::vector<BatchJob> jobs = o.shard.empty() ? allJobs : shardOf(allJobs, o.shard);
   const bool frames = o.turntable > 0 || o.orbitLight > 0;
-  std::string pattern = o.output.empty() ? (frames ? "{stem}.gif" : "{stem}.png") : o.output;
-  if (!isTemplate(pattern) && allJobs.size() > 1)
-    throw InputError("-o " + pattern + ": " + std::to_string(allJobs.size()) +
+  OutputPattern out{o.output.empty() ? (frames ? "{stem}.gif" : "{stem}.png") : o.output, o.outputDir};
+  if (!isTemplate(out.pattern) && allJobs.size() > 1)
+    throw InputError("-o " + out.pattern + ": " + std::to_string(allJobs.size()) +
                      " inputs need different names: use a template such as '{stem}.png' (fields {stem} {name} {ext} {dir} {n} {frame})");
-  if (!o.outputDir.empty()) pattern = (fs::path(o.outputDir) / pattern).string();
-  // Every output named before anything is drawn: two inputs may not write one file.
-  std::map<std::string, std::string> owner;
-  for (const BatchJob& job : allJobs) {
-    const std::string name = expandTemplate(pattern, job, 0);
-    if (auto [it, fresh] = owner.try_emplace(fs::path(name).lexically_normal().string(), job.input); !fresh)
-      throw InputError("-o: " + it->second + " and " + job.input + " would both be written to " + name +
-                       "; add {dir} or {n} to the template");
-  }
-  std::optional<StdinFile> stdinFile;
+  if (!o.outputDir.empty() && fs::path(out.pattern).is_absolute())
+    throw InputError("-o " + out.pattern + " and --output-dir " + o.outputDir +
+                     ": an absolute output name ignores the output folder; expected one of them");
+  // Every output named before anything is drawn: no input is written over, and two inputs may not
+  // write one file (nor one through a link to another's).
+  OutputGuard guard;
+  for (const BatchJob& job : allJobs)
+    if (job.input != "-") guard.protect(job.input);
+  for (const BatchJob& job : allJobs)
+    for (const std::string& name : outputNames(o, job, out)) {
+      guard.checkNotInput(name);
+      guard.claim(name, job.input);
+    }
+  std::shared_ptr<const StdinInput> piped;
   for (const BatchJob& job : jobs)
-    if (job.input == "-") stdinFile.emplace(o.format);
+    if (job.input == "-") piped = std::make_shared<const StdinInput>(o.format, o.scene.limits);
+  RenderOptions withInput = o;
+  withInput.scene.stdinInput = piped;
   if (!o.outputDir.empty()) {
     std::error_code ec;
     fs::create_directories(o.outputDir, ec);
@@ -328,19 +338,19 @@ int runBatch(const RenderOptions& o, const std::vector<BatchJob>& allJobs) {
     if (gInterrupted) break;
     const BatchJob& job = jobs[i];
     for (; considered < jobs.size() && considered <= i + std::size_t(limit.threads()); ++considered)
-      if (auto next = startReadAhead(o, jobs, considered, pattern, limit.threads())) ahead.push_back(std::move(*next));
+      if (auto next = startReadAhead(o, jobs, considered, out, limit.threads())) ahead.push_back(std::move(*next));
     std::optional<ReadAhead> readAhead;
     if (!ahead.empty() && ahead.front().job == i) {
       readAhead = std::move(ahead.front());
       ahead.pop_front();
     }
-    const std::string input = job.input == "-" ? stdinFile->path() : job.input;
+    const std::string& input = job.input;
     nlohmann::json line = {{"input", job.input}};
     try {
       // Folders the template names are made as needed.
-      const fs::path first = expandTemplate(pattern, job, 0);
+      const fs::path first = out.name(job, 0);
       if (first.has_parent_path()) fs::create_directories(first.parent_path());
-      const JobResult r = renderJob(o, job, input, pattern, renderer, cache, std::move(readAhead));
+      const JobResult r = renderJob(withInput, job, input, out, renderer, cache, std::move(readAhead));
       line["output"] = r.outputs.size() == 1 ? nlohmann::json(r.outputs[0]) : nlohmann::json(r.outputs);
       line["ok"] = true;
       line["skipped"] = r.skipped;
@@ -378,18 +388,5 @@ int runBatch(const RenderOptions& o, const std::vector<BatchJob>& allJobs) {
   return failed == 0 ? 0 : failed == inputErrors ? 2 : 1;
 }
 
-StdinFile::StdinFile(const std::string& format) {
-  if (format.empty() || format.find_first_of("/\\. ") != std::string::npos)
-    throw InputError("-: standard input needs --format, the extension of what it holds (--format ply, --format json)");
-  path_ = (fs::temp_directory_path() / ("illum_stdin_" + std::to_string(::getpid()) + "." + format)).string();
-  std::ofstream out(path_, std::ios::binary);
-  out << std::cin.rdbuf();
-  if (!out) throw Error("cannot save standard input to " + path_);
-}
-
-StdinFile::~StdinFile() {
-  std::error_code ec;
-  fs::remove(path_, ec);
-}
 
 }  // namespace illum::cli

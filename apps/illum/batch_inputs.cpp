@@ -58,19 +58,19 @@ std::vector<fs::path> walk(const fs::path& dir) {
 }  // namespace
 
 std::vector<BatchJob> expandInputs(const std::vector<std::string>& inputs) {
-  std::vector<std::string> paths;
+  std::vector<std::pair<std::string, std::string>> paths;  // (file, root)
   for (const std::string& input : inputs) {
     std::error_code ec;
     if (input == "-") {
-      paths.push_back(input);
+      paths.push_back({input, ""});
     } else if (!hasWildcard(input) || fs::exists(input, ec)) {
       if (fs::is_directory(input, ec)) {
         const std::size_t before = paths.size();
         for (const fs::path& f : walk(input))
-          if (isRenderable(f)) paths.push_back(f.string());
+          if (isRenderable(f)) paths.push_back({f.string(), input});
         if (paths.size() == before) throw InputError(input + ": the folder holds no model or scene file");
       } else {
-        paths.push_back(input);  // a file, or a missing one, which its job reports
+        paths.push_back({input, ""});  // a file, or a missing one, which its job reports
       }
     } else {
       // The folder part before the first wildcard is walked; the rest is matched.
@@ -83,15 +83,15 @@ std::vector<BatchJob> expandInputs(const std::vector<std::string>& inputs) {
       if (fs::is_directory(base, ec))
         for (const fs::path& f : walk(base)) {
           const std::string relative = f.lexically_relative(base).generic_string();
-          if (std::regex_match(relative, re)) paths.push_back(slash == std::string::npos ? relative : f.string());
+          if (std::regex_match(relative, re)) paths.push_back({slash == std::string::npos ? relative : f.string(), base});
         }
       if (paths.size() == before) throw InputError(input + ": no file matches the pattern");
     }
   }
   std::vector<BatchJob> jobs;
   std::set<std::string> seen;
-  for (const std::string& p : paths)
-    if (p == "-" || seen.insert(fs::path(p).lexically_normal().string()).second) jobs.push_back({p, jobs.size()});
+  for (const auto& [p, root] : paths)
+    if (p == "-" || seen.insert(fs::path(p).lexically_normal().string()).second) jobs.push_back({p, jobs.size(), root});
   return jobs;
 }
 
@@ -109,7 +109,34 @@ bool isTemplate(const std::string& pattern) {
   return std::regex_search(pattern, std::regex(R"(\{(stem|name|ext|dir|n|frame)(:0?\d+)?\})"));
 }
 
-std::string expandTemplate(const std::string& pattern, const BatchJob& job, int frame) {
+namespace {
+
+// {dir} under --output-dir (see expandTemplate).
+std::string confinedDir(const BatchJob& job) {
+  const fs::path folder = fs::path(job.input).parent_path();
+  if (!job.root.empty()) {
+    const fs::path relative = folder.lexically_relative(job.root);
+    if (!relative.empty() && *relative.begin() != "..") return relative.string();
+  }
+  fs::path kept;
+  for (const fs::path& part : folder.lexically_normal().relative_path())
+    if (part != ".." && part != ".") kept /= part;
+  return kept.empty() ? "." : kept.string();
+}
+
+}  // namespace
+
+std::string OutputPattern::name(const BatchJob& job, int frame) const {
+  const std::string expanded = expandTemplate(pattern, job, frame, !dir.empty());
+  if (dir.empty()) return expanded;
+  const fs::path inside = fs::path(expanded).lexically_normal();
+  if (inside.is_absolute() || (!inside.empty() && *inside.begin() == ".."))
+    throw InputError("-o " + pattern + ": " + expanded + " would leave --output-dir " + dir +
+                     " (expected a name inside it: no leading / or ..)");
+  return (fs::path(dir) / inside).string();
+}
+
+std::string expandTemplate(const std::string& pattern, const BatchJob& job, int frame, bool confined) {
   const fs::path in = job.input == "-" ? fs::path("stdin") : fs::path(job.input);
   std::string out;
   for (std::size_t i = 0; i < pattern.size();) {
@@ -125,7 +152,7 @@ std::string expandTemplate(const std::string& pattern, const BatchJob& job, int 
     if (field == "stem") value = in.stem().string();
     else if (field == "name") value = in.filename().string();
     else if (field == "ext") value = in.extension().string().empty() ? "" : in.extension().string().substr(1);
-    else if (field == "dir") value = in.parent_path().empty() ? "." : in.parent_path().string();
+    else if (field == "dir") value = confined ? confinedDir(job) : in.parent_path().empty() ? "." : in.parent_path().string();
     else if (field == "n" || field == "frame") value = std::to_string(field == "n" ? job.index + 1 : std::size_t(frame));
     else throw InputError("-o: unknown field {" + field + "} (expected {stem}, {name}, {ext}, {dir}, {n} or {frame})");
     if (!width.empty()) {

@@ -15,6 +15,7 @@ namespace illum::cli {
 struct BatchJob {
   std::string input;   // a path, or "-" for standard input
   std::size_t index;   // in the whole, unsharded list (the template's {n} counts from 1)
+  std::string root;    // the folder or pattern base it was found under; empty when named alone
 };
 
 // Expands `inputs` into jobs: files as given, folders and patterns in sorted order; a file named
@@ -28,6 +29,17 @@ std::vector<BatchJob> shardOf(const std::vector<BatchJob>& jobs, const std::stri
 // Whether `pattern` holds a field in braces, so that many pictures get different names.
 bool isTemplate(const std::string& pattern);
 // The output name for a job (and frame, for turntables). Throws InputError for an unknown field.
-std::string expandTemplate(const std::string& pattern, const BatchJob& job, int frame = 0);
+// `confined` (under --output-dir): {dir} is the input's folder relative to the folder or pattern
+// it was found under, or for a file named alone its folder as given without a leading / or any
+// .., so that no name leaves the output folder.
+std::string expandTemplate(const std::string& pattern, const BatchJob& job, int frame = 0, bool confined = false);
+
+// Where a batch writes: the -o template, inside --output-dir if one is given.
+struct OutputPattern {
+  std::string pattern;  // the template
+  std::string dir;      // --output-dir, or empty
+  // The file a job's frame goes to. Throws InputError when it would leave `dir`.
+  std::string name(const BatchJob& job, int frame = 0) const;
+};
 
 }  // namespace illum::cli

@@ -8,9 +8,11 @@
 
 #include "cli_values.h"
 #include "commands.h"
+#include "output_guard.h"
 #include "pixel_report.h"
 #include "render_options.h"
 #include "scene_options.h"
+#include "stdin_input.h"
 
 #include <sys/stat.h>
 #include <unistd.h>
@@ -71,6 +73,7 @@ int renderPicture(const RenderOptions& o) {
   const ThreadLimit limit(o.scene);
   double loadMs = 0;
   Scene scene = prepareScene(o.scene, &loadMs);
+  if (o.output != "-") checkOutputsSpareScene(scene, {o.output});
   const auto loaded = Clock::now();
   RenderStats stats;
   std::optional<PixelProbe> probe;
@@ -153,9 +156,8 @@ int runRender(RenderOptions o) {
     throw InputError("-: standard input can be read once");
   if (isBatch(o)) return runBatch(o, jobs);
   if (o.output.empty()) o.output = "illum.png";
-  std::optional<StdinFile> stdinFile;
-  if (!jobs.empty() && jobs[0].input == "-") stdinFile.emplace(o.format);
-  o.scene.input = jobs.empty() ? "" : stdinFile ? stdinFile->path() : jobs[0].input;
+  o.scene.input = jobs.empty() ? "" : jobs[0].input;
+  if (o.scene.input == "-") o.scene.stdinInput = std::make_shared<const StdinInput>(o.format, o.scene.limits);
   return renderPicture(o);
 }
 

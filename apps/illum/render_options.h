@@ -22,19 +22,6 @@ struct RenderOptions {
   int bitDepth = 8, turntable = 0, orbitLight = 0, fps = 15;
 };
 
-// Standard input saved to a temporary file named for --format, removed when this goes.
-class StdinFile {
- public:
-  explicit StdinFile(const std::string& format);
-  ~StdinFile();
-  StdinFile(const StdinFile&) = delete;
-  StdinFile& operator=(const StdinFile&) = delete;
-  const std::string& path() const { return path_; }
-
- private:
-  std::string path_;
-};
-
 // Whether the options make a batch rather than one picture.
 bool isBatch(const RenderOptions& o);
 // Renders every job, each failure reported and counted; the exit status.

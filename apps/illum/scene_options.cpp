@@ -5,6 +5,7 @@
 #include <illum/import.h>
 
 #include "cli_values.h"
+#include "stdin_input.h"
 
 #include <sys/resource.h>
 #include <tbb/info.h>
@@ -200,6 +201,22 @@ void decodeColourTextures(std::vector<Object>& objects) {
   }
 }
 
+// The model the options name; one on standard input is read as --format says, its textures
+// looked for in the working folder, and its messages name it "standard input".
+ImportedModel importModelFor(const SceneOptions& o) {
+  ImportOptions options = importOptions(o);
+  if (o.input != "-") return importModel(o.input, options);
+  options.format = o.stdinInput->format();
+  options.companionDir = std::filesystem::current_path();
+  try {
+    ImportedModel model = importModel(o.stdinInput->path(), options);
+    for (std::string& w : model.warnings) w = sayStandardInput(w, o.stdinInput->path());
+    return model;
+  } catch (const InputError& e) {
+    throw InputError(sayStandardInput(e.what(), o.stdinInput->path()));
+  }
+}
+
 Scene modelScene(const SceneOptions& o, ImportedModel& model) {
   Scene s;
   s.width = o.width.value_or(1000);
@@ -226,6 +243,8 @@ Scene modelScene(const SceneOptions& o, ImportedModel& model) {
   // Glass and other translucent materials (MTL d, glTF alpha) show what is behind them.
   s.blend = true;
   s.objects = std::move(model.objects);
+  if (o.input != "-") s.files.push_back(o.input);
+  s.files.insert(s.files.end(), model.files.begin(), model.files.end());
   overrideMaterials(o, s.objects);
   return s;
 }
@@ -263,7 +282,7 @@ void rejectTracedPointsAndLines(const Scene& scene, std::vector<std::string>* wa
 
 }  // namespace
 
-bool isModelInput(const std::string& input) { return !input.empty() && !isSceneFile(input); }
+bool isModelInput(const std::string& input) { return !input.empty() && input != "-" && !isSceneFile(input); }
 
 std::string modelCacheKey(const SceneOptions& o) {
   return o.input + "\n" + o.normals + "\n" + (o.creaseAngle ? std::to_string(*o.creaseAngle) : "");
@@ -345,6 +364,10 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o, std::vector<std::string>* i
          "--max-scene-size", [&o](std::uint64_t mib) { o.limits.maxSceneBytes = mib << 20; },
          "Refuse scene files (and scenes on standard input) of more MiB [64]; their JSON values are limited in proportion")
       ->check(wholeRange(1, 1 << 20));
+  cmd.add_option_function<std::uint64_t>(
+         "--max-stdin-size", [&o](std::uint64_t mib) { o.limits.maxStdinBytes = mib << 20; },
+         "Refuse a model on standard input of more MiB (it is held in memory) [256]")
+      ->check(wholeRange(1, 1 << 20));
   cmd.add_option("--max-json-depth", o.limits.maxJsonDepth, "Refuse scene files whose arrays and objects nest deeper [64]")
       ->check(wholeRange(1, 10000));
   cmd.add_option("--threads", o.threads, "Worker threads (default: every core); the picture is the same for any count")
@@ -379,12 +402,16 @@ Scene prepareScene(SceneOptions o, double* loadMs, ModelCache* cache, std::vecto
   }
   Scene scene;
   std::optional<ImportedModel> model;
-  if (o.input.empty() || isSceneFile(o.input)) {
+  const StdinInput* piped = o.input == "-" ? o.stdinInput.get() : nullptr;
+  if (o.input == "-" && !piped) throw Error("standard input was not read");
+  if (o.input.empty() || (piped ? piped->isScene() : isSceneFile(o.input))) {
     rejectModelOnlyOptions(o);
     // The built-in scene's captions name the model and shading it is drawn with.
     scene = o.input.empty() ? defaultScene(lightingModel.value_or(LightingModel::BlinnPhong),
                                            shading.value_or(Shading::Phong), renderer.value_or(RendererKind::Raster))
-                            : loadSceneFile(o.input, o.limits, cache ? &cache->sceneModels : nullptr);
+            : piped ? parseScene(piped->text(), "standard input", std::filesystem::current_path(), o.limits,
+                                 cache ? &cache->sceneModels : nullptr)
+                    : loadSceneFile(o.input, o.limits, cache ? &cache->sceneModels : nullptr);
     const int designedWidth = scene.width, designedHeight = scene.height;
     if (o.width) scene.width = *o.width;
     if (o.height) scene.height = *o.height;
@@ -404,7 +431,7 @@ Scene prepareScene(SceneOptions o, double* loadMs, ModelCache* cache, std::vecto
     const std::string key = modelCacheKey(o);
     CachedModel entry;
     if (cache && cache->models.count(key)) entry = cache->models.at(key);
-    else entry = {std::make_shared<const ImportedModel>(importModel(o.input, importOptions(o))), false};
+    else entry = {std::make_shared<const ImportedModel>(importModelFor(o)), false};
     const bool report = !entry.reported;
     entry.reported = true;
     if (cache) cache->models[key] = entry;
@@ -418,7 +445,8 @@ Scene prepareScene(SceneOptions o, double* loadMs, ModelCache* cache, std::vecto
       std::string primitives = withThousands(model->triangleCount) + " triangles";
       if (model->lineCount) primitives += ", " + withThousands(model->lineCount) + " lines";
       if (model->pointCount) primitives += ", " + withThousands(model->pointCount) + " points";
-      std::fprintf(stderr, "illum: %s: %s vertices, %s, %zu materials, %zu textures\n", o.input.c_str(),
+      std::fprintf(stderr, "illum: %s: %s vertices, %s, %zu materials, %zu textures\n",
+                   o.input == "-" ? "standard input" : o.input.c_str(),
                    withThousands(model->vertexCount).c_str(), primitives.c_str(), model->materialCount, model->textureCount);
       const Vec3 &lo = model->boundsMin, &hi = model->boundsMax;
       std::fprintf(stderr, "illum: bounds [%g, %g, %g] .. [%g, %g, %g]\n", double(lo.x), double(lo.y), double(lo.z),

@@ -17,8 +17,11 @@
 
 namespace illum::cli {
 
+class StdinInput;
+
 struct SceneOptions {
-  std::string input;  // a scene file (.json), a model file, or empty for the built-in scene
+  std::string input;  // a scene file (.json), a model file, "-" for standard input, or empty for the built-in scene
+  std::shared_ptr<const StdinInput> stdinInput;  // what standard input held, when input is "-"
   std::optional<int> width, height;
   std::string resolution;
   std::string model, shading, background;

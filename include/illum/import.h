@@ -21,6 +21,11 @@ struct ImportOptions {
   // The importer's wall-clock limit is its CPU-time limit times this: more than 1 when it shares
   // the cores with other work (a batch drawing one picture while it reads the next file).
   double wallClockAllowance = 1;
+  // A file whose name says nothing of its format (standard input, read through /proc/self/fd): the
+  // extension to read it as (".ply"), and the folder its textures and companion files (.mtl, .bin)
+  // are looked for in instead of the file's own.
+  std::string format;
+  std::filesystem::path companionDir;
 };
 
 struct ImportedModel {
@@ -33,6 +38,7 @@ struct ImportedModel {
   // are +Z up); unset: the +Y of glTF and most formats.
   std::optional<Vec3> upAxis;
   std::vector<std::string> warnings;  // e.g. a texture that could not be loaded
+  std::vector<std::string> files;     // the texture files it read (an output must not replace them)
 };
 
 // Reads a model file in an isolated child process (core/isolate.h) under options.limits, so that

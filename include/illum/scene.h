@@ -171,6 +171,9 @@ struct Scene {
   Real lineWidth = 1;
   Overlays overlays;
   AmbientOcclusion ambientOcclusion;
+  // The files the scene was read from: the scene file, the model files and textures it names, its
+  // environment map. No output may replace one of them.
+  std::vector<std::filesystem::path> files;
 };
 
 struct ImportedModel;

@@ -16,6 +16,8 @@
 #include <stb_image.h>
 
 #include <algorithm>
+#include <fstream>
+#include <iterator>
 #include <utility>
 #include <cmath>
 #include <map>
@@ -190,8 +192,8 @@ FileMaterialValues readMaterial(const aiMaterial& m) {
 // A texture named by a material: embedded ("*0" or by file name) or a file found beside the model
 // (texture_lookup.h). Its header is read first: an image larger than --max-pixels is not decoded.
 std::shared_ptr<const Texture> loadTexture(const aiScene& scene, const std::string& name, const fs::path& modelDir,
-                                           std::vector<std::string>& warnings, const fs::path& path,
-                                           const Limits& limits) {
+                                           std::vector<std::string>& warnings, std::vector<std::string>& files,
+                                           const fs::path& path, const Limits& limits) {
   const auto warn = [&](const std::string& why) {
     warnings.push_back(path.string() + ": texture \"" + name + "\" " + why + "; rendering untextured");
     return nullptr;
@@ -222,6 +224,7 @@ std::shared_ptr<const Texture> loadTexture(const aiScene& scene, const std::stri
     }
   } else {
     const TextureLookup lookup = findTextureFile(name, modelDir);
+    if (lookup.found) files.push_back(lookup.found->string());
     if (!lookup.found) {
       std::string tried;
       for (const std::string& t : lookup.tried) tried += (tried.empty() ? "" : "; ") + t;
@@ -389,14 +392,24 @@ ImportedModel importModelInProcess(const fs::path& path, const ImportOptions& op
   std::error_code ec;
   checkRegularFile(path, {"model file", nullptr});
   if (fs::file_size(path, ec) == 0) throw InputError(path.string() + ": the model file is empty");
-  precheckModelFile(path, options.limits);
+  const std::string ext = options.format.empty() ? lowerExtension(path) : options.format;
+  const fs::path companionDir = options.format.empty() ? path.parent_path() : options.companionDir;
+  precheckModelFile(path, options.limits, ext);
 
   AssimpWarnings assimpWarnings;
   Assimp::Importer importer;
   // Points and lines stay, each kind in meshes of its own (SortByPType removes none).
   importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, 0);
   // Read and validate before anything else: assimp's later steps assert (and abort) on some broken input.
-  const aiScene* scene = importer.ReadFile(path.string(), 0);
+  std::string bytes;  // a file without its format's name is read from memory, with the format as a hint
+  if (!options.format.empty()) {
+    std::ifstream in(path, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    // assimp's memory reader opens companion files (.mtl, .bin) by their bare names, from the
+    // working folder: standard input's companion folder.
+  }
+  const aiScene* scene = bytes.empty() ? importer.ReadFile(path.string(), 0)
+                                       : importer.ReadFileFromMemory(bytes.data(), bytes.size(), 0, ext.substr(1).c_str());
   if (!scene) readFailed(path, importer);
   // The importer owns the scene; its own post-processing steps change it in place as this does.
   facesForPointClouds(*const_cast<aiScene*>(scene), path, options.limits);
@@ -415,7 +428,7 @@ ImportedModel importModelInProcess(const fs::path& path, const ImportOptions& op
   if (auto w = assimpWarnings.find("out-of-range")) throw InputError(path.string() + ": indices out of range: " + *w);
 
   ImportedModel model;
-  const bool stl = lowerExtension(path) == ".stl";  // STL stores one normal per facet
+  const bool stl = ext == ".stl";  // STL stores one normal per facet
   std::vector<std::shared_ptr<const Mesh>> meshes(scene->mNumMeshes);
   for (unsigned i = 0; i < scene->mNumMeshes; ++i) {
     aiMesh& m = *scene->mMeshes[i];  // the importer's: released as it is converted
@@ -430,7 +443,6 @@ ImportedModel importModelInProcess(const fs::path& path, const ImportOptions& op
   std::map<std::string, std::shared_ptr<const Texture>> textureByName;
   // PLY and STL carry no materials, and an OBJ without MTL neither: assimp fills in placeholders
   // (white diffuse, specular and ambient) that would wash the picture out; use illum's neutral one.
-  const std::string ext = lowerExtension(path);
   const bool formatHasMaterials = ext != ".stl" && ext != ".ply";
   for (unsigned i = 0; i < scene->mNumMaterials; ++i) {
     const aiMaterial& am = *scene->mMaterials[i];
@@ -442,7 +454,8 @@ ImportedModel importModelInProcess(const fs::path& path, const ImportOptions& op
       for (aiTextureType type : types) {
         if (am.GetTexture(type, 0, &name) != AI_SUCCESS) continue;
         auto [it, inserted] = textureByName.try_emplace(name.C_Str(), nullptr);
-        if (inserted) it->second = loadTexture(*scene, name.C_Str(), path.parent_path(), model.warnings, path, options.limits);
+        if (inserted) it->second = loadTexture(*scene, name.C_Str(), companionDir, model.warnings, model.files, path,
+                                                 options.limits);
         return it->second;
       }
       return nullptr;

@@ -23,12 +23,6 @@ constexpr u64 kSaturated = ~u64(0);
 u64 add(u64 a, u64 b) { return a > kSaturated - b ? kSaturated : a + b; }
 u64 mul(u64 a, u64 b) { return b != 0 && a > kSaturated / b ? kSaturated : a * b; }
 
-std::string lowerExtension(const fs::path& p) {
-  std::string e = p.extension().string();
-  std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return e;
-}
-
 std::string readPrefix(const fs::path& path, std::size_t n) {
   std::ifstream in(path, std::ios::binary);
   std::string s(n, '\0');
@@ -260,8 +254,7 @@ void checkGltfJson(const fs::path& path, const nlohmann::json& doc, const Limits
   checkTriangles(path, all.triangles, limits, "the glTF node graph's instances");
 }
 
-void checkGltf(const fs::path& path, u64 fileSize, const Limits& limits) {
-  const std::string ext = lowerExtension(path);
+void checkGltf(const fs::path& path, u64 fileSize, const Limits& limits, const std::string& ext) {
   std::string text;
   if (ext == ".glb") {
     const std::string head = readPrefix(path, 20);
@@ -280,17 +273,16 @@ void checkGltf(const fs::path& path, u64 fileSize, const Limits& limits) {
 
 }  // namespace
 
-void precheckModelFile(const fs::path& path, const Limits& limits) {
+void precheckModelFile(const fs::path& path, const Limits& limits, const std::string& ext) {
   std::error_code ec;
   const u64 size = fs::file_size(path, ec);
   if (ec) return;
-  const std::string ext = lowerExtension(path);
   if (ext == ".ply") checkPly(path, size, limits);
   else if (ext == ".off") checkOff(path, size, limits);
   else if (ext == ".stl") checkStl(path, size, limits);
   else if (ext == ".ac" || ext == ".acc" || ext == ".ac3d") checkAc3d(path, limits);
   else if (ext == ".nff") checkNff(path, limits);
-  else if (ext == ".gltf" || ext == ".glb") checkGltf(path, size, limits);
+  else if (ext == ".gltf" || ext == ".glb") checkGltf(path, size, limits, ext);
 }
 
 }  // namespace illum

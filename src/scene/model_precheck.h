@@ -7,10 +7,12 @@
 #include <illum/limits.h>
 
 #include <filesystem>
+#include <string>
 
 namespace illum {
 
-// Throws InputError naming the file, what it declares and the limit or size it exceeds.
-void precheckModelFile(const std::filesystem::path& path, const Limits& limits);
+// Throws InputError naming the file, what it declares and the limit or size it exceeds. `ext`
+// (".ply", lower case) is the format to check it as.
+void precheckModelFile(const std::filesystem::path& path, const Limits& limits, const std::string& ext);
 
 }  // namespace illum

@@ -130,6 +130,8 @@ void writeModel(const ImportedModel& model, IsolatedWriter& out) {
   w.value(model.upAxis.value_or(Vec3(0)));
   w.value(std::uint64_t(model.warnings.size()));
   for (const std::string& s : model.warnings) w.string(s);
+  w.value(std::uint64_t(model.files.size()));
+  for (const std::string& s : model.files) w.string(s);
   w.value(kMagic);
 }
 
@@ -193,6 +195,8 @@ ImportedModel readModel(std::span<const std::uint8_t> bytes) {
   if (hasUp) model.upAxis = up;
   model.warnings.resize(r.count(bytes.size()));
   for (std::string& s : model.warnings) s = r.string();
+  model.files.resize(r.count(bytes.size()));
+  for (std::string& s : model.files) s = r.string();
   if (r.value<std::uint64_t>() != kMagic || !r.atEnd()) Reader::broken();
   return model;
 }

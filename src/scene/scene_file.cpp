@@ -216,6 +216,7 @@ struct ReadContext {
   // Model files already read, by their path: a file several objects name is read once, and its
   // meshes and textures are shared between them.
   SceneModelCache* models = nullptr;
+  std::vector<std::filesystem::path>* files = nullptr;  // what the scene reads (Scene::files)
 
   void charge(const JsonReader& j, std::uint64_t count) {
     triangles += count;
@@ -243,6 +244,8 @@ ImportedModel readModelFile(const JsonReader& j, ReadContext& context) {
       context.models->add(name, cached);
     }
     context.charge(j.at("path"), cached->triangleCount);
+    context.files->push_back(full);
+    context.files->insert(context.files->end(), cached->files.begin(), cached->files.end());
     return *cached;
   } catch (const InputError& e) {
     j.at("path").fail(e.what());
@@ -464,6 +467,7 @@ Scene parseScene(const std::string& text, const std::string& name, const std::fi
     const std::filesystem::path file = baseDir / j.at("environment_map").string();
     try {
       s.rayTracing.environmentMap = EnvironmentMapFile::open(file, limits);
+      s.files.push_back(file);
     } catch (const InputError& e) {
       j.at("environment_map").fail(std::string("expected a readable Radiance .hdr image; ") + e.what());
     }
@@ -483,7 +487,7 @@ Scene parseScene(const std::string& text, const std::string& name, const std::fi
   if (j.has("objects")) {
     const JsonReader objects = j.at("objects");
     SceneModelCache ownModels;
-    ReadContext context{baseDir, limits, 0, models ? models : &ownModels};
+    ReadContext context{baseDir, limits, 0, models ? models : &ownModels, &s.files};
     for (std::size_t i = 0, n = objects.arraySize(); i < n; ++i) readObject(objects.item(i), context, s.objects);
   }
   if (j.has("blend")) s.blend = j.at("blend").boolean();
@@ -496,7 +500,9 @@ Scene parseScene(const std::string& text, const std::string& name, const std::fi
 
 Scene loadSceneFile(const std::filesystem::path& path, const Limits& limits, SceneModelCache* models) {
   const std::string text = readInputFile(path, limits.maxSceneBytes, {"scene file", "--max-scene-size"});
-  return parseScene(text, path.string(), path.parent_path(), limits, models);
+  Scene scene = parseScene(text, path.string(), path.parent_path(), limits, models);
+  scene.files.insert(scene.files.begin(), path);
+  return scene;
 }
 
 }  // namespace illum
