@@ -67,25 +67,57 @@ bool onPath(const char* program) {
   return false;
 }
 
-// MP4 through ffmpeg, when it is installed: raw RGBA frames down a pipe into a temporary file,
-// which is then written in place of the output as every output is.
-std::vector<std::uint8_t> encodeMp4(const std::vector<Image>& frames, int fps) {
-  if (!onPath("ffmpeg")) throw InputError("an .mp4 output needs ffmpeg on the PATH (apt-get install ffmpeg); .gif and .webp need nothing");
-  const fs::path temp = fs::temp_directory_path() / ("illum_" + std::to_string(::getpid()) + ".mp4");
-  const int w = frames[0].width & ~1, h = frames[0].height & ~1;  // H.264's 4:2:0 wants even sizes
-  const std::string command = "ffmpeg -loglevel error -y -f rawvideo -pixel_format rgba -video_size " +
-                              std::to_string(frames[0].width) + "x" + std::to_string(frames[0].height) + " -framerate " +
-                              std::to_string(fps) + " -i - -vf crop=" + std::to_string(w) + ":" + std::to_string(h) +
-                              ":0:0 -pix_fmt yuv420p -movflags +faststart '" + temp.string() + "'";
-  FILE* pipe = ::popen(command.c_str(), "w");
-  if (!pipe) throw Error("cannot start ffmpeg");
-  for (const Image& f : frames) std::fwrite(f.rgba.data(), 1, f.rgba.size(), pipe);
-  const int status = ::pclose(pipe);
-  std::ifstream in(temp, std::ios::binary);
-  std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  fs::remove(temp);
-  if (status != 0 || bytes.empty()) throw Error("ffmpeg could not encode the MP4");
-  return bytes;
+// MP4 through ffmpeg, when it is installed: raw RGBA frames down a pipe as they are drawn, into a
+// file in a private temporary folder (mkdtemp: no name another user can plant), whose bytes are
+// then written in place of the output as every output is.
+class Mp4Encoder final : public AnimationEncoder {
+ public:
+  Mp4Encoder(int width, int height, int fps) : width_(width), height_(height) {
+    if (!onPath("ffmpeg"))
+      throw InputError("an .mp4 output needs ffmpeg on the PATH (apt-get install ffmpeg); .gif and .webp need nothing");
+    std::string folder = (fs::temp_directory_path() / "illum-mp4-XXXXXX").string();
+    if (!::mkdtemp(folder.data())) throw Error("cannot make a temporary folder for ffmpeg in " + fs::temp_directory_path().string());
+    folder_ = folder;
+    const int w = width & ~1, h = height & ~1;  // H.264's 4:2:0 wants even sizes
+    const std::string command = "ffmpeg -loglevel error -y -f rawvideo -pixel_format rgba -video_size " +
+                                std::to_string(width) + "x" + std::to_string(height) + " -framerate " + std::to_string(fps) +
+                                " -i - -vf crop=" + std::to_string(w) + ":" + std::to_string(h) +
+                                ":0:0 -pix_fmt yuv420p -movflags +faststart '" + (folder_ / "out.mp4").string() + "'";
+    pipe_ = ::popen(command.c_str(), "w");
+    if (!pipe_) throw Error("cannot start ffmpeg");
+  }
+  ~Mp4Encoder() override {
+    if (pipe_) ::pclose(pipe_);
+    std::error_code ec;
+    fs::remove_all(folder_, ec);
+  }
+  void add(const Image& frame) override {
+    if (frame.width != width_ || frame.height != height_ || std::fwrite(frame.rgba.data(), 1, frame.rgba.size(), pipe_) != frame.rgba.size())
+      throw Error("ffmpeg could not encode the MP4 (it stopped taking frames)");
+  }
+  std::vector<std::uint8_t> finish() override {
+    const int status = ::pclose(std::exchange(pipe_, nullptr));
+    std::ifstream in(folder_ / "out.mp4", std::ios::binary);
+    std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (status != 0 || bytes.empty()) throw Error("ffmpeg could not encode the MP4");
+    return bytes;
+  }
+
+ private:
+  int width_, height_;
+  fs::path folder_;
+  FILE* pipe_ = nullptr;
+};
+
+std::unique_ptr<AnimationEncoder> makeEncoder(Container container, const Image& first, int fps) {
+  const int delay = 1000 / std::max(1, fps);
+  switch (container) {
+    case Container::Gif: return makeGifEncoder(first.width, first.height, delay);
+    case Container::Webp: return makeWebpEncoder(first.width, first.height, delay);
+    case Container::Mp4: return std::make_unique<Mp4Encoder>(first.width, first.height, fps);
+    case Container::Png: break;
+  }
+  throw Error("a PNG is not an animation");
 }
 
 // Turns the camera (turntable) or the first light (orbit) about the camera's up axis through the
@@ -142,6 +174,7 @@ struct JobResult {
   std::size_t triangles = 0, points = 0, lines = 0;
   double loadMs = 0, renderMs = 0, encodeMs = 0;
   bool skipped = false;
+  int framesDone = 0, framesWanted = 1;  // less than wanted: Ctrl-C cut the job short, nothing of it kept
 };
 
 double msBetween(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); }
@@ -218,7 +251,8 @@ JobResult renderJob(const RenderOptions& o, const BatchJob& job, const std::stri
   cache.models.clear();
   if (ahead)  // its error, if any, is this job's
     cache.models[ahead->key] = {std::make_shared<const ImportedModel>(ahead->model.finish()), false};
-  std::vector<Image> pictures;
+  std::unique_ptr<AnimationEncoder> encoder;  // frames go to it as they are drawn
+  result.framesWanted = frames;
   for (int f = 0; f < frames && !(f > 0 && gInterrupted); ++f) {
     SceneOptions so = o.scene;
     so.input = input;
@@ -241,6 +275,7 @@ JobResult renderJob(const RenderOptions& o, const BatchJob& job, const std::stri
       renderer.render(scene, image, &stats, nullptr, &linear);
       const auto rendered = Clock::now();
       writeOutputFile(names[std::size_t(f)], encodePng16(image.width, image.height, picture16(scene, linear)), OutputOptions{o.force});
+      ++result.framesDone;
       result.encodeMs += msBetween(rendered, Clock::now());
       result.renderMs += msBetween(loaded, rendered);
     } else {
@@ -248,9 +283,13 @@ JobResult renderJob(const RenderOptions& o, const BatchJob& job, const std::stri
       const auto rendered = Clock::now();
       result.renderMs += msBetween(loaded, rendered);
       if (animation) {
-        pictures.push_back(std::move(image));
+        if (!encoder) encoder = makeEncoder(container, image, o.fps);
+        encoder->add(image);
+        ++result.framesDone;
+        result.encodeMs += msBetween(rendered, Clock::now());
       } else {
         writeOutputFile(names[std::size_t(f)], encodePng(image), OutputOptions{o.force});
+        ++result.framesDone;
         result.encodeMs += msBetween(rendered, Clock::now());
       }
     }
@@ -260,14 +299,16 @@ JobResult renderJob(const RenderOptions& o, const BatchJob& job, const std::stri
     for (const Object& object : scene.objects)
       result.points += object.mesh->pointCount(), result.lines += object.mesh->lineCount();
   }
+  if (result.framesDone < frames) {
+    // Cut short: a sequence is all its frames or none, as an animation is one file or none.
+    std::error_code ec;
+    if (!animation)
+      for (int f = 0; f < result.framesDone; ++f) fs::remove(names[std::size_t(f)], ec);
+    return result;
+  }
   if (animation) {
-    if (gInterrupted && int(pictures.size()) < frames) return result;  // nothing half-made is written
     const auto start = Clock::now();
-    const int delay = 1000 / std::max(1, o.fps);
-    const std::vector<std::uint8_t> bytes = container == Container::Gif    ? encodeGif(pictures, delay)
-                                            : container == Container::Webp ? encodeWebp(pictures, delay)
-                                                                           : encodeMp4(pictures, o.fps);
-    writeOutputFile(names[0], bytes, OutputOptions{o.force});
+    writeOutputFile(names[0], encoder->finish(), OutputOptions{o.force});
     result.encodeMs += msBetween(start, Clock::now());
   }
   result.outputs = names;
@@ -331,6 +372,7 @@ int runBatch(const RenderOptions& o, const std::vector<BatchJob>& allJobs) {
   Renderer renderer;
   ModelCache cache;
   std::size_t done = 0, failed = 0, inputErrors = 0;
+  std::string cutShort;  // which job Ctrl-C stopped in the middle of its frames
   // The next jobs' models, read while this job is drawn: as many at once as there are cores.
   std::deque<ReadAhead> ahead;
   std::size_t considered = 1;  // jobs [1, considered) were looked at for reading ahead
@@ -351,6 +393,11 @@ int runBatch(const RenderOptions& o, const std::vector<BatchJob>& allJobs) {
       const fs::path first = out.name(job, 0);
       if (first.has_parent_path()) fs::create_directories(first.parent_path());
       const JobResult r = renderJob(withInput, job, input, out, renderer, cache, std::move(readAhead));
+      if (!r.skipped && r.framesDone < r.framesWanted) {
+        cutShort = job.input + " stopped after " + std::to_string(r.framesDone) + " of " + std::to_string(r.framesWanted) +
+                   " frames (what it wrote is removed); ";
+        break;  // not done, and no line is printed for it
+      }
       line["output"] = r.outputs.size() == 1 ? nlohmann::json(r.outputs[0]) : nlohmann::json(r.outputs);
       line["ok"] = true;
       line["skipped"] = r.skipped;
@@ -380,7 +427,8 @@ int runBatch(const RenderOptions& o, const std::vector<BatchJob>& allJobs) {
   progress.finish();
   std::signal(SIGINT, previous);
   if (gInterrupted) {
-    std::fprintf(stderr, "illum: interrupted after %zu of %zu pictures; --skip-existing resumes\n", done, jobs.size());
+    std::fprintf(stderr, "illum: interrupted: %s%zu of %zu inputs done; --skip-existing resumes\n", cutShort.c_str(), done,
+                 jobs.size());
     return 130;
   }
   if (failed && !o.quiet)

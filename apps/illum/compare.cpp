@@ -64,6 +64,8 @@ int runCompare(const CompareOptions& o) {
       throw InputError("--diff: expected two different values of the rows' or the columns' axis, A,B, got \"" + o.diff + "\"");
   }
 
+  checkSheetPixels((rows.values.size() + (diffRows ? 1 : 0)) * (cols.values.size() + (diffCols ? 1 : 0)), base, first);
+
   Sheet sheet;
   sheet.title = inputName(o.scene) + " · rows: " + rows.name + " · columns: " + cols.name;
   sheet.corner = rows.name + " \\ " + cols.name;
@@ -84,21 +86,26 @@ int runCompare(const CompareOptions& o) {
       renderer.render(scene, image);
       images[r].push_back(std::move(image));
     }
+  // The difference panels first, then every picture moved (not copied) into the sheet.
+  std::vector<SheetPanel> rowDiffs, colDiffs;
+  if (diffCols)
+    for (std::size_t r = 0; r < rows.values.size(); ++r) {
+      DifferencePanel d = differencePanel(images[r][diffCols->first], images[r][diffCols->second]);
+      colDiffs.push_back({std::move(d.image), figures(d)});
+    }
+  if (diffRows)
+    for (std::size_t c = 0; c < cols.values.size(); ++c) {
+      DifferencePanel d = differencePanel(images[diffRows->first][c], images[diffRows->second][c]);
+      rowDiffs.push_back({std::move(d.image), figures(d)});
+    }
   for (std::size_t r = 0; r < rows.values.size(); ++r) {
     sheet.panels.emplace_back();
-    for (std::size_t c = 0; c < cols.values.size(); ++c) sheet.panels.back().push_back({images[r][c], ""});
-    if (diffCols) {
-      const DifferencePanel d = differencePanel(images[r][diffCols->first], images[r][diffCols->second]);
-      sheet.panels.back().push_back({d.image, figures(d)});
-    }
+    for (std::size_t c = 0; c < cols.values.size(); ++c) sheet.panels.back().push_back({std::move(images[r][c]), ""});
+    if (diffCols) sheet.panels.back().push_back(std::move(colDiffs[r]));
   }
   if (diffCols) sheet.columnLabels.push_back(cols.values[diffCols->first] + " vs " + cols.values[diffCols->second]);
   if (diffRows) {
-    sheet.panels.emplace_back();
-    for (std::size_t c = 0; c < cols.values.size(); ++c) {
-      const DifferencePanel d = differencePanel(images[diffRows->first][c], images[diffRows->second][c]);
-      sheet.panels.back().push_back({d.image, figures(d)});
-    }
+    sheet.panels.push_back(std::move(rowDiffs));
     sheet.rowLabels.push_back(rows.values[diffRows->first] + " vs " + rows.values[diffRows->second]);
   }
 

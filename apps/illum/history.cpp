@@ -64,7 +64,9 @@ int runHistory(const HistoryOptions& o) {
     throw InputError("--model, --shading and --renderer: the history sets them panel by panel; use `illum render` for one");
   ModelCache cache;
   SceneOptions base = o.scene;
-  if (!base.width && !base.height && base.resolution.empty()) defaultPanelSize(base, prepareScene(base, nullptr, &cache));
+  const Scene first = prepareScene(base, nullptr, &cache);
+  defaultPanelSize(base, first);
+  checkSheetPixels(std::size(kSteps), base, first);
   Sheet sheet;
   sheet.title = "Lighting from Wylie (1967) to Kajiya (1986): " + inputName(o.scene);
   Renderer renderer;

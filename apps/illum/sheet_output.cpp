@@ -1,6 +1,7 @@
 #include "sheet_output.h"
 
 #include <illum/image.h>
+#include <illum/error.h>
 #include <illum/output_file.h>
 
 #include <algorithm>
@@ -16,6 +17,16 @@ void defaultPanelSize(SceneOptions& o, const Scene& first) {
   if (o.width || o.height || !o.resolution.empty()) return;
   o.width = std::min(first.width, kDefaultPanelWidth);
   o.height = std::max(1, int(std::lround(double(first.height) * *o.width / first.width)));
+}
+
+void checkSheetPixels(std::size_t panels, const SceneOptions& o, const Scene& first) {
+  const std::uint64_t w = std::uint64_t(o.width.value_or(first.width)), h = std::uint64_t(o.height.value_or(first.height));
+  const std::uint64_t pixels = std::uint64_t(panels) * w * h;
+  if (pixels > o.limits.maxPixels)
+    throw InputError("the sheet would hold " + std::to_string(panels) + " panels of " + std::to_string(w) + "×" +
+                     std::to_string(h) + " = " + withThousands(pixels) + " pixels, more than the limit of " +
+                     withThousands(o.limits.maxPixels) + " for one picture (smaller panels with --resolution, or raise it "
+                     "with --max-pixels)");
 }
 
 std::string inputName(const SceneOptions& o) {

@@ -15,6 +15,10 @@ namespace illum::cli {
 // model's 1000×600: 400×240); `first` is the scene as the options make it.
 void defaultPanelSize(SceneOptions& o, const Scene& first);
 
+// Refuses (InputError) a sheet whose panels hold more pixels together than --max-pixels allows
+// one picture, before any is drawn: the sheet is one picture. `first` as above, with `o` sized.
+void checkSheetPixels(std::size_t panels, const SceneOptions& o, const Scene& first);
+
 // "the built-in scene", or the input file's name.
 std::string inputName(const SceneOptions& o);
 

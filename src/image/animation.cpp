@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cstring>
 #include <memory>
+#include <utility>
 
 namespace illum {
 namespace {
@@ -22,93 +23,146 @@ int appendBytes(GifFileType* gif, const GifByteType* bytes, int count) {
   throw Error(std::string("cannot encode the GIF: ") + (GifErrorString(code) ? GifErrorString(code) : "giflib failed"));
 }
 
-}  // namespace
+class GifEncoder final : public AnimationEncoder {
+ public:
+  GifEncoder(int width, int height, int delayMs) : w_(width), h_(height), delayMs_(delayMs) {
+    int error = 0;
+    gif_ = EGifOpen(&out_, appendBytes, &error);
+    if (!gif_) gifFailed(error);
+    EGifSetGifVersion(gif_, true);
+    if (EGifPutScreenDesc(gif_, w_, h_, 8, 0, nullptr) == GIF_ERROR) fail(gif_->Error);
+    // Loop forever (the NETSCAPE2.0 application extension).
+    static const GifByteType netscape[] = {'N', 'E', 'T', 'S', 'C', 'A', 'P', 'E', '2', '.', '0'};
+    static const GifByteType loop[] = {1, 0, 0};
+    if (EGifPutExtensionLeader(gif_, APPLICATION_EXT_FUNC_CODE) == GIF_ERROR ||
+        EGifPutExtensionBlock(gif_, sizeof netscape, netscape) == GIF_ERROR ||
+        EGifPutExtensionBlock(gif_, sizeof loop, loop) == GIF_ERROR || EGifPutExtensionTrailer(gif_) == GIF_ERROR)
+      fail(gif_->Error);
+    const std::size_t n = std::size_t(w_) * std::size_t(h_);
+    r_.resize(n), g_.resize(n), b_.resize(n), index_.resize(n);
+  }
+  ~GifEncoder() override { close(); }
 
-std::vector<std::uint8_t> encodeGif(const std::vector<Image>& frames, int delayMs) {
-  if (frames.empty()) throw Error("cannot encode a GIF of no frames");
-  const int w = frames[0].width, h = frames[0].height;
-  std::vector<std::uint8_t> out;
-  int error = 0;
-  GifFileType* gif = EGifOpen(&out, appendBytes, &error);
-  if (!gif) gifFailed(error);
-  const auto fail = [&](int code) {
-    int ignored = 0;
-    EGifCloseFile(gif, &ignored);
-    gifFailed(code);
-  };
-  EGifSetGifVersion(gif, true);
-  if (EGifPutScreenDesc(gif, w, h, 8, 0, nullptr) == GIF_ERROR) fail(gif->Error);
-  // Loop forever (the NETSCAPE2.0 application extension).
-  static const GifByteType netscape[] = {'N', 'E', 'T', 'S', 'C', 'A', 'P', 'E', '2', '.', '0'};
-  static const GifByteType loop[] = {1, 0, 0};
-  if (EGifPutExtensionLeader(gif, APPLICATION_EXT_FUNC_CODE) == GIF_ERROR ||
-      EGifPutExtensionBlock(gif, sizeof netscape, netscape) == GIF_ERROR ||
-      EGifPutExtensionBlock(gif, sizeof loop, loop) == GIF_ERROR || EGifPutExtensionTrailer(gif) == GIF_ERROR)
-    fail(gif->Error);
-  const std::size_t n = std::size_t(w) * std::size_t(h);
-  std::vector<GifByteType> r(n), g(n), b(n), index(n);
-  for (const Image& frame : frames) {
+  void add(const Image& frame) override {
+    const std::size_t n = r_.size();
     bool transparent = false;
     for (std::size_t i = 0; i < n; ++i) {
-      r[i] = frame.rgba[4 * i], g[i] = frame.rgba[4 * i + 1], b[i] = frame.rgba[4 * i + 2];
+      r_[i] = frame.rgba[4 * i], g_[i] = frame.rgba[4 * i + 1], b_[i] = frame.rgba[4 * i + 2];
       transparent = transparent || frame.rgba[4 * i + 3] < 128;
     }
     // 255 colours from the picture, the 256th kept for transparency.
     GifColorType palette[256] = {};
     int size = transparent ? 255 : 256;
-    if (GifQuantizeBuffer(unsigned(w), unsigned(h), &size, r.data(), g.data(), b.data(), index.data(), palette) == GIF_ERROR)
+    if (GifQuantizeBuffer(unsigned(w_), unsigned(h_), &size, r_.data(), g_.data(), b_.data(), index_.data(), palette) ==
+        GIF_ERROR)
       throw Error("cannot encode the GIF: quantizing a frame failed");
     if (transparent)
       for (std::size_t i = 0; i < n; ++i)
-        if (frame.rgba[4 * i + 3] < 128) index[i] = 255;
+        if (frame.rgba[4 * i + 3] < 128) index_[i] = 255;
     GraphicsControlBlock gcb{};
     gcb.DisposalMode = DISPOSE_BACKGROUND;
-    gcb.DelayTime = std::max(1, delayMs / 10);  // hundredths of a second
+    gcb.DelayTime = std::max(1, delayMs_ / 10);  // hundredths of a second
     gcb.TransparentColor = transparent ? 255 : NO_TRANSPARENT_COLOR;
     GifByteType extension[4];
     const std::size_t length = EGifGCBToExtension(&gcb, extension);
-    if (EGifPutExtension(gif, GRAPHICS_EXT_FUNC_CODE, int(length), extension) == GIF_ERROR) fail(gif->Error);
+    if (EGifPutExtension(gif_, GRAPHICS_EXT_FUNC_CODE, int(length), extension) == GIF_ERROR) fail(gif_->Error);
     const std::unique_ptr<ColorMapObject, void (*)(ColorMapObject*)> map(GifMakeMapObject(256, palette), GifFreeMapObject);
-    if (!map || EGifPutImageDesc(gif, 0, 0, w, h, false, map.get()) == GIF_ERROR) fail(gif->Error);
-    for (int y = 0; y < h; ++y)
-      if (EGifPutLine(gif, &index[std::size_t(y) * std::size_t(w)], w) == GIF_ERROR) fail(gif->Error);
+    if (!map || EGifPutImageDesc(gif_, 0, 0, w_, h_, false, map.get()) == GIF_ERROR) fail(gif_->Error);
+    for (int y = 0; y < h_; ++y)
+      if (EGifPutLine(gif_, &index_[std::size_t(y) * std::size_t(w_)], w_) == GIF_ERROR) fail(gif_->Error);
+    ++frames_;
   }
-  if (EGifCloseFile(gif, &error) == GIF_ERROR) gifFailed(error);
-  return out;
+
+  std::vector<std::uint8_t> finish() override {
+    if (frames_ == 0) throw Error("cannot encode a GIF of no frames");
+    int error = 0;
+    GifFileType* gif = std::exchange(gif_, nullptr);
+    if (EGifCloseFile(gif, &error) == GIF_ERROR) gifFailed(error);
+    return std::move(out_);
+  }
+
+ private:
+  void close() {
+    int ignored = 0;
+    if (gif_) EGifCloseFile(std::exchange(gif_, nullptr), &ignored);
+  }
+  [[noreturn]] void fail(int code) {
+    close();
+    gifFailed(code);
+  }
+
+  int w_, h_, delayMs_, frames_ = 0;
+  GifFileType* gif_ = nullptr;
+  std::vector<std::uint8_t> out_;
+  std::vector<GifByteType> r_, g_, b_, index_;
+};
+
+class WebpEncoder final : public AnimationEncoder {
+ public:
+  WebpEncoder(int width, int height, int delayMs) : w_(width), h_(height), delayMs_(delayMs) {
+    WebPAnimEncoderOptions options;
+    if (!WebPAnimEncoderOptionsInit(&options)) throw Error("cannot encode the WebP: libwebp version mismatch");
+    options.anim_params.loop_count = 0;  // forever
+    encoder_.reset(WebPAnimEncoderNew(w_, h_, &options));
+    if (!encoder_ || !WebPConfigInit(&config_)) throw Error("cannot encode the WebP: out of memory");
+    config_.lossless = 1;
+    config_.quality = 50;  // lossless effort: fast, still small
+    config_.method = 1;
+  }
+
+  void add(const Image& frame) override {
+    WebPPicture picture;
+    if (!WebPPictureInit(&picture)) throw Error("cannot encode the WebP: libwebp version mismatch");
+    picture.use_argb = 1;
+    picture.width = w_, picture.height = h_;
+    if (!WebPPictureImportRGBA(&picture, frame.rgba.data(), w_ * 4)) throw Error("cannot encode the WebP: out of memory");
+    const bool added = WebPAnimEncoderAdd(encoder_.get(), &picture, timestamp_, &config_);
+    WebPPictureFree(&picture);
+    if (!added) throw Error(std::string("cannot encode the WebP: ") + WebPAnimEncoderGetError(encoder_.get()));
+    timestamp_ += delayMs_;
+    ++frames_;
+  }
+
+  std::vector<std::uint8_t> finish() override {
+    if (frames_ == 0) throw Error("cannot encode a WebP of no frames");
+    WebPData data;
+    WebPDataInit(&data);
+    if (!WebPAnimEncoderAdd(encoder_.get(), nullptr, timestamp_, nullptr) || !WebPAnimEncoderAssemble(encoder_.get(), &data))
+      throw Error(std::string("cannot encode the WebP: ") + WebPAnimEncoderGetError(encoder_.get()));
+    std::vector<std::uint8_t> out(data.bytes, data.bytes + data.size);
+    WebPDataClear(&data);
+    return out;
+  }
+
+ private:
+  int w_, h_, delayMs_, frames_ = 0, timestamp_ = 0;
+  std::unique_ptr<WebPAnimEncoder, void (*)(WebPAnimEncoder*)> encoder_{nullptr, WebPAnimEncoderDelete};
+  WebPConfig config_{};
+};
+
+std::vector<std::uint8_t> encodeAll(AnimationEncoder& encoder, const std::vector<Image>& frames) {
+  for (const Image& frame : frames) encoder.add(frame);
+  return encoder.finish();
+}
+
+}  // namespace
+
+std::unique_ptr<AnimationEncoder> makeGifEncoder(int width, int height, int delayMs) {
+  return std::make_unique<GifEncoder>(width, height, delayMs);
+}
+
+std::unique_ptr<AnimationEncoder> makeWebpEncoder(int width, int height, int delayMs) {
+  return std::make_unique<WebpEncoder>(width, height, delayMs);
+}
+
+std::vector<std::uint8_t> encodeGif(const std::vector<Image>& frames, int delayMs) {
+  if (frames.empty()) throw Error("cannot encode a GIF of no frames");
+  return encodeAll(*makeGifEncoder(frames[0].width, frames[0].height, delayMs), frames);
 }
 
 std::vector<std::uint8_t> encodeWebp(const std::vector<Image>& frames, int delayMs) {
   if (frames.empty()) throw Error("cannot encode a WebP of no frames");
-  const int w = frames[0].width, h = frames[0].height;
-  WebPAnimEncoderOptions options;
-  if (!WebPAnimEncoderOptionsInit(&options)) throw Error("cannot encode the WebP: libwebp version mismatch");
-  options.anim_params.loop_count = 0;  // forever
-  const std::unique_ptr<WebPAnimEncoder, void (*)(WebPAnimEncoder*)> encoder(WebPAnimEncoderNew(w, h, &options),
-                                                                              WebPAnimEncoderDelete);
-  WebPConfig config;
-  if (!encoder || !WebPConfigInit(&config)) throw Error("cannot encode the WebP: out of memory");
-  config.lossless = 1;
-  config.quality = 50;  // lossless effort: fast, still small
-  config.method = 1;
-  int timestamp = 0;
-  for (const Image& frame : frames) {
-    WebPPicture picture;
-    if (!WebPPictureInit(&picture)) throw Error("cannot encode the WebP: libwebp version mismatch");
-    picture.use_argb = 1;
-    picture.width = w, picture.height = h;
-    if (!WebPPictureImportRGBA(&picture, frame.rgba.data(), w * 4)) throw Error("cannot encode the WebP: out of memory");
-    const bool added = WebPAnimEncoderAdd(encoder.get(), &picture, timestamp, &config);
-    WebPPictureFree(&picture);
-    if (!added) throw Error(std::string("cannot encode the WebP: ") + WebPAnimEncoderGetError(encoder.get()));
-    timestamp += delayMs;
-  }
-  WebPData data;
-  WebPDataInit(&data);
-  if (!WebPAnimEncoderAdd(encoder.get(), nullptr, timestamp, nullptr) || !WebPAnimEncoderAssemble(encoder.get(), &data))
-    throw Error(std::string("cannot encode the WebP: ") + WebPAnimEncoderGetError(encoder.get()));
-  std::vector<std::uint8_t> out(data.bytes, data.bytes + data.size);
-  WebPDataClear(&data);
-  return out;
+  return encodeAll(*makeWebpEncoder(frames[0].width, frames[0].height, delayMs), frames);
 }
 
 }  // namespace illum
