@@ -368,6 +368,9 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o, std::vector<std::string>* i
          "--max-stdin-size", [&o](std::uint64_t mib) { o.limits.maxStdinBytes = mib << 20; },
          "Refuse a model on standard input of more MiB (it is held in memory) [256]")
       ->check(wholeRange(1, 1 << 20));
+  cmd.add_option("--max-fill", o.limits.maxFill,
+                 "Refuse pictures whose points and lines would cover more pixels, summed over samples [1000000000]")
+      ->check(CLI::PositiveNumber);
   cmd.add_option("--max-json-depth", o.limits.maxJsonDepth, "Refuse scene files whose arrays and objects nest deeper [64]")
       ->check(wholeRange(1, 10000));
   cmd.add_option("--threads", o.threads, "Worker threads (default: every core); the picture is the same for any count")
@@ -454,6 +457,7 @@ Scene prepareScene(SceneOptions o, double* loadMs, ModelCache* cache, std::vecto
     }
     scene = modelScene(o, *model);
   }
+  scene.maxFill = o.limits.maxFill;
   if (std::uint64_t(scene.width) * std::uint64_t(scene.height) > o.limits.maxPixels)
     throw InputError("the image would be " + std::to_string(scene.width) + "×" + std::to_string(scene.height) + " = " +
                      withThousands(std::uint64_t(scene.width) * std::uint64_t(scene.height)) +

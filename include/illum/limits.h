@@ -21,6 +21,9 @@ struct Limits {
   // hold at most one value for every 4 of these bytes (an empty array or object counts 4), so
   // that the parsed tree stays within a small multiple of this.
   std::uint64_t maxSceneBytes = std::uint64_t(64) << 20;  // --max-scene-size, in MiB
+  // Pixels that wide points and lines may cover in one picture, summed over multisample passes
+  // (a scene file alone can ask for lines 256 pixels wide): estimated before any is drawn.
+  std::uint64_t maxFill = 1'000'000'000;  // --max-fill
   // Bytes of a model on standard input (held in memory: it has no file).
   std::uint64_t maxStdinBytes = std::uint64_t(256) << 20;  // --max-stdin-size, in MiB
   // How deep a scene file's arrays and objects may nest (a real scene nests 5 deep).

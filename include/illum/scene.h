@@ -169,6 +169,9 @@ struct Scene {
   // sets (Mesh::pointIndices, lineIndices), which the rasterizer draws and the ray tracers leave out.
   Real pointSize = 1;
   Real lineWidth = 1;
+  // The most pixels the points and lines may cover, over every pass (Limits::maxFill): a scene
+  // that would cover more is refused before it is drawn.
+  std::uint64_t maxFill = Limits{}.maxFill;
   Overlays overlays;
   AmbientOcclusion ambientOcclusion;
   // The files the scene was read from: the scene file, the model files and textures it names, its

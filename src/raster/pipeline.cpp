@@ -278,6 +278,7 @@ void Renderer::render(const Scene& scene, Image& image, RenderStats* statsOut, P
   if (probe) probe->hit = false;
   const std::span<const SubpixelOffset> samples = multisamplePattern(scene.multisample);
   const std::vector<OverlayLine> overlay = overlayLines(scene);
+  if (hasPointsOrLines(scene)) checkPointAndLineFill(frame, scene, int(samples.size()));
   RenderStats stats;
   if (samples.size() <= 1) {
     BinnedFrame pass(*state_, scene, frame, probe);

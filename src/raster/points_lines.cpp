@@ -2,6 +2,8 @@
 
 #include "raster/wide_segment.h"
 
+#include <illum/error.h>
+
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
@@ -40,7 +42,12 @@ void writeFragment(Framebuffer& fb, const FrameContext& frame, int x, int y, Rea
   else fb.writeColor(x, y, color);
 }
 
-void drawPoint(Framebuffer& fb, const FrameContext& frame, const ShadedVertex& v, Real size) {
+// Rows [rowBegin, rowEnd): the band of tile rows one task draws.
+struct Rows {
+  int begin, end;
+};
+
+void drawPoint(Framebuffer& fb, const FrameContext& frame, const ShadedVertex& v, Real size, Rows rows) {
   const Vec4& c = v.clip;
   // GL passes a point whose centre is inside the clip volume, whole, and discards any other.
   if (!(c.w > 0) || std::abs(c.x) > c.w || std::abs(c.y) > c.w || std::abs(c.z) > c.w) return;
@@ -48,7 +55,8 @@ void drawPoint(Framebuffer& fb, const FrameContext& frame, const ShadedVertex& v
   const Real z = (c.z / c.w + 1) * Real(0.5), half = size / 2;
   // Samples lie less than half a pixel from pixel centres: pixels beyond these cannot be covered.
   const int x0 = std::max(0, int(std::ceil(cx - half - 1))), x1 = std::min(frame.width - 1, int(std::floor(cx + half)));
-  const int y0 = std::max(0, int(std::ceil(cy - half - 1))), y1 = std::min(frame.height - 1, int(std::floor(cy + half)));
+  const int y0 = std::max(rows.begin, int(std::ceil(cy - half - 1)));
+  const int y1 = std::min(rows.end - 1, int(std::floor(cy + half)));
   const Vec2 sample(Real(frame.sample.x) / 256, Real(frame.sample.y) / 256);
   for (int y = y0; y <= y1; ++y)
     for (int x = x0; x <= x1; ++x) {
@@ -61,7 +69,8 @@ void drawPoint(Framebuffer& fb, const FrameContext& frame, const ShadedVertex& v
     }
 }
 
-void drawLine(Framebuffer& fb, const FrameContext& frame, const ShadedVertex& a, const ShadedVertex& b, Real width) {
+void drawLine(Framebuffer& fb, const FrameContext& frame, const ShadedVertex& a, const ShadedVertex& b, Real width,
+              Rows rows) {
   const auto s = windowSegment(frame, a.clip, b.clip);
   if (!s) return;
   forEachSegmentPixel(frame, *s, width, [&](int x, int y, Real t) {
@@ -73,10 +82,33 @@ void drawLine(Framebuffer& fb, const FrameContext& frame, const ShadedVertex& a,
       color = a.front + u * (b.front - a.front);
     }
     writeFragment(fb, frame, x, y, s->a.z + t * (s->b.z - s->a.z), color);
-  });
+  }, rows.begin, rows.end);
 }
 
 }  // namespace
+
+void checkPointAndLineFill(const FrameContext& frame, const Scene& scene, int passes) {
+  const double screen = double(frame.width) * double(frame.height);
+  double fill = 0;
+  for (const Object& object : scene.objects) {
+    const Mesh& mesh = *object.mesh;
+    if (!mesh.hasPointsOrLines()) continue;
+    const Mat4 clipFromObject = frame.clipFromView * frame.viewFromWorld * object.worldFromObject;
+    const auto clip = [&](std::uint32_t i) { return clipFromObject * Vec4(mesh.positions[i], 1); };
+    const double w = double(scene.lineWidth) + 2;
+    for (std::size_t i = 0; i + 1 < mesh.lineIndices.size(); i += 2)
+      if (const auto s = windowSegment(frame, clip(mesh.lineIndices[i]), clip(mesh.lineIndices[i + 1])))
+        fill += std::min(screen, (double(glm::length(Vec2(s->b - s->a))) + w) * w);
+    const double point = double(scene.pointSize) + 2;
+    fill += double(mesh.pointIndices.size()) * std::min(screen, point * point);
+  }
+  fill *= std::max(1, passes);
+  if (fill > double(scene.maxFill))
+    throw InputError("the points and lines would cover about " + withThousands(std::uint64_t(fill)) +
+                     " pixels over " + std::to_string(std::max(1, passes)) + " passes, more than the limit of " +
+                     withThousands(scene.maxFill) + " (narrower --line-width or --point-size, fewer --samples, or raise it "
+                     "with --max-fill)");
+}
 
 bool hasPointsOrLines(const Scene& scene) {
   return std::any_of(scene.objects.begin(), scene.objects.end(),
@@ -87,21 +119,33 @@ void drawPointsAndLines(Framebuffer& fb, const FrameContext& frame, const Scene&
                         std::vector<ShadedVertex>& vertices) {
   // The vertex stage lights vertices for flat and Gouraud shading: points and lines have no pixels
   // to light in between, so Phong shading lights them at their vertices too.
-  FrameContext litFrame;
-  bool copied = false;
-  for (const Object& object : scene.objects) {
-    const Mesh& mesh = *object.mesh;
-    if (!mesh.hasPointsOrLines()) continue;
-    if (!copied && frame.shading == Shading::Phong) {
-      litFrame = frame;
-      litFrame.shading = Shading::Gouraud;
-      copied = true;
-    }
-    prepareVertices(copied ? litFrame : frame, object, vertices);
-    for (std::size_t i = 0; i + 1 < mesh.lineIndices.size(); i += 2)
-      drawLine(fb, frame, vertices[mesh.lineIndices[i]], vertices[mesh.lineIndices[i + 1]], scene.lineWidth);
-    for (std::uint32_t i : mesh.pointIndices) drawPoint(fb, frame, vertices[i], scene.pointSize);
+  FrameContext litFrame = frame;
+  if (frame.shading == Shading::Phong) litFrame.shading = Shading::Gouraud;
+  // Every object's vertices first (one after another in `vertices`), then the primitives in
+  // their order, by bands of tile rows in parallel: a pixel belongs to one band, so it sees the
+  // same fragments in the same order as if drawn by one thread, and each tile is cleared by one.
+  std::vector<std::pair<const Object*, std::size_t>> drawn;  // objects with primitives, where their vertices start
+  std::size_t total = 0;
+  for (const Object& object : scene.objects)
+    if (object.mesh->hasPointsOrLines()) drawn.push_back({&object, total}), total += object.mesh->positions.size();
+  if (drawn.empty()) return;
+  vertices.resize(total);
+  std::vector<ShadedVertex> one;
+  for (const auto& [object, first] : drawn) {
+    prepareVertices(litFrame, *object, one);
+    std::copy(one.begin(), one.end(), vertices.begin() + long(first));
   }
+  const int bands = (frame.height + kTileSize - 1) / kTileSize;
+  tbb::parallel_for(0, bands, [&](int band) {
+    const Rows rows{band * kTileSize, std::min(frame.height, (band + 1) * kTileSize)};
+    for (const auto& [object, first] : drawn) {
+      const Mesh& mesh = *object->mesh;
+      const ShadedVertex* v = vertices.data() + first;
+      for (std::size_t i = 0; i + 1 < mesh.lineIndices.size(); i += 2)
+        drawLine(fb, frame, v[mesh.lineIndices[i]], v[mesh.lineIndices[i + 1]], scene.lineWidth, rows);
+      for (std::uint32_t i : mesh.pointIndices) drawPoint(fb, frame, v[i], scene.pointSize, rows);
+    }
+  });
 }
 
 }  // namespace illum

@@ -22,6 +22,9 @@ namespace illum {
 // Draws every object's points and lines; `vertices` is working memory.
 void drawPointsAndLines(Framebuffer& fb, const FrameContext& frame, const Scene& scene,
                         std::vector<ShadedVertex>& vertices);
+// Throws InputError when the points and lines, drawn `passes` times, would cover more pixels than
+// scene.maxFill (each segment's clipped length plus its width, times its width; each point's square).
+void checkPointAndLineFill(const FrameContext& frame, const Scene& scene, int passes);
 // Whether any object has points or lines to draw.
 bool hasPointsOrLines(const Scene& scene);
 

@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <utility>
 #include <optional>
 
 namespace illum {
@@ -48,31 +50,66 @@ inline std::pair<Real, Real> toSegment(const Vec2& p, const Vec2& a, const Vec2&
   return {glm::length(a + t * d - p), t};
 }
 
+// The x range, on the horizontal line at height py, of the points within `radius` of the segment ab
+// (a capsule: the union of the discs at its ends and the band between them, one interval since it
+// is convex); empty (lo > hi) when the line misses it.
+inline std::pair<Real, Real> capsuleSpan(const Vec2& a, const Vec2& b, Real radius, Real py) {
+  Real lo = std::numeric_limits<Real>::infinity(), hi = -lo;
+  const auto disc = [&](const Vec2& c) {
+    const Real dy = py - c.y, h2 = radius * radius - dy * dy;
+    if (h2 < 0) return;
+    const Real h = std::sqrt(h2);
+    lo = std::min(lo, c.x - h), hi = std::max(hi, c.x + h);
+  };
+  disc(a);
+  disc(b);
+  const Vec2 d = b - a;
+  const Real length = glm::length(d);
+  if (length > 0) {
+    // The band: |cross(p − a, u)| ≤ radius and 0 ≤ dot(p − a, u) ≤ length, with u = d / length.
+    const Vec2 u = d / length;
+    const Real dy = py - a.y;
+    Real bandLo = -std::numeric_limits<Real>::infinity(), bandHi = -bandLo;
+    const auto within = [&](Real coefficient, Real offset, Real min, Real max) {  // min ≤ coefficient·x + offset ≤ max
+      if (coefficient == 0) {
+        if (offset < min || offset > max) bandLo = 1, bandHi = 0;
+        return;
+      }
+      Real x0 = (min - offset) / coefficient, x1 = (max - offset) / coefficient;
+      if (x0 > x1) std::swap(x0, x1);
+      bandLo = std::max(bandLo, x0), bandHi = std::min(bandHi, x1);
+    };
+    within(u.y, -dy * u.x, -radius, radius);  // (x − a.x)·u.y − dy·u.x, with x relative to a.x
+    within(u.x, dy * u.y, 0, length);         // (x − a.x)·u.x + dy·u.y
+    if (bandLo <= bandHi) lo = std::min(lo, a.x + bandLo), hi = std::max(hi, a.x + bandHi);
+  }
+  return {lo, hi};
+}
+
 // Calls visit(x, y, t) for every pixel of the frame the segment `width` pixels wide covers, with t
-// (0..1) where along the window-space segment the pixel's sample is nearest.
+// (0..1) where along the window-space segment the pixel's sample is nearest. Row by row, over the
+// span capsuleSpan finds (a pixel wider on each side, for rounding), each pixel tested exactly:
+// the work follows the pixels covered, not the segment's bounding box.
+// Only rows [rowBegin, rowEnd) are visited: bands of rows can be drawn by different threads.
 template <class Visit>
-void forEachSegmentPixel(const FrameContext& frame, const WindowSegment& s, Real width, Visit&& visit) {
+void forEachSegmentPixel(const FrameContext& frame, const WindowSegment& s, Real width, Visit&& visit, int rowBegin = 0,
+                         int rowEnd = std::numeric_limits<int>::max()) {
   const Vec2 sample(Real(frame.sample.x) / 256, Real(frame.sample.y) / 256);
   const Real radius = width / 2;
-  const Real length = glm::length(Vec2(s.b - s.a));
-  // In pieces of at most 16 pixels, each tested over its own small box.
-  const int pieces = std::max(1, int(std::ceil(length / 16)));
   const Vec2 a(s.a), b(s.b);
-  for (int k = 0; k < pieces; ++k) {
-    const Real t0 = Real(k) / Real(pieces), t1 = Real(k + 1) / Real(pieces);
-    const Vec2 pa = a + t0 * (b - a), pb = a + t1 * (b - a);
-    const int x0 = std::max(0, int(std::floor(std::min(pa.x, pb.x) - radius - 1)));
-    const int x1 = std::min(frame.width - 1, int(std::ceil(std::max(pa.x, pb.x) + radius + 1)));
-    const int y0 = std::max(0, int(std::floor(std::min(pa.y, pb.y) - radius - 1)));
-    const int y1 = std::min(frame.height - 1, int(std::ceil(std::max(pa.y, pb.y) + radius + 1)));
-    for (int y = y0; y <= y1; ++y)
-      for (int x = x0; x <= x1; ++x) {
-        const Vec2 p(Real(x) + Real(0.5) + sample.x, Real(y) + Real(0.5) + sample.y);
-        const auto [d, t] = toSegment(p, a, b);
-        // The boxes overlap: a pixel belongs to the piece its nearest point lies in, once.
-        if (d > radius || (t < t0 && k > 0) || (t >= t1 && k + 1 < pieces)) continue;
-        visit(x, y, t);
-      }
+  const int y0 = std::max(rowBegin, int(std::floor(std::min(a.y, b.y) - radius - 1)));
+  const int y1 = std::min(std::min(frame.height, rowEnd) - 1, int(std::ceil(std::max(a.y, b.y) + radius + 1)));
+  for (int y = y0; y <= y1; ++y) {
+    const Real py = Real(y) + Real(0.5) + sample.y;
+    const auto [lo, hi] = capsuleSpan(a, b, radius, py);
+    if (!(lo <= hi)) continue;
+    const int x0 = std::max(0, int(std::floor(lo - Real(0.5) - sample.x)) - 1);
+    const int x1 = std::min(frame.width - 1, int(std::ceil(hi - Real(0.5) - sample.x)) + 1);
+    for (int x = x0; x <= x1; ++x) {
+      const Vec2 p(Real(x) + Real(0.5) + sample.x, py);
+      const auto [d, t] = toSegment(p, a, b);
+      if (d <= radius) visit(x, y, t);
+    }
   }
 }
 
