@@ -19,11 +19,11 @@ jobs=$(nproc 2>/dev/null || echo 2)
 
 cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
   -DILLUM_FUZZ=ON -DILLUM_MESA_PARITY=OFF >/dev/null
-cmake --build build-fuzz -j "$jobs" --target illum_scene_fuzzer illum_model_fuzzer
+cmake --build build-fuzz -j "$jobs" --target illum_scene_fuzzer illum_model_fuzzer illum_environment_fuzzer
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-mkdir -p "$work/scene" "$work/model" fuzz/artifacts
+mkdir -p "$work/scene" "$work/model" "$work/hdr" fuzz/artifacts
 
 # Seeds: every scene file of the repository; for models, the extension index as the first byte.
 find examples tests/scenes tests/regressions -name '*.json' -exec cp {} "$work/scene/" \;
@@ -38,7 +38,12 @@ seed() {  # seed FILE: prepend the byte that selects FILE's extension
     fi
   done
 }
-for f in tests/regressions/*; do seed "$f"; done
+for f in tests/regressions/*; do if [ -f "$f" ]; then seed "$f"; fi; done
+# Environment maps: the regressions, and a whole 8×2 run-length encoded map and a flat 4×2 one.
+cp tests/regressions/*.hdr "$work/hdr/"
+{ printf '#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 8\n'
+  for row in 1 2; do printf '\002\002\000\010'; for c in 1 2 3 4; do printf '\210\200'; done; done; } > "$work/hdr/rle.hdr"
+{ printf '#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 4\n'; head -c 32 /dev/zero | tr '\0' '\200'; } > "$work/hdr/flat.hdr"
 if [ -d /usr/share/assimp/models ]; then
   while IFS= read -r f; do seed "$f"; done < <(find /usr/share/assimp/models -type f -size -16k | sort)
 fi
@@ -60,4 +65,5 @@ run() {  # run TARGET CORPUS RUNS: RUNS applies with --ci
 }
 run scene_fuzzer "$work/scene" 150000
 run model_fuzzer "$work/model" 2000
-echo "fuzz: 2 passed, 0 failed"
+run environment_fuzzer "$work/hdr" 200000
+echo "fuzz: 3 passed, 0 failed"

@@ -224,7 +224,9 @@ TEST(BoundedMemory, TurntableFramesAreEncodedAsTheyAreDrawn) {
   const MeasuredRun r = runIllumMeasured("render " + (dir / "m.obj").string() + " --turntable 240 --resolution 640,480 "
                                          "--samples 1 -o " + (dir / "t.gif").string());
   EXPECT_EQ(r.exitCode, 0) << r.err;
-  EXPECT_LT(r.peakMiB, 150 * kMemoryGrowth);
+#if !defined(__SANITIZE_ADDRESS__)  // AddressSanitizer's quarantine keeps 256 MB of freed frames resident
+  EXPECT_LT(r.peakMiB, 150);
+#endif
   EXPECT_TRUE(fs::exists(dir / "t.gif"));
 }
 
