@@ -141,7 +141,7 @@ TEST(CliRender, MissingSceneFails) {
   TempDir dir;
   const RunResult r = run("render " + (dir / "nope.json").string() + " -o " + (dir / "out.png").string());
   EXPECT_EQ(r.exitCode, 2);
-  EXPECT_NE(r.err.find("cannot open the scene file"), std::string::npos);
+  EXPECT_NE(r.err.find("nope.json: no such scene file"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir / "out.png"));
 }
 
