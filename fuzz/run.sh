@@ -19,11 +19,12 @@ jobs=$(nproc 2>/dev/null || echo 2)
 
 cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
   -DILLUM_FUZZ=ON -DILLUM_MESA_PARITY=OFF >/dev/null
-cmake --build build-fuzz -j "$jobs" --target illum_scene_fuzzer illum_model_fuzzer illum_environment_fuzzer
+cmake --build build-fuzz -j "$jobs" --target illum_scene_fuzzer illum_model_fuzzer illum_environment_fuzzer \
+  illum_output_template_fuzzer
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-mkdir -p "$work/scene" "$work/model" "$work/hdr" fuzz/artifacts
+mkdir -p "$work/scene" "$work/model" "$work/hdr" "$work/template" fuzz/artifacts
 
 # Seeds: every scene file of the repository; for models, the extension index as the first byte.
 find examples tests/scenes tests/regressions -name '*.json' -exec cp {} "$work/scene/" \;
@@ -39,6 +40,11 @@ seed() {  # seed FILE: prepend the byte that selects FILE's extension
   done
 }
 for f in tests/regressions/*; do if [ -f "$f" ]; then seed "$f"; fi; done
+# Output templates: the documented ones, over inputs named alone, through a link and from a folder.
+printf '{dir}/{name}\n\np.obj\nq.obj\n' > "$work/template/1"
+printf '{dir}/{stem}.png\nthumbs\n../p.obj\nmodels/a/m.obj\nmodels/c/m.obj\n' > "$work/template/2"
+printf '{n}.png\nout\nlink.obj\np.obj\n' > "$work/template/3"
+printf '{stem}_{frame:04}.png\n/abs\n/tmp/../p.obj\n' > "$work/template/4"
 # Environment maps: the regressions, and a whole 8×2 run-length encoded map and a flat 4×2 one.
 cp tests/regressions/*.hdr "$work/hdr/"
 { printf '#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 8\n'
@@ -66,4 +72,5 @@ run() {  # run TARGET CORPUS RUNS: RUNS applies with --ci
 run scene_fuzzer "$work/scene" 150000
 run model_fuzzer "$work/model" 2000
 run environment_fuzzer "$work/hdr" 200000
-echo "fuzz: 3 passed, 0 failed"
+run output_template_fuzzer "$work/template" 100000
+echo "fuzz: 4 passed, 0 failed"
