@@ -25,8 +25,4 @@ class AnimationEncoder {
 std::unique_ptr<AnimationEncoder> makeGifEncoder(int width, int height, int delayMs);
 std::unique_ptr<AnimationEncoder> makeWebpEncoder(int width, int height, int delayMs);
 
-// Every frame at once, through the encoders above.
-std::vector<std::uint8_t> encodeGif(const std::vector<Image>& frames, int delayMs);
-std::vector<std::uint8_t> encodeWebp(const std::vector<Image>& frames, int delayMs);
-
 }  // namespace illum

@@ -140,11 +140,6 @@ class WebpEncoder final : public AnimationEncoder {
   WebPConfig config_{};
 };
 
-std::vector<std::uint8_t> encodeAll(AnimationEncoder& encoder, const std::vector<Image>& frames) {
-  for (const Image& frame : frames) encoder.add(frame);
-  return encoder.finish();
-}
-
 }  // namespace
 
 std::unique_ptr<AnimationEncoder> makeGifEncoder(int width, int height, int delayMs) {
@@ -153,16 +148,6 @@ std::unique_ptr<AnimationEncoder> makeGifEncoder(int width, int height, int dela
 
 std::unique_ptr<AnimationEncoder> makeWebpEncoder(int width, int height, int delayMs) {
   return std::make_unique<WebpEncoder>(width, height, delayMs);
-}
-
-std::vector<std::uint8_t> encodeGif(const std::vector<Image>& frames, int delayMs) {
-  if (frames.empty()) throw Error("cannot encode a GIF of no frames");
-  return encodeAll(*makeGifEncoder(frames[0].width, frames[0].height, delayMs), frames);
-}
-
-std::vector<std::uint8_t> encodeWebp(const std::vector<Image>& frames, int delayMs) {
-  if (frames.empty()) throw Error("cannot encode a WebP of no frames");
-  return encodeAll(*makeWebpEncoder(frames[0].width, frames[0].height, delayMs), frames);
 }
 
 }  // namespace illum

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 
 namespace illum {
 namespace {
@@ -16,9 +17,9 @@ namespace {
 constexpr std::size_t kVertexGrain = 4096;  // vertices per parallel task
 
 // Every vertex's clip position and colour (`front`), as the header says.
-void prepareVertices(const FrameContext& litFrame, const Object& object, std::vector<ShadedVertex>& out) {
+// `out` holds one slot per vertex of the mesh.
+void prepareVertices(const FrameContext& litFrame, const Object& object, std::span<ShadedVertex> out) {
   const Mesh& mesh = *object.mesh;
-  out.resize(mesh.positions.size());
   const Mat4 clipFromObject = litFrame.clipFromView * litFrame.viewFromWorld * object.worldFromObject;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, out.size(), kVertexGrain), [&](const auto& r) {
     if (!mesh.normals.empty()) {
@@ -130,11 +131,8 @@ void drawPointsAndLines(Framebuffer& fb, const FrameContext& frame, const Scene&
     if (object.mesh->hasPointsOrLines()) drawn.push_back({&object, total}), total += object.mesh->positions.size();
   if (drawn.empty()) return;
   vertices.resize(total);
-  std::vector<ShadedVertex> one;
-  for (const auto& [object, first] : drawn) {
-    prepareVertices(litFrame, *object, one);
-    std::copy(one.begin(), one.end(), vertices.begin() + long(first));
-  }
+  for (const auto& [object, first] : drawn)
+    prepareVertices(litFrame, *object, std::span<ShadedVertex>(vertices).subspan(first, object->mesh->positions.size()));
   const int bands = (frame.height + kTileSize - 1) / kTileSize;
   tbb::parallel_for(0, bands, [&](int band) {
     const Rows rows{band * kTileSize, std::min(frame.height, (band + 1) * kTileSize)};
