@@ -415,7 +415,8 @@ int runBatch(const RenderOptions& o, const std::vector<BatchJob>& allJobs) {
       inputErrors += input;
       line["ok"] = false;
       line["error"] = e.what();
-      progress.say(std::string("illum: error: ") + (std::string(e.what()).rfind(job.input, 0) == 0 ? "" : job.input + ": ") + e.what());
+      const std::string what = e.what(), name = job.input == "-" ? "standard input" : job.input;
+      progress.say("illum: error: " + (what.rfind(name, 0) == 0 ? "" : name + ": ") + what);
     }
     ++done;
     // File names and the messages that quote them are bytes, not always UTF-8: a byte that is not

@@ -370,7 +370,7 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o, std::vector<std::string>* i
       ->check(wholeRange(1, 1 << 20));
   cmd.add_option("--max-fill", o.limits.maxFill,
                  "Refuse pictures whose points and lines would cover more pixels, summed over samples [1000000000]")
-      ->check(CLI::PositiveNumber);
+      ->check(wholeRange(1, 1'000'000'000'000'000));
   cmd.add_option("--max-json-depth", o.limits.maxJsonDepth, "Refuse scene files whose arrays and objects nest deeper [64]")
       ->check(wholeRange(1, 10000));
   cmd.add_option("--threads", o.threads, "Worker threads (default: every core); the picture is the same for any count")
