@@ -40,7 +40,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // The header checks run here too, in this process, so that their coverage guides the fuzzer and
   // their faults are caught here rather than contained in the child.
   try {
-    illum::precheckModelFile(file, options.limits);
+    illum::precheckModelFile(file, options.limits, kExtensions[data[0] % kExtensions.size()]);
   } catch (const illum::InputError&) {
   }
   try {
