@@ -29,7 +29,8 @@ void removeScratch() {
 }  // namespace
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
-  // The scratch tree: models in folders, a link to one, an output folder with a dangling link.
+  // The scratch tree: models in folders, a link to one, an output folder with a dangling link. The
+  // fuzzer works inside it (run.sh gives libFuzzer absolute paths).
   std::string scratch = (fs::temp_directory_path() / "illum-template-fuzz-XXXXXX").string();
   if (!::mkdtemp(scratch.data())) std::abort();
   gScratch = scratch;

@@ -62,7 +62,7 @@ run() {  # run TARGET CORPUS RUNS: RUNS applies with --ci
   [ "${budget[0]}" = "-seed=1" ] && runs=(-runs="$3")
   echo "illum: fuzzing $1 ($label${runs:+, $3 runs})"
   if ! "build-fuzz/fuzz/illum_$1" "${budget[@]}" "${runs[@]}" -timeout=20 -rss_limit_mb=2048 -max_len=65536 \
-      -artifact_prefix=fuzz/artifacts/ -print_final_stats=1 "$2" > "$work/$1.log" 2>&1; then
+      -artifact_prefix="$PWD/fuzz/artifacts/" -print_final_stats=1 "$2" > "$work/$1.log" 2>&1; then
     grep -v '^#' "$work/$1.log" | tail -n 60
     echo "illum: $1 found a crash: fuzz/artifacts/ holds the input" >&2
     return 1
