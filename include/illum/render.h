@@ -79,7 +79,7 @@ class Renderer {
   // tracers, tile by tile), so that a long render can show its progress.
   void onProgress(std::function<void(double)> progress) { progress_ = std::move(progress); }
 
-  struct State;  // defined by the pipeline
+  struct State;  // defined by render/renderer.cpp
 
  private:
   std::unique_ptr<State> state_;

@@ -30,7 +30,7 @@ void PackChannels(const float* c, std::size_t n, std::uint32_t* out) {
 HWY_AFTER_NAMESPACE();
 
 #if HWY_ONCE
-#include "raster/framebuffer.h"
+#include "math/unorm8.h"
 
 #include <gtest/gtest.h>
 #include <hwy/targets.h>

@@ -1,8 +1,6 @@
 #include "raster/draw.h"
 
 #include "raster/fragment.h"
-#include "raster/labels.h"
-#include "trace/ambient_occlusion.h"
 
 #include <algorithm>
 #include <cstring>
@@ -24,7 +22,7 @@ DrawTarget::DrawTarget(const FrameContext& frame, const Scene& scene, Framebuffe
     setups.push_back({frame.lights, frame.lightModel, modelOf(o.material, frame.model), o.material});
     colored.push_back(!o.mesh->colors.empty());
     translucent.push_back(frame.blend && isTranslucent(o));
-    if (drawnTexture(o) || mapsDrawn(frame, o)) litFromSurface = false;
+    if (drawnTexture(o) || mapsDrawn(o, frame.litPerPixel())) litFromSurface = false;
   }
   // Objects that share a material usually come together: each is compared with the last few
   // owners found, not with every object before it.
@@ -79,7 +77,7 @@ void recordProbe(const DrawTarget& target, const DrawRecord& record, const std::
     p.material = withVertexColor(object.material, w[0] * v[0].color() + w[1] * v[1].color() + w[2] * v[2].color());
   p.texelIsBaseColor = texelIsBaseColor;
   if (texel && texelIsBaseColor) p.material = withBaseTexel(p.material, *texel);
-  if (mapped) p.material = mapped->material;
+  if (mapped) p.material = mapped->point.material;
   if (target.frame.shading == Shading::Flat) {
     const Real* provoking = record.provoking(l);
     p.eyePosition = Vec3(provoking[0], provoking[1], provoking[2]);
@@ -103,10 +101,9 @@ void drawPixels(const DrawTarget& target, const DrawRecord& record, const PixelR
   const TriangleSetup& t = record.setup;
   const FrameContext& frame = target.frame;
   const AttributeLayout& l = target.layout(record);
-  const bool vertexColors = !object.mesh->colors.empty();
   const Texture* texture = kTextured ? object.diffuseTexture.get() : nullptr;
-  const bool baseTexture = kTextured && texturesBaseColor(frame, object);
-  const bool mapped = mapsDrawn(frame, object);
+  const bool baseTexture = kTextured && texelIsBaseColor(object, frame.model, frame.litPerPixel());
+  const bool mapped = mapsDrawn(object, frame.litPerPixel());
   MappedSurface surface;
   const int probeRow = kProbe ? frame.height - 1 - target.probe->y : -1;  // GL rows run bottom up
   // A multisample pass tests coverage and depth at the sample, and shades at the pixel centre.
@@ -120,15 +117,17 @@ void drawPixels(const DrawTarget& target, const DrawRecord& record, const PixelR
     ++fragments;
     Color4 c;
     Vec4 texel(1);
-    if constexpr (kTextured) texel = sampleDiffuseTexture(*texture, record, l, l0, l1, l2);
     if constexpr (kShading == Shading::Flat) c = record.flat;
     else if constexpr (kShading == Shading::Gouraud) c = gouraudColor(record, l, perspectiveWeights(t, l0, l1, l2));
-    else if (mapped)
-      c = shadeMappedFragment(frame, surface = mappedSurface(frame, object, record, l, l0, l1, l2,
-                                                             kTextured && baseTexture ? &texel : nullptr));
-    else
-      c = shadePhongFragment(frame, object.material, vertexColors, record, l, perspectiveWeights(t, l0, l1, l2),
-                             kTextured && baseTexture ? &texel : nullptr);
+    if (kShading == Shading::Phong && mapped) {
+      surface = mappedSurface(frame, object, record, l, l0, l1, l2);
+      c = shadeMappedFragment(frame, surface);
+      texel = surface.point.texel;
+    } else {
+      if constexpr (kTextured) texel = sampleDiffuseTexture(*texture, record, l, l0, l1, l2);
+      if constexpr (kShading == Shading::Phong)
+        c = shadePhongFragment(frame, object, record, l, perspectiveWeights(t, l0, l1, l2), kTextured ? &texel : nullptr);
+    }
     const Color4 lit = c;
     // GL_MODULATE: the lit colour times the texel, alpha included (unless it was the base colour).
     if constexpr (kTextured)
@@ -171,38 +170,12 @@ void drawRecord(const DrawTarget& target, const DrawRecord& record, const PixelR
   }
 }
 
-namespace {
-
-// Ambient occlusion, the linear values, the display encoding and the labels: the last steps of
-// every rasterized picture.
-void encodeAndLabel(const Scene& scene, RenderStats& stats, Image& image, FloatImage* linear) {
-  applyAmbientOcclusion(scene, image);
-  if (linear) {
-    *linear = FloatImage{image.width, image.height, std::vector<float>(image.rgba.size())};
-    for (std::size_t i = 0; i < image.rgba.size(); ++i) linear->rgba[i] = float(image.rgba[i]) / 255;
-  }
-  applyDisplay(image, scene.display, &scene.background);
-  stats.labelsSkipped = !drawLabels(image, scene);
-}
-
-}  // namespace
-
-void finishFrame(const Framebuffer& fb, const Scene& scene, RenderStats& stats, Image& image, FloatImage* linear) {
-  finishFrame(fb.toImage(image, scene.background), scene, stats, image, linear);
-}
-
-void finishFrame(std::size_t pixelsDrawn, const Scene& scene, RenderStats& stats, Image& image, FloatImage* linear) {
-  stats.pixelsDrawn = pixelsDrawn;
-  encodeAndLabel(scene, stats, image, linear);
-}
-
-void finishImage(const Scene& scene, RenderStats& stats, Image& image, FloatImage* linear) {
-  std::uint8_t background[4];
-  for (int c = 0; c < 4; ++c) background[c] = toUnorm8(scene.background[c]);
-  stats.pixelsDrawn = 0;
-  for (std::size_t i = 0; i < image.rgba.size(); i += 4)
-    stats.pixelsDrawn += std::memcmp(&image.rgba[i], background, 4) != 0;
-  encodeAndLabel(scene, stats, image, linear);
+std::size_t pixelsUnlike(const Image& image, const Color4& background) {
+  std::uint8_t bytes[4];
+  for (int c = 0; c < 4; ++c) bytes[c] = toUnorm8(background[c]);
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < image.rgba.size(); i += 4) n += std::memcmp(&image.rgba[i], bytes, 4) != 0;
+  return n;
 }
 
 namespace {

@@ -96,16 +96,7 @@ void recordProbe(const DrawTarget& target, const DrawRecord& record, const std::
 // farthest to the nearest. Ties keep scene order.
 std::vector<const Object*> drawingOrder(const Scene& scene, const FrameContext& frame);
 
-// The finished picture: the framebuffer as an image, the pixels drawn counted (labels aside), its
-// linear values copied to `linear` if asked, the scene's display encoding applied, then the
-// scene's labels drawn over it.
-void finishFrame(const Framebuffer& fb, const Scene& scene, RenderStats& stats, Image& image,
-                 FloatImage* linear = nullptr);
-// The same for an image the pipeline copied tile by tile, `pixelsDrawn` of them unlike the background.
-void finishFrame(std::size_t pixelsDrawn, const Scene& scene, RenderStats& stats, Image& image,
-                 FloatImage* linear = nullptr);
-// The same for a picture already made (a multisampled one, resolved): pixels unlike the background
-// counted, linear values, display encoding, labels.
-void finishImage(const Scene& scene, RenderStats& stats, Image& image, FloatImage* linear = nullptr);
+// The pixels of a finished picture unlike the background (as the framebuffer converts it).
+std::size_t pixelsUnlike(const Image& image, const Color4& background);
 
 }  // namespace illum

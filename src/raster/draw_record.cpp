@@ -3,6 +3,7 @@
 #include "raster/clip.h"
 #include "raster/tile_raster.h"
 #include "raster/tiny_batch.h"
+#include "shading/material_at.h"
 
 #include <cstring>
 #include <optional>

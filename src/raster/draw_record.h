@@ -21,12 +21,6 @@
 
 namespace illum {
 
-// The texture that modulates an object's fragments: its diffuse texture, when its mesh has the
-// coordinates to look it up; otherwise null.
-inline const Texture* drawnTexture(const Object& object) {
-  return object.diffuseTexture && !object.mesh->uvs.empty() ? object.diffuseTexture.get() : nullptr;
-}
-
 // Where each per-vertex value sits among a vertex's `stride` Reals; −1: not carried.
 struct AttributeLayout {
   int stride = 0;

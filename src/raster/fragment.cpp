@@ -18,14 +18,14 @@ PhongSurface phongSurface(const FrameContext& frame, bool vertexColors, const Dr
   return s;
 }
 
-Color4 shadePhongFragment(const FrameContext& frame, const Material& baseMaterial, bool vertexColors,
-                          const DrawRecord& r, const AttributeLayout& l, const std::array<Real, 3>& w,
-                          const Vec4* baseTexel) {
+Color4 shadePhongFragment(const FrameContext& frame, const Object& object, const DrawRecord& r,
+                          const AttributeLayout& l, const std::array<Real, 3>& w, const Vec4* texel) {
+  const bool vertexColors = !object.mesh->colors.empty();
   const PhongSurface p = phongSurface(frame, vertexColors, r, l, w);
-  Material material = vertexColors ? withVertexColor(baseMaterial, p.color) : baseMaterial;
-  if (baseTexel) material = withBaseTexel(material, *baseTexel);
+  const PointMaterial point = materialAt(object, frame.model, true, vertexColors ? &p.color : nullptr,
+                                         [&](const Texture&) { return texel ? *texel : Vec4(1); });
   const SurfaceGeometry s{p.position, p.normal, viewerDirection(p.position, frame.lightModel.localViewer)};
-  return clampedColor(evaluateTerms(frame.lights, frame.lightModel, material, modelOf(material, frame.model), s), material);
+  return clampedColor(evaluateTerms(frame.lights, frame.lightModel, point.material, point.model, s), point.material);
 }
 
 TexturePoint texturePoint(const DrawRecord& r, const AttributeLayout& l, Real l0, Real l1, Real l2) {
@@ -50,24 +50,20 @@ Vec4 sampleAt(const Texture& texture, const TexturePoint& p) {
 }
 
 MappedSurface mappedSurface(const FrameContext& frame, const Object& object, const DrawRecord& r,
-                            const AttributeLayout& l, Real l0, Real l1, Real l2, const Vec4* baseTexel) {
+                            const AttributeLayout& l, Real l0, Real l1, Real l2) {
   const bool vertexColors = !object.mesh->colors.empty();
   const PhongSurface p = phongSurface(frame, vertexColors, r, l, perspectiveWeights(r.setup, l0, l1, l2));
-  Material material = vertexColors ? withVertexColor(object.material, p.color) : object.material;
-  if (baseTexel) material = withBaseTexel(material, *baseTexel);
   const TexturePoint at = texturePoint(r, l, l0, l1, l2);
-  const MaterialMaps& maps = object.maps;
-  MapTexels texels;
-  if (maps.metallicRoughness) texels.metallicRoughness = sampleAt(*maps.metallicRoughness, at);
-  if (maps.emissive) texels.emissive = sampleAt(*maps.emissive, at);
-  MappedSurface s{p.position, p.normal, withMapTexels(material, texels)};
-  if (maps.normal) {
+  MappedSurface s{p.position, p.normal,
+                  materialAt(object, frame.model, true, vertexColors ? &p.color : nullptr,
+                             [&](const Texture& texture) { return sampleAt(texture, at); })};
+  if (s.point.normalTexel) {
     // The map bends the front side's normal; two-sided lighting's back faces take its opposite.
     const bool back = frame.lightModel.twoSided && !r.setup.frontFacing;
     const VertexValues v[3] = {{r.vertex(0, l), l}, {r.vertex(1, l), l}, {r.vertex(2, l), l}};
     const TangentFrame tangents =
         triangleTangents({v[0].position(), v[1].position(), v[2].position()}, {v[0].uv(), v[1].uv(), v[2].uv()});
-    const Vec3 front = normalFromMap(back ? -p.normal : p.normal, tangents, sampleAt(*maps.normal, at), maps.normalScale);
+    const Vec3 front = normalFromMap(back ? -p.normal : p.normal, tangents, *s.point.normalTexel, object.maps.normalScale);
     s.normal = back ? -front : front;
   }
   return s;
@@ -75,8 +71,7 @@ MappedSurface mappedSurface(const FrameContext& frame, const Object& object, con
 
 Color4 shadeMappedFragment(const FrameContext& frame, const MappedSurface& s) {
   const SurfaceGeometry g{s.position, s.normal, viewerDirection(s.position, frame.lightModel.localViewer)};
-  return clampedColor(evaluateTerms(frame.lights, frame.lightModel, s.material, modelOf(s.material, frame.model), g),
-                      s.material);
+  return clampedColor(evaluateTerms(frame.lights, frame.lightModel, s.point.material, s.point.model, g), s.point.material);
 }
 
 }  // namespace illum

@@ -7,6 +7,7 @@
 #include "raster/draw_record.h"
 #include "raster/frame_context.h"
 #include "raster/setup.h"
+#include "shading/material_at.h"
 
 #include <illum/texture.h>
 
@@ -40,23 +41,11 @@ PhongSurface phongSurface(const FrameContext& frame, bool vertexColors, const Dr
                           const std::array<Real, 3>& w);
 
 // The per-pixel lighting of Phong shading, one pixel at a time (the binned pipeline lights its
-// pixels in batches, shade_tile.cpp, with the same equation). With `baseTexel`, the texel tints
-// the base colour before lighting (texturesBaseColor) instead of modulating the lit colour.
-Color4 shadePhongFragment(const FrameContext& frame, const Material& material, bool vertexColors, const DrawRecord& r,
-                          const AttributeLayout& l, const std::array<Real, 3>& w, const Vec4* baseTexel = nullptr);
-
-// Whether an object's texture is its base colour, multiplied in before lighting: a physically
-// based model lit per pixel (glTF's baseColorTexture). Otherwise GL_MODULATE multiplies the lit
-// colour by the texel, as GL does (and as the per-vertex frequencies must).
-inline bool texturesBaseColor(const FrameContext& frame, const Object& object) {
-  return drawnTexture(object) && frame.shading == Shading::Phong &&
-         modelOf(object.material, frame.model) == LightingModel::CookTorrance;
-}
-
-// The material with its base colour (or vertex colour) multiplied by a texel.
-inline Material withBaseTexel(const Material& m, const Vec4& texel) {
-  return withVertexColor(m, Color4(physicalOf(m).baseColor, m.diffuse.a) * texel);
-}
+// pixels in batches, shade_tile.cpp, with the same equation), of an object without maps. With
+// `texel`, the object's texel at the pixel: it tints the base colour before lighting where
+// texelIsBaseColor says so (the caller multiplies the lit colour by it otherwise).
+Color4 shadePhongFragment(const FrameContext& frame, const Object& object, const DrawRecord& r,
+                          const AttributeLayout& l, const std::array<Real, 3>& w, const Vec4* texel = nullptr);
 
 // Where a pixel falls on the textures: its perspective-correct uv, and how much uv changes one
 // pixel to the right and one up (the uv evaluated there), which sets each texture's footprint.
@@ -73,22 +62,16 @@ inline Vec4 sampleDiffuseTexture(const Texture& texture, const DrawRecord& r, co
   return sampleAt(texture, texturePoint(r, l, l0, l1, l2));
 }
 
-// Whether glTF's other maps (metallic-roughness, normal, emissive) shape an object's pixels: with
-// per-pixel shading, where its mesh has uvs.
-inline bool mapsDrawn(const FrameContext& frame, const Object& object) {
-  return object.maps.any() && !object.mesh->uvs.empty() && frame.shading == Shading::Phong;
-}
-
-// A pixel of an object whose maps are drawn, as Phong shading lights it: the interpolated surface
-// with the normal map's normal, and the material with vertex colours, the base colour texel (when
-// given) and the maps' texels applied. Lit one pixel at a time by the one-lane equation, which
-// gives the same bits as the SIMD batches.
+// A pixel of an object whose maps are drawn (mapsDrawn), as Phong shading lights it: the
+// interpolated surface with the normal map's normal, and the material at the point (vertex
+// colours, the texel and the maps' texels, materialAt). Lit one pixel at a time by the one-lane
+// equation, which gives the same bits as the SIMD batches.
 struct MappedSurface {
   Vec3 position, normal;
-  Material material;
+  PointMaterial point;
 };
 MappedSurface mappedSurface(const FrameContext& frame, const Object& object, const DrawRecord& r,
-                            const AttributeLayout& l, Real l0, Real l1, Real l2, const Vec4* baseTexel);
+                            const AttributeLayout& l, Real l0, Real l1, Real l2);
 Color4 shadeMappedFragment(const FrameContext& frame, const MappedSurface& surface);
 
 // Gouraud: the vertex colours (lit for the side shown), interpolated.

@@ -30,6 +30,9 @@ struct FrameContext {
   SubpixelOffset sample;
   bool multisampled = false;
 
+  // Phong shading lights each pixel at its own point (the material at that point, its maps).
+  bool litPerPixel() const { return shading == Shading::Phong; }
+
   static FrameContext fromScene(const Scene& scene);
 };
 

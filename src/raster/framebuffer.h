@@ -7,6 +7,8 @@
 #include <illum/image.h>
 #include <illum/lighting.h>
 
+#include "math/unorm8.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -20,21 +22,6 @@ constexpr int kTileSize = 64;
 // row may run past it (its lanes outside the triangle masked) without touching the next tile.
 constexpr int kTilePadding = 16;
 constexpr std::size_t kTileBlock = std::size_t(kTileSize) * kTileSize + kTilePadding;
-
-// round(clamp(c)·255), halves away from zero, as std::lround would. With float channels the
-// product is exact in double (24 + 8 bits), so adding 0.5 is exact too and truncation rounds the
-// same way, without a call into libm per channel; double channels keep std::lround.
-inline std::uint8_t toUnorm8(Real c) {
-  const double x = double(std::clamp(c, Real(0), Real(1))) * 255.0;
-  if constexpr (sizeof(Real) == sizeof(float)) return std::uint8_t(int(x + 0.5));
-  else return std::uint8_t(std::lround(x));
-}
-
-// A colour as the framebuffer stores it: RGBA8, R in the lowest byte.
-inline std::uint32_t packUnorm8(const Color4& c) {
-  return std::uint32_t(toUnorm8(c.r)) | std::uint32_t(toUnorm8(c.g)) << 8 | std::uint32_t(toUnorm8(c.b)) << 16 |
-         std::uint32_t(toUnorm8(c.a)) << 24;
-}
 
 // One tile's depths and RGBA8 pixels, laid out as the framebuffer lays out each of its own.
 struct TileMemory {

@@ -1,7 +1,7 @@
 // glTF's metallic-roughness, normal and emissive maps as every renderer draws them: a map of one
 // texel draws what the material with that texel applied by hand draws, with per-pixel shading,
 // in the reference pipeline and in the ray and path tracers.
-#include "raster/reference/reference_pipeline.h"
+#include "render/reference_render.h"
 
 #include <illum/render.h>
 #include <illum/scene.h>

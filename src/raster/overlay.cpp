@@ -1,6 +1,5 @@
 #include "raster/overlay.h"
 
-#include "image/text.h"
 #include "raster/wide_segment.h"
 
 #include <algorithm>
@@ -89,38 +88,6 @@ void drawOverlayLines(Framebuffer& fb, const FrameContext& frame, std::span<cons
       if (z < 0 || z > 1 || z > fb.depth(x, y) + kLineBias) return;
       fb.writeColor(x, y, Color4(line.color, 1));
     });
-  }
-}
-
-void drawAxesGizmo(Image& image, const Scene& scene) {
-  const Real size = std::clamp(Real(std::min(image.width, image.height)) / 10, Real(14), Real(48));
-  const Vec2 origin(size * Real(1.4), Real(image.height) - size * Real(1.4));  // row 0 at the top
-  const Mat3 viewFromWorld(scene.camera.viewFromWorld());
-  const Vec3 colours[3] = {{0.95f, 0.25f, 0.25f}, {0.3f, 0.85f, 0.3f}, {0.35f, 0.5f, 1}};
-  const char* names[3] = {"X", "Y", "Z"};
-  // The axis pointing most away from the viewer first, so the nearer ones are drawn over it.
-  int order[3] = {0, 1, 2};
-  std::sort(order, order + 3, [&](int i, int j) { return (viewFromWorld * Vec3(i == 0, i == 1, i == 2)).z <
-                                                         (viewFromWorld * Vec3(j == 0, j == 1, j == 2)).z; });
-  for (int i : order) {
-    const Vec3 d = viewFromWorld * Vec3(i == 0, i == 1, i == 2);
-    const Vec2 tip = origin + size * Vec2(d.x, -d.y);
-    const int x0 = std::max(0, int(std::floor(std::min(origin.x, tip.x) - 2))),
-              x1 = std::min(image.width - 1, int(std::ceil(std::max(origin.x, tip.x) + 2)));
-    const int y0 = std::max(0, int(std::floor(std::min(origin.y, tip.y) - 2))),
-              y1 = std::min(image.height - 1, int(std::ceil(std::max(origin.y, tip.y) + 2)));
-    for (int y = y0; y <= y1; ++y)
-      for (int x = x0; x <= x1; ++x) {
-        // Coverage of a line 2 pixels wide, by the pixel centre's distance from it.
-        const Real cover = std::clamp(Real(1.5) - toSegment(Vec2(Real(x) + 0.5f, Real(y) + 0.5f), origin, tip).first,
-                                      Real(0), Real(1));
-        if (cover <= 0) continue;
-        std::uint8_t* p = image.pixel(x, y);
-        for (int c = 0; c < 3; ++c) p[c] = std::uint8_t(std::lround(p[c] * (1 - cover) + colours[i][c] * 255 * cover));
-        p[3] = std::uint8_t(std::lround(p[3] * (1 - cover) + 255 * cover));
-      }
-    const Vec2 label = origin + (size + 9) * Vec2(d.x, -d.y);
-    drawText(image, label.x, label.y + 5, names[i], 13, colours[i]);
   }
 }
 

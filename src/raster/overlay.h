@@ -1,7 +1,7 @@
 // Overlays drawn into the rasterizer's framebuffer after the scene, per multisample pass (so they
 // are anti-aliased like edges): lines in world space, depth-tested against the surfaces (a line on
-// a surface shows, one behind it does not) without writing depth. And the axes gizmo, drawn over
-// the finished picture of any renderer.
+// a surface shows, one behind it does not) without writing depth. (The axes gizmo is drawn over
+// the finished picture of any renderer: render/labels.h.)
 #pragma once
 
 #include <illum/scene.h>
@@ -25,9 +25,5 @@ std::vector<OverlayLine> overlayLines(const Scene& scene);
 
 // Draws `lines` `width` pixels wide into `fb` as the frame sees them (its sample position too).
 void drawOverlayLines(Framebuffer& fb, const FrameContext& frame, std::span<const OverlayLine> lines, Real width);
-
-// The world's X (red), Y (green) and Z (blue) axes as the camera sees them, from a point in the
-// picture's lower left corner, labelled.
-void drawAxesGizmo(Image& image, const Scene& scene);
 
 }  // namespace illum

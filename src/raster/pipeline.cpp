@@ -4,7 +4,7 @@
 // are binned into 64×64 tiles and each tile is drawn by one thread, its records in order. Every
 // pixel therefore sees the same fragments in the same order as on one thread: the same bytes for
 // any thread count, and the same as the reference driver (reference/).
-#include <illum/render.h>
+#include "raster/pipeline.h"
 
 #include "raster/bin.h"
 #include "raster/draw.h"
@@ -12,8 +12,6 @@
 #include "raster/overlay.h"
 #include "raster/points_lines.h"
 #include "raster/shade_tile.h"
-#include "shading/shade_points.h"
-#include "trace/ray_tracer.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
@@ -37,8 +35,8 @@ constexpr std::size_t kBatchTiny = 1 << 16;
 
 }  // namespace
 
-// What a Renderer keeps from frame to frame.
-struct Renderer::State {
+// What the pipeline keeps from frame to frame.
+struct RasterPipeline::State {
   Framebuffer fb;
   std::vector<std::size_t> tileFragments;
   std::vector<ShadedVertex> vertices;  // a run of objects' (BinnedFrame::drawObjects)
@@ -82,7 +80,7 @@ namespace {
 // One frame through the pipeline, in the renderer's working memory.
 class BinnedFrame {
  public:
-  BinnedFrame(Renderer::State& state, const Scene& scene, const FrameContext& frame, PixelProbe* probe)
+  BinnedFrame(RasterPipeline::State& state, const Scene& scene, const FrameContext& frame, PixelProbe* probe)
       : s_(state), frame_(frame), target_(frame, scene, state.fb, probe) {
     if (frame.multisampled) target_.shadedPixels = &s_.shadedPixels;
     s_.fb.reset(scene.width, scene.height, scene.background);
@@ -161,7 +159,7 @@ class BinnedFrame {
     list.surfaces.clear();
     for (std::size_t c = 0; c < used_; ++c) {
       if (!s_.spans[c].holds(std::uint32_t(tile))) continue;
-      const Renderer::State::Chunk& chunk = s_.pool[c];
+      const RasterPipeline::State::Chunk& chunk = s_.pool[c];
       // (A batch holds far fewer records than a tiny pixel's tag can count: kBatchRecords plus a
       // slice of chunks.)
       const auto before = std::uint32_t(list.records.size());
@@ -230,7 +228,7 @@ class BinnedFrame {
       tbb::parallel_for(tbb::blocked_range<std::size_t>(c0, c1, 1), [&](const tbb::blocked_range<std::size_t>& range) {
        for (std::size_t c = range.begin(); c < range.end(); ++c) {
         const auto& [member, first, last] = ranges[c];
-        Renderer::State::Chunk& chunk = s_.pool[used_ + (c - c0)];
+        RasterPipeline::State::Chunk& chunk = s_.pool[used_ + (c - c0)];
         chunk.records.reset(target_.layouts[member->index]);
         chunk.bins.reset(frame_.width, frame_.height);
         const SetupBinning binning{chunk.bins, target_.tiny[member->index] != 0, target_.shadeOwner[member->index]};
@@ -242,7 +240,7 @@ class BinnedFrame {
       if (s_.spans.size() < s_.pool.size()) s_.spans.resize(s_.pool.size());
       for (std::size_t c = c0; c < c1; ++c) {
         s_.spans[used_] = s_.pool[used_].bins.span();
-        const Renderer::State::Chunk& chunk = s_.pool[used_++];
+        const RasterPipeline::State::Chunk& chunk = s_.pool[used_++];
         batchedRecords_ += chunk.records.size();
         batchedTiny_ += chunk.drawn - chunk.records.size();
         stats_.trianglesDrawn += chunk.drawn;
@@ -250,11 +248,11 @@ class BinnedFrame {
     }
   }
 
-  std::span<ShadedVertex> ofMember(const Renderer::State::Member& member) {
+  std::span<ShadedVertex> ofMember(const RasterPipeline::State::Member& member) {
     return std::span(s_.vertices).subspan(member.base, member.object->mesh->positions.size());
   }
 
-  Renderer::State& s_;
+  RasterPipeline::State& s_;
   const FrameContext& frame_;
   DrawTarget target_;
   TileBins tiles_;  // only its tile rectangles: the records are binned per chunk
@@ -264,22 +262,15 @@ class BinnedFrame {
 
 }  // namespace
 
-Renderer::Renderer() : state_(std::make_unique<State>()) {}
-Renderer::~Renderer() = default;
+RasterPipeline::RasterPipeline() : state_(std::make_unique<State>()) {}
+RasterPipeline::~RasterPipeline() = default;
 
-void Renderer::render(const Scene& scene, Image& image, RenderStats* statsOut, PixelProbe* probe, FloatImage* linear) {
-  if (scene.renderer != RendererKind::Raster) {
-    RenderStats stats;
-    traceScene(scene, image, stats, probe, linear, progress_);
-    if (statsOut) *statsOut = stats;
-    return;
-  }
+void RasterPipeline::draw(const Scene& scene, Image& image, RenderStats& stats, PixelProbe* probe) {
   FrameContext frame = FrameContext::fromScene(scene);
   if (probe) probe->hit = false;
   const std::span<const SubpixelOffset> samples = multisamplePattern(scene.multisample);
   const std::vector<OverlayLine> overlay = overlayLines(scene);
   if (hasPointsOrLines(scene)) checkPointAndLineFill(frame, scene, int(samples.size()));
-  RenderStats stats;
   if (samples.size() <= 1) {
     BinnedFrame pass(*state_, scene, frame, probe);
     pass.drawObjects(scene, drawingOrder(scene, frame));
@@ -288,44 +279,34 @@ void Renderer::render(const Scene& scene, Image& image, RenderStats* statsOut, P
       drawPointsAndLines(state_->fb, frame, scene, state_->vertices);
       drawOverlayLines(state_->fb, frame, overlay, 1);
       stats = pass.stats();
-      finishFrame(state_->fb, scene, stats, image, linear);
+      stats.pixelsDrawn = state_->fb.toImage(image, scene.background);
     } else {
       const std::size_t unlike = pass.flushInto(image, scene.background);
       stats = pass.stats();
-      finishFrame(unlike, scene, stats, image, linear);
+      stats.pixelsDrawn = unlike;
     }
-  } else {
-    // One pass per sample position, each through the whole pipeline into the framebuffer, summed
-    // premultiplied; the watched pixel reports the first sample's fragment.
-    frame.multisampled = true;
-    state_->shadedPixels.reset(scene.width, scene.height);
-    MultisampleResolve resolve(scene.width, scene.height);
-    for (std::size_t s = 0; s < samples.size(); ++s) {
-      frame.sample = samples[s];
-      BinnedFrame pass(*state_, scene, frame, s == 0 ? probe : nullptr);
-      pass.drawObjects(scene, drawingOrder(scene, frame));
-      pass.flush();
-      drawPointsAndLines(state_->fb, frame, scene, state_->vertices);
-      drawOverlayLines(state_->fb, frame, overlay, 1);
-      const RenderStats passStats = pass.stats();
-      if (s == 0) stats = passStats;
-      else stats.fragmentsShaded += passStats.fragmentsShaded;
-      state_->fb.toImage(image, scene.background);
-      resolve.add(image);
-    }
-    resolve.finish(image);
-    finishImage(scene, stats, image, linear);
+    return;
   }
-  if (statsOut) *statsOut = stats;
-}
-
-const char* simdTarget() { return simdTargetName(); }
-
-Image renderScene(const Scene& scene, RenderStats* stats, PixelProbe* probe, FloatImage* linear) {
-  Renderer renderer;
-  Image image;
-  renderer.render(scene, image, stats, probe, linear);
-  return image;
+  // One pass per sample position, each through the whole pipeline into the framebuffer, summed
+  // premultiplied; the watched pixel reports the first sample's fragment.
+  frame.multisampled = true;
+  state_->shadedPixels.reset(scene.width, scene.height);
+  MultisampleResolve resolve(scene.width, scene.height);
+  for (std::size_t s = 0; s < samples.size(); ++s) {
+    frame.sample = samples[s];
+    BinnedFrame pass(*state_, scene, frame, s == 0 ? probe : nullptr);
+    pass.drawObjects(scene, drawingOrder(scene, frame));
+    pass.flush();
+    drawPointsAndLines(state_->fb, frame, scene, state_->vertices);
+    drawOverlayLines(state_->fb, frame, overlay, 1);
+    const RenderStats passStats = pass.stats();
+    if (s == 0) stats = passStats;
+    else stats.fragmentsShaded += passStats.fragmentsShaded;
+    state_->fb.toImage(image, scene.background);
+    resolve.add(image);
+  }
+  resolve.finish(image);
+  stats.pixelsDrawn = pixelsUnlike(image, scene.background);
 }
 
 }  // namespace illum

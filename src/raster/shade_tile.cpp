@@ -71,7 +71,7 @@ class PhongBatch {
     }
     const Object& object = target_.scene.objects[r.object];
     const VisiblePixel p = visiblePixel(r.setup, rect_, index, target_.frame.sample);
-    if (mapsDrawn(target_.frame, object)) return shadeMapped(object, r, p);
+    if (mapsDrawn(object, target_.frame.litPerPixel())) return shadeMapped(object, r, p);
     if (n_ == TileScratch::kBatch || (n_ > 0 && r.object != object_)) flush();
     object_ = r.object;
     const PhongSurface surface =
@@ -84,7 +84,7 @@ class PhongBatch {
       for (int c = 0; c < 4; ++c) s_.soa[10 + c][n_] = texel[c];
       // A base colour texture tints the material's (or the vertex's) colour before lighting, as
       // withBaseTexel does.
-      if (texturesBaseColor(target_.frame, object)) {
+      if (texelIsBaseColor(object, target_.frame.model, target_.frame.litPerPixel())) {
         const Material& m = object.material;
         color = (object.mesh->colors.empty() ? Color4(physicalOf(m).baseColor, m.diffuse.a) : color) * texel;
       }
@@ -100,7 +100,8 @@ class PhongBatch {
     const Object& object = target_.scene.objects[object_];
     const ShadeSetup setup{target_.frame.lights, target_.frame.lightModel, modelOf(object.material, target_.frame.model),
                            object.material};
-    const bool textured = drawnTexture(object) != nullptr, baseTexture = texturesBaseColor(target_.frame, object);
+    const bool textured = drawnTexture(object) != nullptr,
+               baseTexture = texelIsBaseColor(object, target_.frame.model, target_.frame.litPerPixel());
     SurfacePoints points;
     points.count = n_;
     for (int c = 0; c < 3; ++c) points.position[c] = s_.soa[c], points.normal[c] = s_.soa[3 + c];
@@ -126,14 +127,9 @@ class PhongBatch {
  private:
   // A pixel whose material or normal comes from glTF's maps: lit on its own (fragment.h).
   void shadeMapped(const Object& object, const DrawRecord& r, const VisiblePixel& p) {
-    const Texture* texture = drawnTexture(object);
-    const bool baseTexture = texturesBaseColor(target_.frame, object);
-    Vec4 texel(1);
-    if (texture) texel = sampleDiffuseTexture(*texture, r, target_.layout(r), p.l0, p.l1, p.l2);
-    const MappedSurface surface =
-        mappedSurface(target_.frame, object, r, target_.layout(r), p.l0, p.l1, p.l2, baseTexture ? &texel : nullptr);
-    writePixel(target_, r, p, shadeMappedFragment(target_.frame, surface), texture ? &texel : nullptr, baseTexture,
-               &surface);
+    const MappedSurface surface = mappedSurface(target_.frame, object, r, target_.layout(r), p.l0, p.l1, p.l2);
+    writePixel(target_, r, p, shadeMappedFragment(target_.frame, surface),
+               surface.point.textured ? &surface.point.texel : nullptr, surface.point.texelIsBaseColor, &surface);
   }
 
   const DrawTarget& target_;

@@ -5,7 +5,7 @@
 
 #include <illum/lighting.h>
 
-#include "raster/framebuffer.h"  // packUnorm8, the framebuffer's conversion
+#include "math/unorm8.h"  // packUnorm8, the framebuffer's conversion
 #include "shading/brdf.h"
 
 #include <gtest/gtest.h>

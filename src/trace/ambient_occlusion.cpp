@@ -1,8 +1,6 @@
 #include "trace/ambient_occlusion.h"
 
-#include "raster/draw_record.h"
-#include "raster/fragment.h"
-#include "raster/framebuffer.h"
+#include "math/unorm8.h"
 #include "trace/camera_rays.h"
 #include "trace/ray_scene.h"
 #include "trace/sampling.h"
@@ -72,21 +70,13 @@ void applyAmbientOcclusion(const Scene& scene, Image& image) {
       HitPoint h = hitPoint(rays, ray, hit);
       const EyeMesh& mesh = rays.mesh(hit.object);
       const Object& object = *h.object;
-      // The material and normal as the rasterizer's Phong shading sees them here.
-      Material material = object.material;
-      if (!object.mesh->colors.empty()) {
-        const auto& c = object.mesh->colors;
-        material = withVertexColor(material, h.w[0] * c[h.index[0]] + h.w[1] * c[h.index[1]] + h.w[2] * c[h.index[2]]);
-      }
-      const LightingModel model = modelOf(material, scene.model);
+      // The material and normal as the rasterizer sees them here.
       const Real length = hit.t * glm::length(ray.direction);
       const RayCone cone{camera.pixelWidthAt(0), camera.pixelWidthAt(1) - camera.pixelWidthAt(0), false, {}, {}};
-      Vec4 texel(1);
-      const Texture* texture = drawnTexture(object);
-      if (texture) texel = texelAt(*texture, mesh, h, ray, cone, cone.width + cone.spread * length);
-      const bool baseTexture = texture && model == LightingModel::CookTorrance && scene.shading == Shading::Phong;
-      if (baseTexture) material = withBaseTexel(material, texel);
-      applyMaps(mesh, h, ray, cone, cone.width + cone.spread * length, material);
+      const PointMaterial point = materialAtHit(mesh, h, ray, cone, cone.width + cone.spread * length, scene.model,
+                                                scene.shading == Shading::Phong);
+      const Material& material = point.material;
+      const LightingModel model = point.model;
       // Lit on the side the camera sees.
       const Vec3 toEye = -glm::normalize(ray.direction);
       const Vec3 facet = glm::dot(h.geometricNormal, toEye) >= 0 ? h.geometricNormal : -h.geometricNormal;
@@ -98,7 +88,7 @@ void applyAmbientOcclusion(const Scene& scene, Image& image) {
       // What the clamped colour loses: min(sum, 1) − min(sum − (1 − k)·a, 1), per channel.
       const Color3 sum = terms.sum(), occluded = sum - (1 - open) * terms.ambient;
       const Color3 loss = glm::min(sum, Color3(1)) - glm::min(occluded, Color3(1));
-      const Color3 factor = texture && !baseTexture ? Color3(texel) : Color3(1);
+      const Color3 factor(point.modulation());
       std::uint8_t* p = image.pixel(x, y);
       for (int c = 0; c < 3; ++c) p[c] = toUnorm8(Real(p[c]) / 255 - loss[c] * factor[c]);
     }

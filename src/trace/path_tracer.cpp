@@ -1,7 +1,5 @@
 #include "trace/path_tracer.h"
 
-#include "raster/draw_record.h"
-#include "raster/fragment.h"
 #include "shading/brdf.h"
 #include "trace/optics.h"
 #include "trace/path_bsdf.h"
@@ -79,20 +77,12 @@ Color4 PathTracer::primary(const Ray& primaryRay, const RayHit* primaryHit, cons
     const Real length = hit.t * glm::length(ray.direction);
     const Vec3 wo = -glm::normalize(ray.direction);
 
-    // The material here: vertex colours, and a texture as base colour (cook-torrance) or as the
-    // diffuse albedo it modulates (GL).
-    Material material = object.material;
-    if (!object.mesh->colors.empty()) {
-      const auto& c = object.mesh->colors;
-      material = withVertexColor(material, h.w[0] * c[h.index[0]] + h.w[1] * c[h.index[1]] + h.w[2] * c[h.index[2]]);
-    }
-    const LightingModel model = modelOf(material, scene_.model);
-    if (const Texture* texture = drawnTexture(object)) {
-      const Vec4 texel = texelAt(*texture, mesh, h, ray, cone, cone.width + cone.spread * length);
-      if (model == LightingModel::CookTorrance) material = withBaseTexel(material, texel);
-      else material.diffuse *= texel;
-    }
-    applyMaps(mesh, h, ray, cone, cone.width + cone.spread * length, material);
+    // The material here (vertex colours, texel, maps). GL_MODULATE has no lit colour to multiply
+    // in a path tracer: its texel multiplies the diffuse albedo instead.
+    const PointMaterial point = materialAtHit(mesh, h, ray, cone, cone.width + cone.spread * length, scene_.model);
+    Material material = point.material;
+    material.diffuse *= point.modulation();
+    const LightingModel model = point.model;
 
     // Emission: what the camera (or a mirror-like bounce) sees whole, else weighed against the
     // chance that next-event estimation found the same light.

@@ -1,8 +1,6 @@
 #include "trace/ray_tracer.h"
 
-#include "raster/draw_record.h"
-#include "raster/framebuffer.h"
-#include "raster/labels.h"
+#include "math/unorm8.h"
 #include "trace/camera_rays.h"
 #include "trace/path_tracer.h"
 #include "trace/ray_scene.h"
@@ -163,7 +161,6 @@ void traceScene(const Scene& scene, Image& image, RenderStats& stats, PixelProbe
   for (int k = 0; k < 4; ++k) bg[k] = toUnorm8(k < 3 ? displayValue(background[k], scene.display) : background[k]);
   for (std::size_t i = 0; i < image.rgba.size(); i += 4)
     if (std::memcmp(&image.rgba[i], bg, 4) != 0) ++stats.pixelsDrawn;
-  stats.labelsSkipped = !drawLabels(image, scene);
 }
 
 }  // namespace illum

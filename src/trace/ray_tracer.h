@@ -13,7 +13,8 @@ namespace illum {
 
 // `probe`, if given, is filled from the centre ray of its pixel (the first sample).
 // `linear`, if given, receives each pixel's mean before its 8-bit conversion.
-// `progress`, if set, hears the fraction of tiles done (from the worker threads).
+// `progress`, if set, hears the fraction of tiles done (from the worker threads). The picture is
+// finished (labels) by the caller, render/.
 void traceScene(const Scene& scene, Image& image, RenderStats& stats, PixelProbe* probe = nullptr,
                 FloatImage* linear = nullptr, const std::function<void(double)>& progress = {});
 

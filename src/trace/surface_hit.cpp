@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace illum {
 namespace {
@@ -68,20 +69,24 @@ Vec4 texelAt(const Texture& texture, const EyeMesh& mesh, const HitPoint& h, con
   return texture.sample(uv, coneWidth * std::sqrt(texelArea / worldArea) / cosine);
 }
 
-void applyMaps(const EyeMesh& mesh, HitPoint& h, const Ray& ray, const RayCone& cone, Real coneWidth,
-               Material& material) {
-  const MaterialMaps& maps = mesh.object->maps;
-  if (!maps.any() || mesh.object->mesh->uvs.empty()) return;
-  MapTexels texels;
-  if (maps.metallicRoughness) texels.metallicRoughness = texelAt(*maps.metallicRoughness, mesh, h, ray, cone, coneWidth);
-  if (maps.emissive) texels.emissive = texelAt(*maps.emissive, mesh, h, ray, cone, coneWidth);
-  material = withMapTexels(material, texels);
-  if (!maps.normal) return;
-  const auto& uvs = mesh.object->mesh->uvs;
-  const TangentFrame frame =
-      triangleTangents({mesh.positions[h.index[0]], mesh.positions[h.index[1]], mesh.positions[h.index[2]]},
-                       {uvs[h.index[0]], uvs[h.index[1]], uvs[h.index[2]]});
-  h.normal = normalFromMap(h.normal, frame, texelAt(*maps.normal, mesh, h, ray, cone, coneWidth), maps.normalScale);
+PointMaterial materialAtHit(const EyeMesh& mesh, HitPoint& h, const Ray& ray, const RayCone& cone, Real coneWidth,
+                            LightingModel sceneModel, bool litPerPoint) {
+  const Object& object = *h.object;
+  std::optional<Color4> vertexColor;
+  if (!object.mesh->colors.empty()) {
+    const auto& c = object.mesh->colors;
+    vertexColor = h.w[0] * c[h.index[0]] + h.w[1] * c[h.index[1]] + h.w[2] * c[h.index[2]];
+  }
+  PointMaterial point = materialAt(object, sceneModel, litPerPoint, vertexColor ? &*vertexColor : nullptr,
+                                   [&](const Texture& texture) { return texelAt(texture, mesh, h, ray, cone, coneWidth); });
+  if (point.normalTexel) {
+    const auto& uvs = object.mesh->uvs;
+    const TangentFrame frame =
+        triangleTangents({mesh.positions[h.index[0]], mesh.positions[h.index[1]], mesh.positions[h.index[2]]},
+                         {uvs[h.index[0]], uvs[h.index[1]], uvs[h.index[2]]});
+    h.normal = normalFromMap(h.normal, frame, *point.normalTexel, object.maps.normalScale);
+  }
+  return point;
 }
 
 }  // namespace illum

@@ -5,6 +5,7 @@
 
 #include <illum/scene.h>
 
+#include "shading/material_at.h"
 #include "trace/ray_scene.h"
 
 #include <array>
@@ -46,10 +47,12 @@ Vec3 offsetOrigin(const Vec3& P, const Vec3& geometricNormal, const Vec3& direct
 Vec4 texelAt(const Texture& texture, const EyeMesh& mesh, const HitPoint& h, const Ray& ray, const RayCone& cone,
              Real coneWidth);
 
-// glTF's maps at a hit (material_maps.h), each texel filtered as texelAt filters: the material's
-// roughness, metallic and emission, and the shading normal `h.normal` bent by the normal map in the
-// triangle's tangent frame. Nothing changes where the object has no maps or its mesh no uvs.
-void applyMaps(const EyeMesh& mesh, HitPoint& h, const Ray& ray, const RayCone& cone, Real coneWidth,
-               Material& material);
+// The material at a hit (shading/material_at.h): vertex colours, the texel (the base colour of a
+// physically based model, else GL_MODULATE's factor) and glTF's maps, each texel filtered as
+// texelAt filters; the normal map bends the shading normal `h.normal` in the triangle's tangent
+// frame. A ray lights the point itself, as Phong shading does (`litPerPoint`); ambient occlusion
+// asks as the rasterizer it corrects lit it.
+PointMaterial materialAtHit(const EyeMesh& mesh, HitPoint& h, const Ray& ray, const RayCone& cone, Real coneWidth,
+                            LightingModel sceneModel, bool litPerPoint = true);
 
 }  // namespace illum

@@ -1,7 +1,5 @@
 #include "trace/whitted.h"
 
-#include "raster/draw_record.h"
-#include "raster/fragment.h"
 #include "trace/local_light.h"
 #include "trace/optics.h"
 #include "trace/surface_hit.h"
@@ -117,21 +115,12 @@ Color4 WhittedTracer::shade(const Ray& ray, const RayHit& rayHit, const Path& pa
   const Real length = rayHit.t * glm::length(ray.direction);
   const Vec3 D = glm::normalize(ray.direction);
 
-  // The local equation, as the rasterizer's Phong shading evaluates it at a pixel: the normal of
-  // the side shown under two-sided lighting, vertex colours as the material's ambient and diffuse.
-  Material material = object.material;
-  if (!object.mesh->colors.empty()) {
-    const auto& c = object.mesh->colors;
-    material = withVertexColor(material, h.w[0] * c[h.index[0]] + h.w[1] * c[h.index[1]] + h.w[2] * c[h.index[2]]);
-  }
-  // The texel: the base colour of a physically based model (before lighting), else GL_MODULATE's.
-  const LightingModel model = modelOf(material, scene_.model);
-  const Texture* texture = drawnTexture(object);
-  const bool baseTexture = texture && model == LightingModel::CookTorrance;
-  Vec4 texel(1);
-  if (texture) texel = texelAt(*texture, mesh, h, ray, path.cone, path.cone.width + path.cone.spread * length);
-  if (baseTexture) material = withBaseTexel(material, texel);
-  applyMaps(mesh, h, ray, path.cone, path.cone.width + path.cone.spread * length, material);
+  // The local equation, as the rasterizer's Phong shading evaluates it at a pixel: the material
+  // there (vertex colours, texel, maps), the normal of the side shown under two-sided lighting.
+  const PointMaterial point =
+      materialAtHit(mesh, h, ray, path.cone, path.cone.width + path.cone.spread * length, scene_.model);
+  const Material& material = point.material;
+  const LightingModel model = point.model;
   LocalSurface local;
   local.material = material;
   local.geometry.position = h.position;
@@ -151,7 +140,7 @@ Color4 WhittedTracer::shade(const Ray& ray, const RayHit& rayHit, const Path& pa
   const LightingTerms terms = localTerms(lights_, scene_.lightModel, model, local,
                                          scene_.rayTracing.shadows ? &shadows : nullptr, hallSurface ? &hall : nullptr);
   Color4 color = clampedColor(terms, material);
-  if (texture && !baseTexture) color *= texel;
+  color *= point.modulation();
   if (probe) {
     probe->hit = true;
     probe->object = rayHit.object;
@@ -161,9 +150,9 @@ Color4 WhittedTracer::shade(const Ray& ray, const RayHit& rayHit, const Path& pa
     probe->eyeNormal = local.geometry.normal;
     probe->material = material;
     probe->weights = h.w;
-    probe->textured = texture != nullptr;
-    probe->texel = texel;
-    probe->texelIsBaseColor = baseTexture;
+    probe->textured = point.textured;
+    probe->texel = point.texel;
+    probe->texelIsBaseColor = point.texelIsBaseColor;
     probe->lit = color;
     probe->lightVisibility.clear();
     for (const EyeLight& light : lights_) {

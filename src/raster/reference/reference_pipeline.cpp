@@ -4,10 +4,9 @@
 
 namespace illum {
 
-Image renderSceneReference(const Scene& scene, RenderStats* statsOut) {
+void drawSceneReference(const Scene& scene, Image& image, RenderStats& stats) {
   const FrameContext frame = FrameContext::fromScene(scene);
   Framebuffer fb(scene.width, scene.height, scene.background);
-  RenderStats stats;
   const DrawTarget target(frame, scene, fb, nullptr);
   const PixelRect viewport{0, 0, scene.width - 1, scene.height - 1};
   std::vector<ShadedVertex> vertices;
@@ -22,10 +21,7 @@ Image renderSceneReference(const Scene& scene, RenderStats* statsOut) {
     stats.trianglesDrawn += setupTriangles(frame, *object, index, vertices, 0, object->mesh->triangleCount(), records);
     for (std::size_t i = 0; i < records.size(); ++i) drawRecord(target, records[i], viewport, stats.fragmentsShaded);
   }
-  Image image;
-  finishFrame(fb, scene, stats, image);
-  if (statsOut) *statsOut = stats;
-  return image;
+  stats.pixelsDrawn = fb.toImage(image, scene.background);
 }
 
 }  // namespace illum

@@ -7,6 +7,8 @@
 
 namespace illum {
 
-Image renderSceneReference(const Scene& scene, RenderStats* stats = nullptr);
+// The scene's linear 8-bit picture, as RasterPipeline::draw gives it (render/ finishes both the
+// same way: render/reference_render.h).
+void drawSceneReference(const Scene& scene, Image& image, RenderStats& stats);
 
 }  // namespace illum

@@ -1,7 +1,7 @@
 // The binned, parallel pipeline draws exactly what the reference driver draws (submission order,
 // one thread), bit for bit, and the same bytes for every thread count: coverage, depth, shading,
 // textures, vertex colours and blending included.
-#include "raster/reference/reference_pipeline.h"
+#include "render/reference_render.h"
 
 #include <illum/render.h>
 #include <illum/scene.h>

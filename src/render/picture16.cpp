@@ -3,7 +3,7 @@
 #include <illum/display.h>
 #include <illum/render.h>
 
-#include "raster/labels.h"
+#include "render/labels.h"
 
 #include <algorithm>
 #include <cmath>

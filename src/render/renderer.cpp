@@ -1,0 +1,41 @@
+// The renderers behind one door: the scene says which draws it (the rasterizer, Whitted's or
+// Hall's ray tracer, the path tracer), and every picture is finished here the same way.
+#include <illum/render.h>
+
+#include "raster/pipeline.h"
+#include "render/finish.h"
+#include "shading/shade_points.h"
+#include "trace/ray_tracer.h"
+
+namespace illum {
+
+// What a Renderer keeps from frame to frame: the rasterizer's working memory.
+struct Renderer::State {
+  RasterPipeline raster;
+};
+
+Renderer::Renderer() : state_(std::make_unique<State>()) {}
+Renderer::~Renderer() = default;
+
+void Renderer::render(const Scene& scene, Image& image, RenderStats* statsOut, PixelProbe* probe, FloatImage* linear) {
+  RenderStats stats;
+  if (scene.renderer == RendererKind::Raster) {
+    state_->raster.draw(scene, image, stats, probe);
+    finishRasterPicture(scene, stats, image, linear);
+  } else {
+    traceScene(scene, image, stats, probe, linear, progress_);
+    finishTracedPicture(scene, stats, image);
+  }
+  if (statsOut) *statsOut = stats;
+}
+
+const char* simdTarget() { return simdTargetName(); }
+
+Image renderScene(const Scene& scene, RenderStats* stats, PixelProbe* probe, FloatImage* linear) {
+  Renderer renderer;
+  Image image;
+  renderer.render(scene, image, stats, probe, linear);
+  return image;
+}
+
+}  // namespace illum
