@@ -1,5 +1,7 @@
 // Textures: an RGBA image with its mipmap chain, sampled like GL_LINEAR_MIPMAP_LINEAR with
-// GL_REPEAT. Texel values are used as stored (GL without sRGB decoding), scaled to [0,1].
+// GL_REPEAT. Every level is kept as GL keeps an RGBA8 texture, 8 bits a channel; the sampler
+// decodes each texel it reads through a table (value/255, or sRGB to linear), so a 4096² texture
+// costs its 64 MiB and a third more for the mipmaps.
 #pragma once
 
 #include <illum/image.h>
@@ -16,16 +18,18 @@ enum class TexelEncoding { Linear, Srgb };
 
 class Texture {
  public:
-  explicit Texture(const Image& image, TexelEncoding encoding = TexelEncoding::Linear);
+  // Takes the image's bytes as the base level (moved in, not copied, when given an rvalue).
+  explicit Texture(Image image, TexelEncoding encoding = TexelEncoding::Linear);
   TexelEncoding encoding() const { return encoding_; }
 
   int width() const { return levels_.front().width; }
   int height() const { return levels_.front().height; }
   int levelCount() const { return int(levels_.size()); }
   bool hasTransparency() const { return hasTransparency_; }  // any texel with alpha < 1
-  // The 8-bit image this texture was made from (its base level, rows top to bottom, re-encoded as
-  // it was stored), exactly.
-  Image baseImage() const;
+  // The 8-bit image this texture was made from (its base level, rows top to bottom), exactly.
+  const Image& baseImage() const { return levels_.front(); }
+  // Bytes in memory, every level.
+  std::size_t byteSize() const;
 
   // Trilinear sample at `uv` (GL convention: v = 0 is the image's bottom row) for a footprint of
   // `texelsPerPixel` base-level texels per pixel (the mip level is log2 of it).
@@ -34,11 +38,11 @@ class Texture {
   Vec4 sampleLevel(const Vec2& uv, int level) const;
 
  private:
-  struct Level {
-    int width, height;
-    std::vector<Vec4> texels;  // rows bottom to top, as GL stores them
-  };
+  // Each level an RGBA8 image, rows top to bottom as images are (row 0 is GL's v = 1 end).
+  using Level = Image;
+  Vec4 texel(const Level& level, int x, int glRow) const;
   std::vector<Level> levels_;
+  const Real* decode_;  // 256 entries: a colour byte's value (alpha is always byte/255)
   bool hasTransparency_ = false;
   TexelEncoding encoding_ = TexelEncoding::Linear;
 };

@@ -2,60 +2,87 @@
 
 #include <illum/display.h>
 
-#include <array>
-
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstring>
 
 namespace illum {
+namespace {
 
-Texture::Texture(const Image& image, TexelEncoding encoding) : encoding_(encoding) {
-  // Decoding by table: 256 values, each exactly as srgbDecoded gives it.
-  std::array<Real, 256> decode;
-  for (int i = 0; i < 256; ++i)
-    decode[std::size_t(i)] = encoding == TexelEncoding::Srgb ? srgbDecoded(Real(i) / 255) : Real(i) / Real(255);
-  Level base{std::max(image.width, 1), std::max(image.height, 1), {}};
-  base.texels.resize(std::size_t(base.width) * std::size_t(base.height), Vec4(1));
-  for (int y = 0; y < image.height; ++y)
-    for (int x = 0; x < image.width; ++x) {
-      const std::uint8_t* p = image.pixel(x, image.height - 1 - y);
-      hasTransparency_ = hasTransparency_ || p[3] < 255;
-      base.texels[std::size_t(y) * std::size_t(base.width) + std::size_t(x)] =
-          Vec4(decode[p[0]], decode[p[1]], decode[p[2]], Real(p[3]) / Real(255));
+// A byte's value, as each encoding decodes it: 256 entries, each exactly as srgbDecoded gives it.
+struct DecodeTables {
+  std::array<Real, 256> linear, srgb;
+  // srgbThreshold[k]: the linear value halfway, in the encoded scale, between bytes k and k + 1
+  // (srgbDecoded((k + ½)/255)): a linear value encodes to the number of thresholds at or below it,
+  // which is round(srgbEncoded(v)·255) without a pow per texel.
+  std::array<Real, 255> srgbThreshold;
+  DecodeTables() {
+    for (int i = 0; i < 256; ++i) {
+      linear[std::size_t(i)] = Real(i) / Real(255);
+      srgb[std::size_t(i)] = srgbDecoded(Real(i) / 255);
     }
-  levels_.push_back(std::move(base));
-  // The mipmap chain by 2×2 box filtering (a single row or column halves in one direction).
-  while (levels_.back().width > 1 || levels_.back().height > 1) {
-    const Level& prev = levels_.back();
-    Level next{std::max(prev.width / 2, 1), std::max(prev.height / 2, 1), {}};
-    next.texels.resize(std::size_t(next.width) * std::size_t(next.height));
-    for (int y = 0; y < next.height; ++y)
-      for (int x = 0; x < next.width; ++x) {
-        Vec4 sum(0);
-        for (int dy = 0; dy < 2; ++dy)
-          for (int dx = 0; dx < 2; ++dx) {
-            const int sx = std::min(2 * x + dx, prev.width - 1), sy = std::min(2 * y + dy, prev.height - 1);
-            sum += prev.texels[std::size_t(sy) * std::size_t(prev.width) + std::size_t(sx)];
-          }
-        next.texels[std::size_t(y) * std::size_t(next.width) + std::size_t(x)] = sum / Real(4);
-      }
-    levels_.push_back(std::move(next));
+    for (int k = 0; k < 255; ++k) srgbThreshold[std::size_t(k)] = srgbDecoded((Real(k) + Real(0.5)) / 255);
   }
+};
+
+const DecodeTables& tables() {
+  static const DecodeTables t;
+  return t;
 }
 
-Image Texture::baseImage() const {
-  const Level& base = levels_.front();
-  Image image(base.width, base.height);
-  for (int y = 0; y < base.height; ++y)
-    for (int x = 0; x < base.width; ++x) {
-      const Vec4 t = base.texels[std::size_t(y) * std::size_t(base.width) + std::size_t(x)];
-      std::uint8_t* p = image.pixel(x, base.height - 1 - y);
+// The next mip level: each texel the 2×2 box average of the level above, in linear values (sRGB
+// colour decoded first), rounded back to a byte (a single row or column halves in one direction).
+Image halved(const Image& prev, TexelEncoding encoding) {
+  Image next(std::max(prev.width / 2, 1), std::max(prev.height / 2, 1));
+  const DecodeTables& t = tables();
+  // Rows pair up from GL's first row, the image's bottom one (it matters for odd heights).
+  const auto imageRow = [](const Image& level, int glRow) { return level.height - 1 - glRow; };
+  for (int gy = 0; gy < next.height; ++gy) {
+    const int y = imageRow(next, gy);
+    const int y0 = imageRow(prev, std::min(2 * gy, prev.height - 1)),
+              y1 = imageRow(prev, std::min(2 * gy + 1, prev.height - 1));
+    for (int x = 0; x < next.width; ++x) {
+      const int x0 = std::min(2 * x, prev.width - 1), x1 = std::min(2 * x + 1, prev.width - 1);
+      const std::uint8_t* q[4] = {prev.pixel(x0, y0), prev.pixel(x1, y0), prev.pixel(x0, y1), prev.pixel(x1, y1)};
+      std::uint8_t* p = next.pixel(x, y);
       for (int c = 0; c < 4; ++c) {
-        const Real v = c < 3 && encoding_ == TexelEncoding::Srgb ? srgbEncoded(t[c]) : t[c];
-        p[c] = std::uint8_t(std::lround(v * Real(255)));
+        const unsigned sum = unsigned(q[0][c]) + q[1][c] + q[2][c] + q[3][c];
+        if (c == 3 || encoding == TexelEncoding::Linear) {
+          p[c] = std::uint8_t((sum + 2) / 4);  // round(mean), halves up, exactly in integers
+          continue;
+        }
+        const Real mean = (t.srgb[q[0][c]] + t.srgb[q[1][c]] + t.srgb[q[2][c]] + t.srgb[q[3][c]]) / Real(4);
+        p[c] = std::uint8_t(std::upper_bound(t.srgbThreshold.begin(), t.srgbThreshold.end(), mean) -
+                            t.srgbThreshold.begin());
       }
     }
-  return image;
+  }
+  return next;
+}
+
+}  // namespace
+
+Texture::Texture(Image image, TexelEncoding encoding)
+    : encoding_(encoding), decode_(encoding == TexelEncoding::Srgb ? tables().srgb.data() : tables().linear.data()) {
+  if (image.width <= 0 || image.height <= 0 || image.rgba.size() < std::size_t(image.width) * std::size_t(image.height) * 4) {
+    image = Image(std::max(image.width, 1), std::max(image.height, 1));
+    std::fill(image.rgba.begin(), image.rgba.end(), std::uint8_t(255));  // white: modulates nothing
+  }
+  for (std::size_t i = 3; i < image.rgba.size() && !hasTransparency_; i += 4) hasTransparency_ = image.rgba[i] < 255;
+  levels_.push_back(std::move(image));
+  while (levels_.back().width > 1 || levels_.back().height > 1) levels_.push_back(halved(levels_.back(), encoding));
+}
+
+std::size_t Texture::byteSize() const {
+  std::size_t n = 0;
+  for (const Level& l : levels_) n += l.rgba.size();
+  return n;
+}
+
+Vec4 Texture::texel(const Level& level, int x, int glRow) const {
+  const std::uint8_t* p = level.pixel(x, level.height - 1 - glRow);
+  return Vec4(decode_[p[0]], decode_[p[1]], decode_[p[2]], tables().linear[p[3]]);
 }
 
 Vec4 Texture::sampleLevel(const Vec2& uv, int level) const {
@@ -68,8 +95,8 @@ Vec4 Texture::sampleLevel(const Vec2& uv, int level) const {
   const auto wrap = [](int i, int n) { return ((i % n) + n) % n; };
   const int x0 = wrap(int(fx), l.width), x1 = wrap(int(fx) + 1, l.width);
   const int y0 = wrap(int(fy), l.height), y1 = wrap(int(fy) + 1, l.height);
-  const auto at = [&](int xx, int yy) { return l.texels[std::size_t(yy) * std::size_t(l.width) + std::size_t(xx)]; };
-  return (1 - ay) * ((1 - ax) * at(x0, y0) + ax * at(x1, y0)) + ay * ((1 - ax) * at(x0, y1) + ax * at(x1, y1));
+  return (1 - ay) * ((1 - ax) * texel(l, x0, y0) + ax * texel(l, x1, y0)) +
+         ay * ((1 - ax) * texel(l, x0, y1) + ax * texel(l, x1, y1));
 }
 
 Vec4 Texture::sample(const Vec2& uv, Real texelsPerPixel) const {

@@ -35,10 +35,21 @@ TEST(Texture, BilinearBetweenTexelsAndRepeat) {
   EXPECT_NEAR(seam.b, 1.0, 1e-6);
 }
 
+// GL pairs rows for the next level from its first row, the image's bottom one: of an odd column of
+// 3 texels, level 1 is the mean of the bottom two, and the top texel is left out.
+TEST(Texture, MipmapRowsPairFromTheBottom) {
+  Image column(1, 3);
+  column.rgba = {255, 0, 0, 255, /**/ 0, 0, 255, 255, /**/ 0, 0, 200, 255};  // top red, then blue
+  const Texture t(column);
+  EXPECT_EQ(t.levelCount(), 2);
+  EXPECT_EQ(t.sampleLevel({0.5, 0.5}, 1), Vec4(0, 0, 228 / 255.0f, 1));  // (255 + 200 + 2) / 4 twice over
+}
+
 TEST(Texture, MipmapsAverageAndTrilinearPicksByFootprint) {
   const Texture t(checker2x2());
   EXPECT_EQ(t.levelCount(), 2);
-  const Vec4 mean(0.5, 0.5, 0.5, 1);
+  // Level 1 keeps the mean as GL keeps an RGBA8 level: rounded to a byte, 510/4 → 128.
+  const Vec4 mean(128 / 255.0, 128 / 255.0, 128 / 255.0, 1);
   const Vec4 level1 = t.sampleLevel({0.3, 0.9}, 1);
   for (int c = 0; c < 4; ++c) EXPECT_NEAR(level1[c], mean[c], 1e-6);
   // A footprint of 2 texels per pixel is level 1 exactly; of 1 texel, level 0.
@@ -46,7 +57,7 @@ TEST(Texture, MipmapsAverageAndTrilinearPicksByFootprint) {
   EXPECT_EQ(t.sample({0.25, 0.25}, 1), t.sampleLevel({0.25, 0.25}, 0));
   // Halfway (√2 texels) is the mean of both levels.
   const Vec4 half = t.sample({0.25, 0.25}, std::sqrt(Real(2)));
-  EXPECT_NEAR(half.b, 0.5 * (1 + 0.5), 1e-5);
+  EXPECT_NEAR(half.b, 0.5 * (1 + 128 / 255.0), 1e-5);
 }
 
 }  // namespace
@@ -64,7 +75,10 @@ TEST(Texture, SrgbTexelsAreDecodedBeforeFiltering) {
   const Texture t(img, TexelEncoding::Srgb);
   EXPECT_NEAR(t.sampleLevel({0.5f, 0.5f}, 0).r, 0.5, 1e-6);
   EXPECT_NEAR(t.sampleLevel({0.5f, 0.5f}, 0).a, 0.5, 1e-6);
-  EXPECT_NEAR(t.sampleLevel({0.5f, 0.5f}, 1).r, 0.5, 1e-6);  // the mipmap averages linear values too
+  // The mipmap averages linear values too: black and white make linear 0.5, kept as the sRGB byte
+  // nearest it, 188 (0.5029), not the byte mean 128 (0.2158).
+  EXPECT_NEAR(t.sampleLevel({0.5f, 0.5f}, 1).r, 0.5029, 1e-3);
+  EXPECT_EQ(t.byteSize(), 2u * 4 + 4);  // 8 bits a channel, every level
   Image grey(1, 1);
   grey.rgba = {188, 128, 0, 255};
   const Texture g(grey, TexelEncoding::Srgb);

@@ -220,7 +220,7 @@ std::shared_ptr<const Texture> loadTexture(const aiScene& scene, const std::stri
         const aiTexel& t = embedded->pcData[i];
         img.rgba[i * 4] = t.r, img.rgba[i * 4 + 1] = t.g, img.rgba[i * 4 + 2] = t.b, img.rgba[i * 4 + 3] = t.a;
       }
-      return std::make_shared<const Texture>(img);
+      return std::make_shared<const Texture>(std::move(img));
     }
   } else {
     const TextureLookup lookup = findTextureFile(name, modelDir);
@@ -242,7 +242,7 @@ std::shared_ptr<const Texture> loadTexture(const aiScene& scene, const std::stri
   Image img(w, h);
   std::copy(data, data + img.rgba.size(), img.rgba.begin());
   stbi_image_free(data);
-  return std::make_shared<const Texture>(img);
+  return std::make_shared<const Texture>(std::move(img));
 }
 
 // Collects assimp's warnings while one file is read. Some importers repair broken input with no

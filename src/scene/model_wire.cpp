@@ -106,7 +106,7 @@ void writeModel(const ImportedModel& model, IsolatedWriter& out) {
   }
   w.value(std::uint64_t(textures.size()));
   for (const Texture* t : textures) {
-    const Image image = t->baseImage();
+    const Image& image = t->baseImage();
     w.value(image.width);
     w.value(image.height);
     w.vector(image.rgba);
@@ -168,7 +168,7 @@ ImportedModel readModel(std::span<const std::uint8_t> bytes) {
     if (image.width <= 0 || image.height <= 0 ||
         image.rgba.size() != std::size_t(image.width) * std::size_t(image.height) * 4)
       Reader::broken();
-    slot = std::make_shared<const Texture>(image);
+    slot = std::make_shared<const Texture>(std::move(image));
   }
   model.objects.resize(r.count(bytes.size()));
   for (Object& o : model.objects) {
