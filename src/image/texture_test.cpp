@@ -92,3 +92,20 @@ TEST(Texture, SrgbTexelsAreDecodedBeforeFiltering) {
 
 }  // namespace
 }  // namespace illum
+
+namespace illum {
+namespace {
+
+// 8 bits a channel on every level: a 4096² texture costs its 64 MiB and a third more for the mip
+// chain (floats would cost four times that).
+TEST(Texture, KeepsEveryLevelAsBytes) {
+  Image big(4096, 4096);
+  const Texture t(std::move(big));
+  EXPECT_EQ(t.levelCount(), 13);
+  const std::size_t base = std::size_t(4096) * 4096 * 4;
+  EXPECT_GE(t.byteSize(), base + base / 4);
+  EXPECT_LE(t.byteSize(), base + base / 3 + 64);
+}
+
+}  // namespace
+}  // namespace illum
