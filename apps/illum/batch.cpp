@@ -7,6 +7,7 @@
 #include <illum/image.h>
 #include <illum/output_file.h>
 #include <illum/render.h>
+#include <illum/file_names.h>
 
 #include "output_guard.h"
 #include "render_options.h"
@@ -43,14 +44,9 @@ void onInterrupt(int) {
   std::signal(SIGINT, SIG_DFL);
 }
 
-std::string lower(std::string s) {
-  for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
-  return s;
-}
-
 enum class Container { Png, Gif, Webp, Mp4 };
 Container containerOf(const std::string& path) {
-  const std::string ext = lower(fs::path(path).extension().string());
+  const std::string ext = lowerExtension(path);
   return ext == ".gif" ? Container::Gif : ext == ".webp" ? Container::Webp : ext == ".mp4" ? Container::Mp4 : Container::Png;
 }
 
@@ -259,7 +255,7 @@ JobResult renderJob(const RenderOptions& o, const BatchJob& job, const std::stri
     const Real degrees = Real(360) * Real(f) / Real(frames);
     // A model's light rig follows its camera: its turntable turns the camera by its azimuth.
     const bool model = input == "-" ? !o.scene.stdinInput->isScene()
-                                    : !input.empty() && lower(fs::path(input).extension().string()) != ".json";
+                                    : !input.empty() && !isSceneFileName(input);
     if (o.turntable && model) so.azimuth = so.azimuth.value_or(35) + double(degrees);
     const auto start = Clock::now();
     double loadMs = 0;

@@ -2,6 +2,7 @@
 
 #include <illum/error.h>
 #include <illum/import.h>
+#include <illum/file_names.h>
 
 #include <algorithm>
 #include <regex>
@@ -16,9 +17,7 @@ namespace fs = std::filesystem;
 bool hasWildcard(const std::string& s) { return s.find_first_of("*?[") != std::string::npos; }
 
 bool isRenderable(const fs::path& p) {
-  std::string ext = p.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return ext == ".json" || isModelFileName(p);
+  return isSceneFileName(p) || isModelFileName(p);
 }
 
 // A glob as a regular expression over '/'-separated relative paths: ** crosses folders.

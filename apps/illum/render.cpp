@@ -5,6 +5,7 @@
 #include <illum/output_file.h>
 #include <illum/render.h>
 #include <illum/scene.h>
+#include <illum/file_names.h>
 
 #include "cli_values.h"
 #include "commands.h"
@@ -64,9 +65,7 @@ class ProgressLine {
 };
 
 bool isExrPath(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return ext == ".exr";
+  return lowerExtension(path) == ".exr";
 }
 
 int renderPicture(const RenderOptions& o) {

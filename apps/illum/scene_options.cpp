@@ -3,6 +3,7 @@
 #include <illum/error.h>
 #include <illum/framing.h>
 #include <illum/import.h>
+#include <illum/file_names.h>
 
 #include "cli_values.h"
 #include "stdin_input.h"
@@ -23,9 +24,7 @@ namespace {
 namespace fs = std::filesystem;
 
 bool isSceneFile(const std::string& path) {
-  std::string ext = fs::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return ext == ".json";
+  return isSceneFileName(path);
 }
 
 Vec3 parseUp(const std::string& text) {

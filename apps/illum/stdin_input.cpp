@@ -1,6 +1,7 @@
 #include "stdin_input.h"
 
 #include <illum/error.h>
+#include <illum/file_names.h>
 
 #include <sys/mman.h>
 #include <unistd.h>
@@ -20,8 +21,7 @@ std::string mib(std::uint64_t bytes) { return std::to_string((bytes + (1 << 20) 
 StdinInput::StdinInput(const std::string& format, const Limits& limits) {
   if (format.empty() || format.find_first_of("/\\. ") != std::string::npos)
     throw InputError("standard input (-) needs --format, the extension of what it holds (--format ply, --format json)");
-  format_ = "." + format;
-  std::transform(format_.begin(), format_.end(), format_.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  format_ = asciiLower("." + format);
   const std::uint64_t limit = isScene() ? limits.maxSceneBytes : limits.maxStdinBytes;
   const char* raise = isScene() ? "--max-scene-size" : "--max-stdin-size";
   if (!isScene()) {

@@ -92,7 +92,8 @@ Vec4 Texture::sampleLevel(const Vec2& uv, int level) const {
   const Real x = u * Real(l.width) - Real(0.5), y = v * Real(l.height) - Real(0.5);
   const Real fx = std::floor(x), fy = std::floor(y);
   const Real ax = x - fx, ay = y - fy;
-  const auto wrap = [](int i, int n) { return ((i % n) + n) % n; };
+  // u, v in [0, 1) put x, y in [−½, n − ½): the neighbours are at most one texel outside.
+  const auto wrap = [](int i, int n) { return i < 0 ? i + n : i >= n ? i - n : i; };
   const int x0 = wrap(int(fx), l.width), x1 = wrap(int(fx) + 1, l.width);
   const int y0 = wrap(int(fy), l.height), y1 = wrap(int(fy) + 1, l.height);
   return (1 - ay) * ((1 - ax) * texel(l, x0, y0) + ax * texel(l, x1, y0)) +

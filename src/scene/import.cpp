@@ -1,6 +1,7 @@
 #include <illum/import.h>
 
 #include <illum/error.h>
+#include <illum/file_names.h>
 
 #include "core/input_file.h"
 #include "scene/model_precheck.h"
@@ -37,12 +38,6 @@ Mat4 toMat4(const aiMatrix4x4& a) {
 }
 
 bool finite(const aiVector3D& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-
-std::string lowerExtension(const fs::path& p) {
-  std::string e = p.extension().string();
-  std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return e;
-}
 
 // Vertices no triangle, line or point uses (left over from an exporter) are dropped, so that they
 // neither frame the picture nor cost memory; assimp's JoinIdenticalVertices used to do this.

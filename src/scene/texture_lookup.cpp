@@ -1,5 +1,7 @@
 #include "scene/texture_lookup.h"
 
+#include <illum/file_names.h>
+
 #include <algorithm>
 #include <cctype>
 #include <system_error>
@@ -8,11 +10,6 @@ namespace illum {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return s;
-}
 
 bool isFile(const fs::path& p) {
   std::error_code ec;
@@ -24,10 +21,10 @@ std::optional<fs::path> entryIgnoringCase(const fs::path& dir, const std::string
   std::error_code ec;
   if (fs::exists(dir / name, ec) && (wantDirectory ? fs::is_directory(dir / name, ec) : isFile(dir / name)))
     return dir / name;
-  const std::string key = lower(name);
+  const std::string key = asciiLower(name);
   std::optional<fs::path> best;
   for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
-    if (lower(it->path().filename().string()) != key) continue;
+    if (asciiLower(it->path().filename().string()) != key) continue;
     if (wantDirectory ? it->is_directory(ec) : it->is_regular_file(ec))
       if (!best || it->path() < *best) best = it->path();  // the same answer on every file system order
   }
