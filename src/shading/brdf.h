@@ -18,6 +18,17 @@ Real distanceAttenuation(const Vec3& k, Real d);
 // max(−L·S, 0)^e inside the cone (−L·S ≥ cos cutoff), else 0.
 Real spotFactor(Real minusLoS, Real cosCutoff, Real exponent);
 
+// Where is the light, seen from P with unit normal N (light_sample-inl.h's SampleLight): L towards
+// it, its distance (0 for a directional light), attenuation and spot factor. A positional light
+// exactly at P shines along N; a directional light of zero direction along +Z.
+struct LightSampleAt {
+  Vec3 L{0};
+  Real distance = 0;
+  Real attenuation = 1;
+  Real spot = 1;
+};
+LightSampleAt sampleLight(const EyeLight& light, const Vec3& P, const Vec3& N);
+
 // Cook-Torrance's terms (cook_torrance-inl.h, brdf-inl.h): the normal distributions, the Smith
 // visibility G / (4 N·L N·V), Schlick's Fresnel, and α for a perceptual roughness.
 Real Fd_Lambert();  // 1/π

@@ -281,6 +281,10 @@ Real distanceAttenuation(const Vec3& k, Real d) {
 Real spotFactor(Real minusLoS, Real cosCutoff, Real exponent) {
   return hn::GetLane(HWY_NAMESPACE::SpotFactor(one::d, one::lane(minusLoS), cosCutoff, exponent));
 }
+LightSampleAt sampleLight(const EyeLight& light, const Vec3& P, const Vec3& N) {
+  const auto s = HWY_NAMESPACE::SampleLight(one::d, light, one::lanes(P), one::lanes(N));
+  return {HWY_NAMESPACE::Lane0(s.L), hn::GetLane(s.distance), hn::GetLane(s.attenuation), hn::GetLane(s.spot)};
+}
 Real Fd_Lambert() { return HWY_NAMESPACE::Fd_Lambert(); }
 Real D_GGX(Real NoH, Real alpha) { return hn::GetLane(HWY_NAMESPACE::D_GGX(one::d, one::lane(NoH), alpha)); }
 Real D_Beckmann(Real NoH, Real alpha) {

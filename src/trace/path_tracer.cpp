@@ -16,29 +16,6 @@ constexpr std::size_t kAllLights = 16;  // lights sampled all at once at every b
 
 Real maxComponent(const Color3& c) { return std::max({c.r, c.g, c.b}); }
 
-// A point light's direction, distance and the factor att·spot (GL's, brdf.h) at P.
-struct PointLightAt {
-  Vec3 L{0};
-  Real distance = 0;  // 0: directional
-  Real factor = 0;
-};
-
-PointLightAt lightAt(const EyeLight& light, const Vec3& P) {
-  PointLightAt out;
-  if (light.isPositional()) {
-    const Vec3 d = Vec3(light.position) / light.position.w - P;
-    out.distance = glm::length(d);
-    if (!(out.distance > 0)) return out;
-    out.L = d / out.distance;
-    out.factor = distanceAttenuation(light.attenuation, out.distance);
-  } else {
-    out.L = glm::normalize(Vec3(light.position));
-    out.factor = 1;
-  }
-  if (light.isSpot()) out.factor *= spotFactor(-glm::dot(out.L, light.spotDirection), light.spotCosCutoff, light.spotExponent);
-  return out;
-}
-
 }  // namespace
 
 PathTracer::PathTracer(const Scene& scene, const RayScene& rays) : scene_(scene), rays_(rays), area_(scene, rays) {
@@ -177,19 +154,22 @@ Color4 PathTracer::primary(const Ray& primaryRay, const RayHit* primaryHit, cons
     const Real lightWeight = everyLight ? Real(1) : Real(lightCount);
     for (std::size_t i = firstLight; i < (everyLight ? lightCount : firstLight + 1); ++i) {
       const EyeLight& light = lights_[i];
-      const PointLightAt at = lightAt(light, h.position);
-      if (!(at.factor > 0) || !(shadows ? leaves(at.L) : glm::dot(at.L, N) > 0)) continue;
+      // Where is the light: the rasterizer's own sample (shading/), edge cases and all.
+      const LightSampleAt at = sampleLight(light, h.position, N);
+      const Real factor = at.attenuation * at.spot;
+      if (!(factor > 0) || !(shadows ? leaves(at.L) : glm::dot(at.L, N) > 0)) continue;
       const BsdfValue f = bsdf.eval(wo, at.L);
       if (f.sum() == Color3(0)) continue;
-      if (shadows) {
+      // A positional light at the point itself has nothing between them.
+      if (shadows && !(light.isPositional() && at.distance == 0)) {
         Ray shadow;
         shadow.origin = offsetOrigin(h.position, Ng, at.L);
         shadow.direction = at.L;
-        if (at.distance > 0) shadow.tFar = at.distance * Real(1 - 1e-4);
+        if (light.isPositional()) shadow.tFar = at.distance * Real(1 - 1e-4);
         ++counts.shadow;
         if (rays_.occluded(shadow)) continue;
       }
-      const Real E = kPiReal * at.factor * glm::dot(N, at.L) * lightWeight;
+      const Real E = kPiReal * factor * glm::dot(N, at.L) * lightWeight;
       radiance += beta * (f.diffuse * light.diffuse + f.specular * light.specular) * E;
     }
     if (!area_.empty()) {
