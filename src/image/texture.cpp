@@ -64,7 +64,7 @@ Image halved(const Image& prev, TexelEncoding encoding) {
 }  // namespace
 
 Texture::Texture(Image image, TexelEncoding encoding)
-    : encoding_(encoding), decode_(encoding == TexelEncoding::Srgb ? tables().srgb.data() : tables().linear.data()) {
+    : decode_(encoding == TexelEncoding::Srgb ? tables().srgb.data() : tables().linear.data()), encoding_(encoding) {
   if (image.width <= 0 || image.height <= 0 || image.rgba.size() < std::size_t(image.width) * std::size_t(image.height) * 4) {
     image = Image(std::max(image.width, 1), std::max(image.height, 1));
     std::fill(image.rgba.begin(), image.rgba.end(), std::uint8_t(255));  // white: modulates nothing

@@ -72,12 +72,17 @@ void recordProbe(const DrawTarget& target, const DrawRecord& record, const std::
     p.vertexNormals[i] = back ? -v[i].normal() : v[i].normal();
     p.vertexMaterials[i] = object.mesh->colors.empty() ? object.material : withVertexColor(object.material, v[i].color());
   }
-  p.material = object.material;
-  if (!object.mesh->colors.empty())
-    p.material = withVertexColor(object.material, w[0] * v[0].color() + w[1] * v[1].color() + w[2] * v[2].color());
+  // The material at the pixel, as its fragment was lit (the maps' texels came with `mapped`).
   p.texelIsBaseColor = texelIsBaseColor;
-  if (texel && texelIsBaseColor) p.material = withBaseTexel(p.material, *texel);
-  if (mapped) p.material = mapped->point.material;
+  if (mapped) {
+    p.material = mapped->point.material;
+  } else {
+    const bool colored = !object.mesh->colors.empty();
+    const Color4 color = colored ? w[0] * v[0].color() + w[1] * v[1].color() + w[2] * v[2].color() : Color4(1);
+    p.material = materialAt(object, target.frame.model, target.frame.litPerPixel(), colored ? &color : nullptr,
+                            [&](const Texture&) { return texel ? *texel : Vec4(1); })
+                     .material;
+  }
   if (target.frame.shading == Shading::Flat) {
     const Real* provoking = record.provoking(l);
     p.eyePosition = Vec3(provoking[0], provoking[1], provoking[2]);
