@@ -98,12 +98,23 @@ void recordProbe(const DrawTarget& target, const DrawRecord& record, const std::
 
 namespace {
 
+// Where one record's pass draws: its triangle as set up for the pass's sample, that sample's
+// framebuffer and offset, and whether the watched pixel is recorded in this pass.
+struct SamplePass {
+  const TriangleSetup& setup;
+  Framebuffer& fb;
+  SubpixelOffset sample;
+  bool probe;
+};
+
 // One record's pixels with every per-draw choice fixed at compile time (the shading frequency,
 // texturing, blending, a watched pixel), so the pixel loop never branches on them.
 template <Shading kShading, bool kTextured, bool kBlend, bool kProbe>
-void drawPixels(const DrawTarget& target, const DrawRecord& record, const PixelRect& rect, std::size_t& fragments) {
+void drawPixels(const DrawTarget& target, const DrawRecord& record, const SamplePass& pass, const PixelRect& rect,
+                std::size_t& fragments) {
   const Object& object = target.scene.objects[record.object];
-  const TriangleSetup& t = record.setup;
+  const TriangleSetup& t = pass.setup;
+  Framebuffer& fb = pass.fb;
   const FrameContext& frame = target.frame;
   const AttributeLayout& l = target.layout(record);
   const Texture* texture = kTextured ? object.diffuseTexture.get() : nullptr;
@@ -114,9 +125,9 @@ void drawPixels(const DrawTarget& target, const DrawRecord& record, const PixelR
   // A multisample pass tests coverage and depth at the sample, and shades at the pixel centre.
   rasterizeTriangle(t, rect, [&](int x, int y, Real l0, Real l1, Real l2) {
     const Real z = l0 * t.z[0] + l1 * t.z[1] + l2 * t.z[2];
-    if (!target.fb.depthTest(x, y, z)) return;
+    if (!fb.depthTest(x, y, z)) return;
     if (frame.multisampled) {
-      const std::array<Real, 3> centre = centreBarycentrics(t, x, y, frame.sample);
+      const std::array<Real, 3> centre = centreBarycentrics(t, x, y, pass.sample);
       l0 = centre[0], l1 = centre[1], l2 = centre[2];
     }
     ++fragments;
@@ -137,8 +148,8 @@ void drawPixels(const DrawTarget& target, const DrawRecord& record, const PixelR
     // GL_MODULATE: the lit colour times the texel, alpha included (unless it was the base colour).
     if constexpr (kTextured)
       if (!baseTexture) c *= texel;
-    if constexpr (kBlend) target.fb.blendColor(x, y, c);
-    else target.fb.writeColor(x, y, c);
+    if constexpr (kBlend) fb.blendColor(x, y, c);
+    else fb.writeColor(x, y, c);
     if constexpr (kProbe)
       if (y == probeRow && x == target.probe->x)
         recordProbe(target, record, perspectiveWeights(t, l0, l1, l2), lit, kTextured ? &texel : nullptr, c,
@@ -147,31 +158,41 @@ void drawPixels(const DrawTarget& target, const DrawRecord& record, const PixelR
 }
 
 template <Shading kShading, bool kTextured, bool kBlend>
-void drawPixels(const DrawTarget& target, const DrawRecord& record, const PixelRect& rect, std::size_t& fragments) {
-  if (target.probe) drawPixels<kShading, kTextured, kBlend, true>(target, record, rect, fragments);
-  else drawPixels<kShading, kTextured, kBlend, false>(target, record, rect, fragments);
+void drawPixels(const DrawTarget& target, const DrawRecord& record, const SamplePass& pass, const PixelRect& rect,
+                std::size_t& fragments) {
+  if (pass.probe) drawPixels<kShading, kTextured, kBlend, true>(target, record, pass, rect, fragments);
+  else drawPixels<kShading, kTextured, kBlend, false>(target, record, pass, rect, fragments);
 }
 
 template <Shading kShading, bool kTextured>
-void drawPixels(const DrawTarget& target, const DrawRecord& record, const PixelRect& rect, std::size_t& fragments) {
-  if (target.blends(record)) drawPixels<kShading, kTextured, true>(target, record, rect, fragments);
-  else drawPixels<kShading, kTextured, false>(target, record, rect, fragments);
+void drawPixels(const DrawTarget& target, const DrawRecord& record, const SamplePass& pass, const PixelRect& rect,
+                std::size_t& fragments) {
+  if (target.blends(record)) drawPixels<kShading, kTextured, true>(target, record, pass, rect, fragments);
+  else drawPixels<kShading, kTextured, false>(target, record, pass, rect, fragments);
 }
 
 template <Shading kShading>
-void drawPixels(const DrawTarget& target, const DrawRecord& record, const PixelRect& rect, std::size_t& fragments) {
+void drawPixels(const DrawTarget& target, const DrawRecord& record, const SamplePass& pass, const PixelRect& rect,
+                std::size_t& fragments) {
   const Object& object = target.scene.objects[record.object];
-  if (drawnTexture(object)) drawPixels<kShading, true>(target, record, rect, fragments);
-  else drawPixels<kShading, false>(target, record, rect, fragments);
+  if (drawnTexture(object)) drawPixels<kShading, true>(target, record, pass, rect, fragments);
+  else drawPixels<kShading, false>(target, record, pass, rect, fragments);
 }
 
 }  // namespace
 
-void drawRecord(const DrawTarget& target, const DrawRecord& record, const PixelRect& rect, std::size_t& fragments) {
+void drawRecord(const DrawTarget& target, const DrawRecord& record, const PixelRect& rect, std::size_t& fragments,
+                int sample) {
+  // One sample of a multisampled tile: the record's triangle moved as that sample's pass would
+  // have set it up; the watched pixel is reported from the first sample, as the resolve's input.
+  const TriangleSetup moved = sample >= 0 ? atSample(record.setup, target.frame.samples[std::size_t(sample)]) : record.setup;
+  const SamplePass pass = sample >= 0 ? SamplePass{moved, target.sampleBuffers[std::size_t(sample)],
+                                                   target.frame.samples[std::size_t(sample)], target.probe && sample == 0}
+                                      : SamplePass{record.setup, target.fb, target.frame.sample, target.probe != nullptr};
   switch (target.frame.shading) {
-    case Shading::Flat: return drawPixels<Shading::Flat>(target, record, rect, fragments);
-    case Shading::Gouraud: return drawPixels<Shading::Gouraud>(target, record, rect, fragments);
-    case Shading::Phong: return drawPixels<Shading::Phong>(target, record, rect, fragments);
+    case Shading::Flat: return drawPixels<Shading::Flat>(target, record, pass, rect, fragments);
+    case Shading::Gouraud: return drawPixels<Shading::Gouraud>(target, record, pass, rect, fragments);
+    case Shading::Phong: return drawPixels<Shading::Phong>(target, record, pass, rect, fragments);
   }
 }
 

@@ -15,38 +15,10 @@
 #include "shading/shade_points.h"
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace illum {
-
-// Multisampling shades a pixel at its centre, so every pass that finds the same triangle piece
-// in a pixel computes the same colour: the first pass to shade it keeps it here for the others.
-// Tile by tile in the framebuffer's layout (a tile's thread owns its block); reset before pass 0.
-class ShadedPixelCache {
- public:
-  static constexpr std::uint64_t kNone = ~std::uint64_t(0);
-  void reset(int width, int height) {
-    tilesX_ = (width + kTileSize - 1) / kTileSize;
-    const std::size_t size = std::size_t(tilesX_) * std::size_t((height + kTileSize - 1) / kTileSize) * kTileBlock;
-    key_.assign(size, kNone);
-    color_.resize(size);
-  }
-  static std::uint64_t keyOf(const DrawRecord& r) {
-    return std::uint64_t(r.object) << 35 | std::uint64_t(r.triangle) << 3 | r.piece;
-  }
-  // The slot of pixel `index` (tile-local) of the tile whose rectangle is `rect`.
-  std::size_t slot(const PixelRect& rect, int index) const {
-    return (std::size_t(rect.minY / kTileSize) * std::size_t(tilesX_) + std::size_t(rect.minX / kTileSize)) * kTileBlock +
-           std::size_t(index);
-  }
-  std::uint64_t& key(std::size_t slot) { return key_[slot]; }
-  std::uint32_t& color(std::size_t slot) { return color_[slot]; }
-
- private:
-  int tilesX_ = 0;
-  std::vector<std::uint64_t> key_;
-  std::vector<std::uint32_t> color_;  // RGBA8, as the framebuffer stores it
-};
 
 // What every triangle of a frame draws into.
 struct DrawTarget {
@@ -68,7 +40,8 @@ struct DrawTarget {
   // An opaque object is drawn as without blending even when it is on: its alpha of 1 would blend
   // to the fragment itself, and so its interpolated alpha, a few ulps from 1, cannot blend at all.
   std::vector<std::uint8_t> translucent;
-  ShadedPixelCache* shadedPixels = nullptr;  // multisampling: colours of earlier passes (Phong)
+  // Multisampling in one pass (frame.samples): one framebuffer per sample, sampleBuffers[0] = fb.
+  std::span<Framebuffer> sampleBuffers;
   // Flat and Gouraud pixels coloured in the depth pass itself (tile_raster.h): float channels, one
   // sample, no watched pixel.
   bool colorsInDepthPass = false;
@@ -82,8 +55,11 @@ struct DrawTarget {
   bool blends(const DrawRecord& r) const { return translucent[r.object] != 0; }
 };
 
-// Draws the record's pixels inside `rect`; adds the fragments that passed the depth test.
-void drawRecord(const DrawTarget& target, const DrawRecord& record, const PixelRect& rect, std::size_t& fragments);
+// Draws the record's pixels inside `rect`; adds the fragments that passed the depth test. With
+// `sample` (multisampling in one pass), only that sample's coverage and depth, into its framebuffer
+// (the pixels still shaded at their centres).
+void drawRecord(const DrawTarget& target, const DrawRecord& record, const PixelRect& rect, std::size_t& fragments,
+                int sample = -1);
 
 // Records the fragment at the watched pixel: where it was lit (weights w), the lit colour, the
 // texel that modulated it or, with texelIsBaseColor, tinted its base colour (null without a

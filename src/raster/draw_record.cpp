@@ -83,6 +83,7 @@ std::size_t setupTriangles(const FrameContext& frame, const Object& object, std:
   // that comes one by one is covered alone.
   bool grouping = false;
 #endif
+  const FrameContext::SampleReach reach = frame.reach();
   ClippedPolygon polygon;
   const auto oneByOne = [&](std::size_t t) {
     const std::size_t i = 3 * t;
@@ -92,7 +93,7 @@ std::size_t setupTriangles(const FrameContext& frame, const Object& object, std:
     // c is the provoking vertex: flat shading shows its colour on every piece.
     const auto emit = [&](const ShadedVertex& v0, const ShadedVertex& v1, const ShadedVertex& v2, std::uint32_t piece) {
       DrawRecord& r = out.append();
-      if (!setupTriangle(v0, v1, v2, frame.width, frame.height, r.setup, frame.sample)) {
+      if (!setupTriangle(v0, v1, v2, frame.width, frame.height, r.setup, frame.sample, reach)) {
         out.drop();
         return;
       }

@@ -1,5 +1,7 @@
 #include "raster/frame_context.h"
 
+#include <algorithm>
+
 namespace illum {
 
 FrameContext FrameContext::fromScene(const Scene& scene) {
@@ -15,6 +17,15 @@ FrameContext FrameContext::fromScene(const Scene& scene) {
   f.shading = scene.shading;
   f.blend = scene.blend;
   return f;
+}
+
+FrameContext::SampleReach FrameContext::reach() const {
+  SampleReach r;
+  for (const SubpixelOffset& o : samples) {
+    r.minX = std::min(r.minX, o.x), r.maxX = std::max(r.maxX, o.x);
+    r.minY = std::min(r.minY, o.y), r.maxY = std::max(r.maxY, o.y);
+  }
+  return r;
 }
 
 }  // namespace illum

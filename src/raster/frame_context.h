@@ -6,6 +6,7 @@
 
 #include <cstdint>
 
+#include <span>
 #include <vector>
 
 namespace illum {
@@ -29,6 +30,17 @@ struct FrameContext {
   // gets the colour one sample gives). {0, 0} without multisampling.
   SubpixelOffset sample;
   bool multisampled = false;
+  // Multisampling in one pass (pipeline.cpp): the triangles are set up once, at the pixel
+  // centres, and each tile keeps coverage, depth and colour per sample of this pattern (more
+  // than one offset), resolved in the tile. Empty otherwise (and in a pass of one sample).
+  std::span<const SubpixelOffset> samples;
+
+  // How far, in sub-pixel units, the samples of a pixel lie from its centre (setup widens a
+  // triangle's pixel bounds by it, so that they hold every pixel with a covered sample).
+  struct SampleReach {
+    std::int64_t minX = 0, maxX = 0, minY = 0, maxY = 0;
+  };
+  SampleReach reach() const;
 
   // Phong shading lights each pixel at its own point (the material at that point, its maps).
   bool litPerPixel() const { return shading == Shading::Phong; }

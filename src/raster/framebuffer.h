@@ -89,6 +89,13 @@ class Framebuffer {
   // tile (not drawn since reset) at `memory` until returnTile, which forgets what was drawn there:
   // the tile is undrawn again.
   bool drawn(int tile) const { return cleared_[std::size_t(tile)] != 0; }
+  // The tile's RGBA8 words (as colorTile), or null when it was never drawn: then every pixel is
+  // clearWord().
+  const std::uint32_t* tileColors(int tile) const {
+    return drawn(tile) ? reinterpret_cast<const std::uint32_t*>(block_[std::size_t(tile)].color) : nullptr;
+  }
+  std::uint32_t clearWord() const { return clear_; }
+  int tilesX() const { return tilesX_; }
   void lendTile(int tile, TileMemory& memory) {
     block_[std::size_t(tile)] = {memory.depth, memory.color};
   }

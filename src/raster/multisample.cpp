@@ -2,7 +2,9 @@
 
 #include "raster/setup.h"
 
+#include <algorithm>
 #include <array>
+#include <cstring>
 
 namespace illum {
 namespace {
@@ -24,6 +26,7 @@ constexpr auto kFourPattern = scaled(kFour);
 constexpr auto kEightPattern = scaled(kEight);
 constexpr auto kSixteenPattern = scaled(kSixteen);
 constexpr std::array<SubpixelOffset, 1> kCentre = {SubpixelOffset{0, 0}};
+constexpr std::size_t kMaxSampleCount = kSixteenPattern.size();
 
 }  // namespace
 
@@ -36,36 +39,42 @@ std::span<const SubpixelOffset> multisamplePattern(int count) {
   }
 }
 
-MultisampleResolve::MultisampleResolve(int width, int height)
-    : width_(width), height_(height),
-      premultiplied_(std::size_t(width) * std::size_t(height) * 4, 0),
-      straight_(std::size_t(width) * std::size_t(height) * 3, 0) {}
-
-void MultisampleResolve::add(const Image& pass) {
-  ++passes_;
-  const std::size_t pixels = std::size_t(width_) * std::size_t(height_);
-  for (std::size_t i = 0; i < pixels; ++i) {
-    const std::uint8_t* p = &pass.rgba[4 * i];
-    const std::uint32_t a = p[3];
-    for (std::size_t c = 0; c < 3; ++c) {
-      premultiplied_[4 * i + c] += p[c] * a;
-      straight_[3 * i + c] += p[c];
+std::size_t resolveTile(std::span<const Framebuffer> samples, int tile, Image& image, std::uint32_t background8) {
+  const Framebuffer& first = samples.front();
+  const int x0 = tile % first.tilesX() * kTileSize, y0 = tile / first.tilesX() * kTileSize;
+  const int count = std::min(kTileSize, first.width() - x0), rows = std::min(kTileSize, first.height() - y0);
+  const std::uint32_t n = std::uint32_t(samples.size());
+  const std::uint32_t* planes[kMaxSampleCount];
+  std::uint32_t clear[kMaxSampleCount];
+  for (std::size_t s = 0; s < samples.size(); ++s) {
+    planes[s] = samples[s].tileColors(tile);
+    clear[s] = samples[s].clearWord();
+  }
+  std::size_t unlike = 0;
+  for (int r = 0; r < rows; ++r) {
+    std::uint8_t* out = image.pixel(x0, first.height() - 1 - (y0 + r));  // the image's rows run from the top
+    for (int x = 0; x < count; ++x, out += 4) {
+      const int at = r * kTileSize + x;
+      std::uint32_t premultiplied[3] = {}, straight[3] = {}, alpha = 0;
+      for (std::size_t s = 0; s < samples.size(); ++s) {
+        const std::uint32_t word = planes[s] ? planes[s][at] : clear[s];
+        const std::uint32_t a = word >> 24;
+        for (int c = 0; c < 3; ++c) {
+          const std::uint32_t v = word >> (8 * c) & 0xFF;
+          premultiplied[c] += v * a;
+          straight[c] += v;
+        }
+        alpha += a;
+      }
+      for (int c = 0; c < 3; ++c)
+        out[c] = std::uint8_t(alpha > 0 ? (premultiplied[c] + alpha / 2) / alpha : (straight[c] + n / 2) / n);
+      out[3] = std::uint8_t((alpha + n / 2) / n);
+      std::uint32_t word;
+      std::memcpy(&word, out, 4);
+      unlike += word != background8;
     }
-    premultiplied_[4 * i + 3] += a;
   }
-}
-
-void MultisampleResolve::finish(Image& out) const {
-  out = Image(width_, height_);
-  const std::uint32_t n = std::uint32_t(passes_);
-  const std::size_t pixels = std::size_t(width_) * std::size_t(height_);
-  for (std::size_t i = 0; i < pixels; ++i) {
-    const std::uint32_t alpha = premultiplied_[4 * i + 3];
-    std::uint8_t* o = &out.rgba[4 * i];
-    for (std::size_t c = 0; c < 3; ++c)
-      o[c] = std::uint8_t(alpha > 0 ? (premultiplied_[4 * i + c] + alpha / 2) / alpha : (straight_[3 * i + c] + n / 2) / n);
-    o[3] = std::uint8_t((alpha + n / 2) / n);
-  }
+  return unlike;
 }
 
 }  // namespace illum

@@ -37,7 +37,11 @@ constexpr std::size_t kBatchTiny = 1 << 16;
 
 // What the pipeline keeps from frame to frame.
 struct RasterPipeline::State {
-  Framebuffer fb;
+  // One framebuffer per sample (the first alone without multisampling). A tile drawn once, in the
+  // frame's last flush, lives in its thread's memory instead (Framebuffer::lendTile): the other
+  // samples' blocks are touched only by tiles that several flushes draw.
+  std::vector<Framebuffer> buffers = std::vector<Framebuffer>(kMaxMultisamples);  // never resized: `fb` stays
+  Framebuffer& fb = buffers[0];
   std::vector<std::size_t> tileFragments;
   std::vector<ShadedVertex> vertices;  // a run of objects' (BinnedFrame::drawObjects)
   struct Member {
@@ -72,7 +76,6 @@ struct RasterPipeline::State {
   };
   tbb::enumerable_thread_specific<TileList> tileLists;
   tbb::affinity_partitioner tileAffinity;
-  ShadedPixelCache shadedPixels;  // multisampling: what earlier passes shaded
 };
 
 namespace {
@@ -81,9 +84,10 @@ namespace {
 class BinnedFrame {
  public:
   BinnedFrame(RasterPipeline::State& state, const Scene& scene, const FrameContext& frame, PixelProbe* probe)
-      : s_(state), frame_(frame), target_(frame, scene, state.fb, probe) {
-    if (frame.multisampled) target_.shadedPixels = &s_.shadedPixels;
-    s_.fb.reset(scene.width, scene.height, scene.background);
+      : s_(state), frame_(frame), target_(frame, scene, state.fb, probe),
+        samples_(std::max<int>(1, int(frame.samples.size()))) {
+    for (int s = 0; s < samples_; ++s) s_.buffers[std::size_t(s)].reset(scene.width, scene.height, scene.background);
+    if (samples_ > 1) target_.sampleBuffers = std::span(s_.buffers).first(std::size_t(samples_));
     tiles_.reset(frame.width, frame.height);
     s_.tileFragments.assign(std::size_t(tiles_.tileCount()), 0);
   }
@@ -139,10 +143,11 @@ class BinnedFrame {
           std::size_t n = 0;
           for (int tile = range.begin(); tile < range.end(); ++tile) {
             const bool lent = used_ > 0 && !s_.fb.drawn(tile);
-            if (lent) s_.fb.lendTile(tile, s_.scratch.local().pixels);
+            if (lent) lendTile(tile);
             if (used_ > 0) drawTile(tile);
-            n += s_.fb.copyTile(tile, image, background8);
-            if (lent) s_.fb.returnTile(tile);
+            n += copyTile(tile, image, background8);
+            if (lent)
+              for (int s = 0; s < samples_; ++s) s_.buffers[std::size_t(s)].returnTile(tile);
           }
           unlike += n;
         },
@@ -150,6 +155,42 @@ class BinnedFrame {
     used_ = 0;
     batchedRecords_ = batchedTiny_ = 0;
     return unlike;
+  }
+
+  // The tile's planes in this thread's memory, one per sample.
+  void lendTile(int tile) {
+    TileScratch& scratch = s_.scratch.local();
+    scratch.reserveSamples(samples_);
+    s_.fb.lendTile(tile, scratch.pixels);
+    for (int s = 1; s < samples_; ++s) s_.buffers[std::size_t(s)].lendTile(tile, scratch.samplePixels[std::size_t(s)]);
+  }
+
+  // The finished tile into the image (its samples resolved); returns its pixels unlike the background.
+  std::size_t copyTile(int tile, Image& image, std::uint32_t background8) const {
+    if (samples_ == 1) return s_.fb.copyTile(tile, image, background8);
+    return resolveTile(std::span(s_.buffers).first(std::size_t(samples_)), tile, image, background8);
+  }
+
+  // Every tile into the image, once everything is drawn; returns the pixels unlike the background.
+  std::size_t copyTiles(Image& image, const Color4& background) const {
+    if (samples_ == 1) return s_.fb.toImage(image, background);
+    s_.fb.imageOf(image);
+    const std::uint32_t background8 = packUnorm8(background);
+    std::atomic<std::size_t> unlike{0};
+    tbb::parallel_for(0, tiles_.tileCount(), [&](int tile) { unlike += copyTile(tile, image, background8); });
+    return unlike;
+  }
+
+  // Points, lines and overlay lines, after the triangles: into each sample's framebuffer, as a
+  // pass at that sample draws them.
+  void drawAfterTriangles(const Scene& scene, std::span<const OverlayLine> overlay) {
+    for (int s = 0; s < samples_; ++s) {
+      FrameContext pass = frame_;
+      if (samples_ > 1) pass.sample = frame_.samples[std::size_t(s)];
+      Framebuffer& fb = s_.buffers[std::size_t(s)];
+      drawPointsAndLines(fb, pass, scene, s_.vertices);
+      drawOverlayLines(fb, pass, overlay, 1);
+    }
   }
 
   void drawTile(int tile) {
@@ -174,16 +215,29 @@ class BinnedFrame {
     const TinyPixels tiny{list.fragments, list.surfaces};
     if (list.records.empty() && tiny.empty()) return;
     const PixelRect rect = tiles_.tileRect(tile);
-    s_.fb.clearTile(rect.minX, rect.minY);
+    SampleTiles planes;
+    planes.count = samples_;
+    for (int s = 0; s < samples_; ++s) {
+      Framebuffer& fb = s_.buffers[std::size_t(s)];
+      fb.clearTile(rect.minX, rect.minY);
+      planes.depth[s] = fb.depthTile(rect.minX, rect.minY);
+      planes.color[s] = reinterpret_cast<std::uint32_t*>(fb.colorTile(rect.minX, rect.minY));
+    }
+    TileScratch& scratch = s_.scratch.local();
+    scratch.reserveSamples(samples_);
     std::size_t& fragments = s_.tileFragments[std::size_t(tile)];
     // The opaque objects come first (drawingOrder): each visible pixel shaded once
     // (shade_tile.h); then the translucent ones, blended fragment by fragment (tiny triangles
-    // are all opaque).
+    // are all opaque), sample by sample.
     std::size_t opaque = 0;
     while (opaque < list.records.size() && !target_.blends(*list.records[opaque])) ++opaque;
     if (opaque > 0 || !tiny.empty())
-      fragments += drawOpaqueTile(target_, std::span(list.records).first(opaque), tiny, rect, s_.scratch.local());
-    for (std::size_t i = opaque; i < list.records.size(); ++i) drawRecord(target_, *list.records[i], rect, fragments);
+      fragments += drawOpaqueTile(target_, std::span(list.records).first(opaque), tiny, rect, scratch, planes);
+    for (std::size_t i = opaque; i < list.records.size(); ++i) {
+      if (samples_ == 1) drawRecord(target_, *list.records[i], rect, fragments);
+      else
+        for (int s = 0; s < samples_; ++s) drawRecord(target_, *list.records[i], rect, fragments, s);
+    }
   }
 
   RenderStats stats() const {
@@ -255,6 +309,7 @@ class BinnedFrame {
   RasterPipeline::State& s_;
   const FrameContext& frame_;
   DrawTarget target_;
+  int samples_;     // per pixel, kept in the tile
   TileBins tiles_;  // only its tile rectangles: the records are binned per chunk
   std::size_t used_ = 0, batchedRecords_ = 0, batchedTiny_ = 0;
   RenderStats stats_;
@@ -271,42 +326,25 @@ void RasterPipeline::draw(const Scene& scene, Image& image, RenderStats& stats, 
   const std::span<const SubpixelOffset> samples = multisamplePattern(scene.multisample);
   const std::vector<OverlayLine> overlay = overlayLines(scene);
   if (hasPointsOrLines(scene)) checkPointAndLineFill(frame, scene, int(samples.size()));
-  if (samples.size() <= 1) {
-    BinnedFrame pass(*state_, scene, frame, probe);
-    pass.drawObjects(scene, drawingOrder(scene, frame));
-    if (hasPointsOrLines(scene) || !overlay.empty()) {
-      pass.flush();
-      drawPointsAndLines(state_->fb, frame, scene, state_->vertices);
-      drawOverlayLines(state_->fb, frame, overlay, 1);
-      stats = pass.stats();
-      stats.pixelsDrawn = state_->fb.toImage(image, scene.background);
-    } else {
-      const std::size_t unlike = pass.flushInto(image, scene.background);
-      stats = pass.stats();
-      stats.pixelsDrawn = unlike;
-    }
-    return;
+  // Multisampling in one pass: the triangles set up once at the pixel centres, each tile keeping
+  // coverage, depth and colour per sample and resolving them (shade_tile.h); each pixel shaded at
+  // its centre, once per triangle that it shows.
+  if (samples.size() > 1) {
+    frame.multisampled = true;
+    frame.samples = samples;
   }
-  // One pass per sample position, each through the whole pipeline into the framebuffer, summed
-  // premultiplied; the watched pixel reports the first sample's fragment.
-  frame.multisampled = true;
-  state_->shadedPixels.reset(scene.width, scene.height);
-  MultisampleResolve resolve(scene.width, scene.height);
-  for (std::size_t s = 0; s < samples.size(); ++s) {
-    frame.sample = samples[s];
-    BinnedFrame pass(*state_, scene, frame, s == 0 ? probe : nullptr);
-    pass.drawObjects(scene, drawingOrder(scene, frame));
+  BinnedFrame pass(*state_, scene, frame, probe);
+  pass.drawObjects(scene, drawingOrder(scene, frame));
+  if (hasPointsOrLines(scene) || !overlay.empty()) {
     pass.flush();
-    drawPointsAndLines(state_->fb, frame, scene, state_->vertices);
-    drawOverlayLines(state_->fb, frame, overlay, 1);
-    const RenderStats passStats = pass.stats();
-    if (s == 0) stats = passStats;
-    else stats.fragmentsShaded += passStats.fragmentsShaded;
-    state_->fb.toImage(image, scene.background);
-    resolve.add(image);
+    pass.drawAfterTriangles(scene, overlay);
+    stats = pass.stats();
+    stats.pixelsDrawn = pass.copyTiles(image, scene.background);
+  } else {
+    const std::size_t unlike = pass.flushInto(image, scene.background);
+    stats = pass.stats();
+    stats.pixelsDrawn = unlike;
   }
-  resolve.finish(image);
-  stats.pixelsDrawn = pixelsUnlike(image, scene.background);
 }
 
 }  // namespace illum

@@ -37,7 +37,7 @@ WindowPosition toWindow(const Vec4& clip, int width, int height) {
 }
 
 bool setupTriangle(const ShadedVertex& v0, const ShadedVertex& v1, const ShadedVertex& v2, int width, int height,
-                   TriangleSetup& out, SubpixelOffset sample) {
+                   TriangleSetup& out, SubpixelOffset sample, const FrameContext::SampleReach& reach) {
   // The coordinates as plain integers (copies of whole structs cost store-forwarding stalls in
   // this, the hottest function of a dense mesh).
   WindowPosition computed[3];
@@ -55,10 +55,11 @@ bool setupTriangle(const ShadedVertex& v0, const ShadedVertex& v1, const ShadedV
   const std::int64_t minFy = std::min({y[0], y[1], y[2]}), maxFy = std::max({y[0], y[1], y[2]});
   const auto firstCentre = [&](std::int64_t f) { return (f - half + kSubpixelOne - 1) >> kSubpixelBits; };
   const auto lastCentre = [&](std::int64_t f) { return (f - half) >> kSubpixelBits; };
-  out.minX = int(std::max<std::int64_t>(0, firstCentre(minFx)));
-  out.maxX = int(std::min<std::int64_t>(width - 1, lastCentre(maxFx)));
-  out.minY = int(std::max<std::int64_t>(0, firstCentre(minFy)));
-  out.maxY = int(std::min<std::int64_t>(height - 1, lastCentre(maxFy)));
+  // (A sample at centre + o covers a point p when the centre is p − o.)
+  out.minX = int(std::max<std::int64_t>(0, firstCentre(minFx - reach.maxX)));
+  out.maxX = int(std::min<std::int64_t>(width - 1, lastCentre(maxFx - reach.minX)));
+  out.minY = int(std::max<std::int64_t>(0, firstCentre(minFy - reach.maxY)));
+  out.maxY = int(std::min<std::int64_t>(height - 1, lastCentre(maxFy - reach.minY)));
   // Most of a dense mesh's triangles hold no pixel centre: they stop here, before any copying.
   if (out.minX > out.maxX || out.minY > out.maxY) return false;
 
@@ -85,7 +86,8 @@ bool setupTriangle(const ShadedVertex& v0, const ShadedVertex& v1, const ShadedV
   out.edge[2] = makeEdge(x[0], y[0], x[1], y[1]);
   // An edge's function vanishes on its own segment, which lies in the bounds, so anywhere in them
   // |E| ≤ |a|·width + |b|·height (sub-pixel units): small triangles can be rasterized in float.
-  const std::int64_t spanX = maxFx - minFx, spanY = maxFy - minFy;
+  // (Widened bounds reach further from the segments.)
+  const std::int64_t spanX = maxFx - minFx + reach.maxX - reach.minX, spanY = maxFy - minFy + reach.maxY - reach.minY;
   out.floatExact = true;
   for (const EdgeFunction& e : out.edge)
     out.floatExact = out.floatExact && std::abs(std::int64_t(e.a)) * spanX + std::abs(std::int64_t(e.b)) * spanY <= (1 << 24);

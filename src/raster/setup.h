@@ -45,8 +45,19 @@ WindowPosition toWindow(const Vec4& clip, int width, int height);
 // Returns false for triangles that cover no pixel centre's neighbourhood (zero area or off-screen).
 // Window coordinates are GL's: origin at the bottom-left, pixel centres at +0.5. A multisample
 // pass moves the triangle by −`sample` (sub-pixel units), so that the rasterizer's pixel centres
-// test coverage and depth at centre + sample.
+// test coverage and depth at centre + sample. With a `reach` (multisampling in one pass), the
+// pixel bounds take in every pixel whose samples, that far from its centre, the triangle may cover.
 bool setupTriangle(const ShadedVertex& v0, const ShadedVertex& v1, const ShadedVertex& v2, int width, int height,
-                   TriangleSetup& out, SubpixelOffset sample = {});
+                   TriangleSetup& out, SubpixelOffset sample = {}, const FrameContext::SampleReach& reach = {});
+
+// The triangle as a pass at `sample` would have set it up (setupTriangle with that offset): the
+// same edges moved by the offset, so that its pixel centres test coverage and depth at the
+// sample, exactly; its bounds stay the (widened) ones of `t`.
+inline TriangleSetup atSample(const TriangleSetup& t, SubpixelOffset sample) {
+  TriangleSetup moved = t;
+  for (EdgeFunction& e : moved.edge) e.c += std::int64_t(e.a) * sample.x + std::int64_t(e.b) * sample.y;
+  moved.floatExact = false;  // its values at the bounds' centres were not bounded for the offset
+  return moved;
+}
 
 }  // namespace illum

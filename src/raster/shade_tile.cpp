@@ -21,34 +21,63 @@ VisiblePixel visiblePixel(const TriangleSetup& t, const PixelRect& rect, int ind
   return {x, y, l0, l1, l2};
 }
 
+// Where the deferred colours of a tile go: each sample's plane and winners (one of each without
+// multisampling). A pixel's colour is shaded once per record it shows, at its centre, and goes to
+// every sample that shows that record.
+struct VisibleSamples {
+  int count = 1;
+  std::uint32_t* color[kMaxMultisamples];
+  const std::uint32_t* winners[kMaxMultisamples];
+
+  VisibleSamples(const SampleTiles& tiles, TileScratch& scratch) : count(tiles.count) {
+    for (int s = 0; s < count; ++s) color[s] = tiles.color[s], winners[s] = scratch.winnersOf(s);
+  }
+  // f(index, slot) once for each record that some sample of pixel `index` shows, in sample order.
+  template <class F>
+  void forEachShown(int index, F&& f) const {
+    for (int s = 0; s < count; ++s) {
+      const std::uint32_t slot = winners[s][index];
+      if (slot == kNoWinner) continue;
+      bool earlier = false;
+      for (int e = 0; e < s && !earlier; ++e) earlier = winners[e][index] == slot;
+      if (!earlier) f(index, slot);
+    }
+  }
+  void write(int index, std::uint32_t slot, std::uint32_t rgba) const {
+    for (int s = 0; s < count; ++s)
+      if (winners[s][index] == slot) color[s][index] = rgba;
+  }
+  // The watched pixel reports what its first sample shows.
+  bool reported(int index, std::uint32_t slot) const { return winners[0][index] == slot; }
+};
+
 // Writes a coloured pixel: GL_MODULATE by the texel (unless the texel was the base colour), then
-// the framebuffer, then the probe.
-void writePixel(const DrawTarget& target, const DrawRecord& r, const VisiblePixel& p, const Color4& lit,
-                const Vec4* texel, bool texelIsBaseColor = false, const MappedSurface* mapped = nullptr) {
+// the samples that show the record, then the probe.
+void writePixel(const DrawTarget& target, const VisibleSamples& out, int index, std::uint32_t slot,
+                const DrawRecord& r, const VisiblePixel& p, const Color4& lit, const Vec4* texel,
+                bool texelIsBaseColor = false, const MappedSurface* mapped = nullptr) {
   const Color4 c = texel && !texelIsBaseColor ? lit * *texel : lit;
-  target.fb.writeColor(p.x, p.y, c);
-  if (target.probe && p.x == target.probe->x && p.y == target.frame.height - 1 - target.probe->y)
+  out.write(index, slot, packUnorm8(c));
+  if (target.probe && p.x == target.probe->x && p.y == target.frame.height - 1 - target.probe->y &&
+      out.reported(index, slot))
     recordProbe(target, r, perspectiveWeights(r.setup, p.l0, p.l1, p.l2), lit, texel, c, texelIsBaseColor, mapped);
 }
 
 // Flat and Gouraud: the colours were lit at the vertices.
 void colorVertexLit(const DrawTarget& target, std::span<const DrawRecord* const> records, const PixelRect& rect,
-                    const TileScratch& scratch) {
+                    const VisibleSamples& out) {
   for (int i = 0; i < kTileSize * kTileSize; ++i) {
-    const std::uint32_t slot = scratch.winners[std::size_t(i)];
-    if (slot == kNoWinner) continue;
-    const DrawRecord& r = *records[slot];
-    const VisiblePixel p = visiblePixel(r.setup, rect, i, target.frame.sample);
-    const Color4 lit = target.frame.shading == Shading::Flat
-                           ? r.flat
-                           : gouraudColor(r, target.layout(r), perspectiveWeights(r.setup, p.l0, p.l1, p.l2));
-    const Texture* texture = drawnTexture(target.scene.objects[r.object]);
-    if (!texture) {
-      writePixel(target, r, p, lit, nullptr);
-      continue;
-    }
-    const Vec4 texel = sampleDiffuseTexture(*texture, r, target.layout(r), p.l0, p.l1, p.l2);
-    writePixel(target, r, p, lit, &texel);
+    out.forEachShown(i, [&](int index, std::uint32_t slot) {
+      const DrawRecord& r = *records[slot];
+      const VisiblePixel p = visiblePixel(r.setup, rect, index, target.frame.sample);
+      const Color4 lit = target.frame.shading == Shading::Flat
+                             ? r.flat
+                             : gouraudColor(r, target.layout(r), perspectiveWeights(r.setup, p.l0, p.l1, p.l2));
+      const Texture* texture = drawnTexture(target.scene.objects[r.object]);
+      if (!texture) return writePixel(target, out, index, slot, r, p, lit, nullptr);
+      const Vec4 texel = sampleDiffuseTexture(*texture, r, target.layout(r), p.l0, p.l1, p.l2);
+      writePixel(target, out, index, slot, r, p, lit, &texel);
+    });
   }
 }
 
@@ -56,22 +85,14 @@ void colorVertexLit(const DrawTarget& target, std::span<const DrawRecord* const>
 class PhongBatch {
  public:
   PhongBatch(const DrawTarget& target, std::span<const DrawRecord* const> records, const PixelRect& rect,
-             TileScratch& scratch)
-      : target_(target), records_(records), rect_(rect), s_(scratch) {}
+             TileScratch& scratch, const VisibleSamples& out)
+      : target_(target), records_(records), rect_(rect), s_(scratch), out_(out) {}
 
   void add(int index, std::uint32_t slot) {
     const DrawRecord& r = *records_[slot];
-    if (ShadedPixelCache* cache = target_.shadedPixels) {
-      // An earlier multisample pass shaded this pixel with this triangle: the same colour.
-      const std::size_t at = cache->slot(rect_, index);
-      if (cache->key(at) == ShadedPixelCache::keyOf(r)) {
-        std::memcpy(target_.fb.colorTile(rect_.minX, rect_.minY) + 4 * std::size_t(index), &cache->color(at), 4);
-        return;
-      }
-    }
     const Object& object = target_.scene.objects[r.object];
     const VisiblePixel p = visiblePixel(r.setup, rect_, index, target_.frame.sample);
-    if (mapsDrawn(object, target_.frame.litPerPixel())) return shadeMapped(object, r, p);
+    if (mapsDrawn(object, target_.frame.litPerPixel())) return shadeMapped(object, index, slot, r, p);
     if (n_ == TileScratch::kBatch || (n_ > 0 && r.object != object_)) flush();
     object_ = r.object;
     const PhongSurface surface =
@@ -114,21 +135,16 @@ class PhongBatch {
       const VisiblePixel p = visiblePixel(r.setup, rect_, s_.pixel[k], target_.frame.sample);
       const Color4 color(lit[0][k], lit[1][k], lit[2][k], lit[3][k]);
       const Vec4 texel(s_.soa[10][k], s_.soa[11][k], s_.soa[12][k], s_.soa[13][k]);
-      writePixel(target_, r, p, color, textured ? &texel : nullptr, baseTexture);
-      if (ShadedPixelCache* cache = target_.shadedPixels) {
-        const std::size_t at = cache->slot(rect_, s_.pixel[k]);
-        cache->key(at) = ShadedPixelCache::keyOf(r);
-        std::memcpy(&cache->color(at), target_.fb.colorTile(rect_.minX, rect_.minY) + 4 * std::size_t(s_.pixel[k]), 4);
-      }
+      writePixel(target_, out_, s_.pixel[k], s_.slot[k], r, p, color, textured ? &texel : nullptr, baseTexture);
     }
     n_ = 0;
   }
 
  private:
   // A pixel whose material or normal comes from glTF's maps: lit on its own (fragment.h).
-  void shadeMapped(const Object& object, const DrawRecord& r, const VisiblePixel& p) {
+  void shadeMapped(const Object& object, int index, std::uint32_t slot, const DrawRecord& r, const VisiblePixel& p) {
     const MappedSurface surface = mappedSurface(target_.frame, object, r, target_.layout(r), p.l0, p.l1, p.l2);
-    writePixel(target_, r, p, shadeMappedFragment(target_.frame, surface),
+    writePixel(target_, out_, index, slot, r, p, shadeMappedFragment(target_.frame, surface),
                surface.point.textured ? &surface.point.texel : nullptr, surface.point.texelIsBaseColor, &surface);
   }
 
@@ -136,6 +152,7 @@ class PhongBatch {
   std::span<const DrawRecord* const> records_;
   const PixelRect& rect_;
   TileScratch& s_;
+  const VisibleSamples& out_;
   std::size_t n_ = 0;
   std::uint32_t object_ = 0;
 };
@@ -243,12 +260,41 @@ std::size_t drawLitSurface(const DrawTarget& target, std::span<const DrawRecord*
 }
 #endif  // !ILLUM_USE_DOUBLE
 
+// The deferred colours: each record a pixel's samples show, shaded once at the pixel's centre.
+void colorWinners(const DrawTarget& target, std::span<const DrawRecord* const> records, const PixelRect& rect,
+                  TileScratch& scratch, const VisibleSamples& out) {
+  if (target.frame.shading != Shading::Phong) return colorVertexLit(target, records, rect, out);
+  PhongBatch batch(target, records, rect, scratch, out);
+  for (int i = 0; i < kTileSize * kTileSize; ++i)
+    out.forEachShown(i, [&](int index, std::uint32_t slot) { batch.add(index, slot); });
+  batch.flush();
+}
+
+// Multisampling in one pass: each record's coverage and depth tested at every sample (its
+// triangle moved as that sample's pass would set it up: the same edge values, exactly), the
+// record it shows kept per sample, and then each record a pixel shows shaded once.
+std::size_t drawMultisampledTile(const DrawTarget& target, std::span<const DrawRecord* const> records,
+                                 const PixelRect& rect, TileScratch& scratch, const SampleTiles& tiles) {
+  std::size_t fragments = 0;
+  for (std::size_t i = 0; i < records.size(); ++i) {
+    const DrawRecord& r = *records[i];
+    for (int s = 0; s < tiles.count; ++s)
+      fragments += rasterizeDepth(atSample(r.setup, target.frame.samples[std::size_t(s)]), rect, tiles.depth[s],
+                                  std::uint32_t(i), scratch.winnersOf(s));
+  }
+  if (fragments == 0) return 0;
+  colorWinners(target, records, rect, scratch, VisibleSamples(tiles, scratch));
+  for (int s = 0; s < tiles.count; ++s) std::fill_n(scratch.winnersOf(s), kTileBlock, kNoWinner);
+  return fragments;
+}
+
 }  // namespace
 
 std::size_t drawOpaqueTile(const DrawTarget& target, std::span<const DrawRecord* const> records, const TinyPixels& tiny,
-                           const PixelRect& rect, TileScratch& scratch) {
-  Real* depth = target.fb.depthTile(rect.minX, rect.minY);
-  auto* color = reinterpret_cast<std::uint32_t*>(target.fb.colorTile(rect.minX, rect.minY));
+                           const PixelRect& rect, TileScratch& scratch, const SampleTiles& tiles) {
+  if (tiles.count > 1) return drawMultisampledTile(target, records, rect, scratch, tiles);
+  Real* depth = tiles.depth[0];
+  std::uint32_t* color = tiles.color[0];
 #if !ILLUM_USE_DOUBLE
   if (target.litFromSurface) return drawLitSurface(target, records, tiny.surfaces, rect, depth, color, scratch);
 #endif
@@ -277,14 +323,7 @@ std::size_t drawOpaqueTile(const DrawTarget& target, std::span<const DrawRecord*
   }
   fragments += tinyPixels.drawUpTo(records.size());
   if (!anyWinner) return fragments;
-  if (target.frame.shading == Shading::Phong) {
-    PhongBatch batch(target, records, rect, scratch);
-    for (int i = 0; i < kTileSize * kTileSize; ++i)
-      if (scratch.winners[std::size_t(i)] != kNoWinner) batch.add(i, scratch.winners[std::size_t(i)]);
-    batch.flush();
-  } else {
-    colorVertexLit(target, records, rect, scratch);
-  }
+  colorWinners(target, records, rect, scratch, VisibleSamples(tiles, scratch));
   scratch.winners.fill(kNoWinner);
   return fragments;
 }

@@ -14,8 +14,19 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <vector>
 
 namespace illum {
+
+constexpr int kMaxMultisamples = 16;
+
+// Where a tile's pixels are kept: its depth and RGBA8 planes (the framebuffer's layout), one per
+// sample of the frame's pattern (one without multisampling).
+struct SampleTiles {
+  int count = 1;
+  Real* depth[kMaxMultisamples];
+  std::uint32_t* color[kMaxMultisamples];
+};
 
 // One thread's working memory for a tile, reused from tile to tile.
 struct TileScratch {
@@ -29,9 +40,22 @@ struct TileScratch {
   Real surface[10][kTileBlock];
   std::array<std::uint32_t, kTileBlock> owner;
   TileMemory pixels;  // a tile drawn straight into the image (Framebuffer::lendTile)
+  // Multisampling: the other samples' planes of such a tile, and each sample's winners (the
+  // record it shows, as `winners` for one sample), kNoWinner between tiles.
+  std::vector<TileMemory> samplePixels;
+  std::vector<std::uint32_t> sampleWinners;
   TileScratch() {
     winners.fill(kNoWinner);
     owner.fill(kNoWinner);
+  }
+  // Room for `samples` samples.
+  void reserveSamples(int samples) {
+    if (samplePixels.size() < std::size_t(samples)) samplePixels.resize(std::size_t(samples));
+    if (sampleWinners.size() < std::size_t(samples) * kTileBlock)
+      sampleWinners.resize(std::size_t(samples) * kTileBlock, kNoWinner);
+  }
+  std::uint32_t* winnersOf(int sample) {
+    return sample == 0 ? winners.data() : sampleWinners.data() + std::size_t(sample) * kTileBlock;
   }
 };
 
@@ -44,8 +68,9 @@ struct TinyPixels {
 };
 
 // Draws `records` (the tile's, in submission order) and `tiny` into the tile `rect` without
-// blending. Returns the fragments that passed the depth test.
+// blending, kept in `tiles`. Returns the fragments (samples, when multisampled) that passed the
+// depth test.
 std::size_t drawOpaqueTile(const DrawTarget& target, std::span<const DrawRecord* const> records, const TinyPixels& tiny,
-                           const PixelRect& rect, TileScratch& scratch);
+                           const PixelRect& rect, TileScratch& scratch, const SampleTiles& tiles);
 
 }  // namespace illum
