@@ -14,9 +14,10 @@ bool isTranslucent(const Object& o);
 
 DrawTarget::DrawTarget(const FrameContext& frame, const Scene& scene, Framebuffer& fb, PixelProbe* probe)
     : frame(frame), scene(scene), fb(fb), probe(probe) {
-  // (Multisample passes shade at the pixel centre, not where the surface is sampled.)
-  litFromSurface = sizeof(Real) == 4 && !probe && frame.shading == Shading::Phong && !frame.multisampled;
-  colorsInDepthPass = sizeof(Real) == 4 && !probe && frame.shading != Shading::Phong && !frame.multisampled;
+  // (The visible surface is one per pixel: a multisampled tile keeps what each sample shows.)
+  const bool oneSample = frame.samples.size() <= 1;
+  litFromSurface = sizeof(Real) == 4 && !probe && frame.shading == Shading::Phong && oneSample;
+  colorsInDepthPass = sizeof(Real) == 4 && !probe && frame.shading != Shading::Phong;
   for (const Object& o : scene.objects) {
     layouts.push_back(AttributeLayout::forObject(frame, o, probe != nullptr));
     setups.push_back({frame.lights, frame.lightModel, modelOf(o.material, frame.model), o.material});
@@ -43,7 +44,8 @@ DrawTarget::DrawTarget(const FrameContext& frame, const Scene& scene, Framebuffe
   }
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {
     const Object& o = scene.objects[i];
-    tiny.push_back(!translucent[i] && ((colorsInDepthPass && !drawnTexture(o)) || (litFromSurface && !colored[i])));
+    tiny.push_back(oneSample && !translucent[i] &&
+                   ((colorsInDepthPass && !drawnTexture(o)) || (litFromSurface && !colored[i])));
   }
 }
 
@@ -102,7 +104,7 @@ namespace {
 // framebuffer and offset, and whether the watched pixel is recorded in this pass.
 struct SamplePass {
   const TriangleSetup& setup;
-  Framebuffer& fb;
+  int plane;  // of the framebuffer's samples
   SubpixelOffset sample;
   bool probe;
 };
@@ -114,7 +116,7 @@ void drawPixels(const DrawTarget& target, const DrawRecord& record, const Sample
                 std::size_t& fragments) {
   const Object& object = target.scene.objects[record.object];
   const TriangleSetup& t = pass.setup;
-  Framebuffer& fb = pass.fb;
+  Framebuffer& fb = target.fb;
   const FrameContext& frame = target.frame;
   const AttributeLayout& l = target.layout(record);
   const Texture* texture = kTextured ? object.diffuseTexture.get() : nullptr;
@@ -125,7 +127,7 @@ void drawPixels(const DrawTarget& target, const DrawRecord& record, const Sample
   // A multisample pass tests coverage and depth at the sample, and shades at the pixel centre.
   rasterizeTriangle(t, rect, [&](int x, int y, Real l0, Real l1, Real l2) {
     const Real z = l0 * t.z[0] + l1 * t.z[1] + l2 * t.z[2];
-    if (!fb.depthTest(x, y, z)) return;
+    if (!fb.depthTest(x, y, z, pass.plane)) return;
     if (frame.multisampled) {
       const std::array<Real, 3> centre = centreBarycentrics(t, x, y, pass.sample);
       l0 = centre[0], l1 = centre[1], l2 = centre[2];
@@ -148,8 +150,8 @@ void drawPixels(const DrawTarget& target, const DrawRecord& record, const Sample
     // GL_MODULATE: the lit colour times the texel, alpha included (unless it was the base colour).
     if constexpr (kTextured)
       if (!baseTexture) c *= texel;
-    if constexpr (kBlend) fb.blendColor(x, y, c);
-    else fb.writeColor(x, y, c);
+    if constexpr (kBlend) fb.blendColor(x, y, c, pass.plane);
+    else fb.writeColor(x, y, c, pass.plane);
     if constexpr (kProbe)
       if (y == probeRow && x == target.probe->x)
         recordProbe(target, record, perspectiveWeights(t, l0, l1, l2), lit, kTextured ? &texel : nullptr, c,
@@ -186,9 +188,9 @@ void drawRecord(const DrawTarget& target, const DrawRecord& record, const PixelR
   // One sample of a multisampled tile: the record's triangle moved as that sample's pass would
   // have set it up; the watched pixel is reported from the first sample, as the resolve's input.
   const TriangleSetup moved = sample >= 0 ? atSample(record.setup, target.frame.samples[std::size_t(sample)]) : record.setup;
-  const SamplePass pass = sample >= 0 ? SamplePass{moved, target.sampleBuffers[std::size_t(sample)],
-                                                   target.frame.samples[std::size_t(sample)], target.probe && sample == 0}
-                                      : SamplePass{record.setup, target.fb, target.frame.sample, target.probe != nullptr};
+  const SamplePass pass = sample >= 0 ? SamplePass{moved, sample, target.frame.samples[std::size_t(sample)],
+                                                   target.probe && sample == 0}
+                                      : SamplePass{record.setup, 0, target.frame.sample, target.probe != nullptr};
   switch (target.frame.shading) {
     case Shading::Flat: return drawPixels<Shading::Flat>(target, record, pass, rect, fragments);
     case Shading::Gouraud: return drawPixels<Shading::Gouraud>(target, record, pass, rect, fragments);

@@ -27,8 +27,8 @@ struct DrawTarget {
   Framebuffer& fb;
   PixelProbe* probe;  // null unless a pixel is watched
   std::vector<AttributeLayout> layouts;  // per object: what its records carry
-  // Phong shading lit from the tile's visible surface in SIMD (shade_tile.h): float channels, no
-  // texture or map in the scene and no watched pixel. Then, per object, its lighting and vertex colours.
+  // Phong shading lit from the tile's visible surface in SIMD (shade_tile.h): float channels, one
+  // sample, no texture or map in the scene and no watched pixel. Then, per object, its lighting and vertex colours.
   bool litFromSurface = false;
   std::vector<ShadeSetup> setups;
   std::vector<std::uint8_t> colored;
@@ -40,12 +40,11 @@ struct DrawTarget {
   // An opaque object is drawn as without blending even when it is on: its alpha of 1 would blend
   // to the fragment itself, and so its interpolated alpha, a few ulps from 1, cannot blend at all.
   std::vector<std::uint8_t> translucent;
-  // Multisampling in one pass (frame.samples): one framebuffer per sample, sampleBuffers[0] = fb.
-  std::span<Framebuffer> sampleBuffers;
-  // Flat and Gouraud pixels coloured in the depth pass itself (tile_raster.h): float channels, one
-  // sample, no watched pixel.
+  // Flat and Gouraud pixels coloured in the depth pass itself (tile_raster.h), at every sample
+  // they cover when multisampled: float channels, no watched pixel.
   bool colorsInDepthPass = false;
-  // Per object: its tiny triangles worked out at setup, without records (tile_raster.h): coloured
+  // Per object: its tiny triangles worked out at setup, without records (tile_raster.h), in
+  // frames of one sample: coloured
   // when colorsInDepthPass (opaque, untextured objects), or as visible surface when litFromSurface
   // (opaque objects without vertex colours).
   std::vector<std::uint8_t> tiny;
@@ -56,8 +55,8 @@ struct DrawTarget {
 };
 
 // Draws the record's pixels inside `rect`; adds the fragments that passed the depth test. With
-// `sample` (multisampling in one pass), only that sample's coverage and depth, into its framebuffer
-// (the pixels still shaded at their centres).
+// `sample` (multisampling in one pass), only that sample's coverage and depth, into that sample of
+// the framebuffer's (the pixels still shaded at their centres).
 void drawRecord(const DrawTarget& target, const DrawRecord& record, const PixelRect& rect, std::size_t& fragments,
                 int sample = -1);
 

@@ -1,5 +1,6 @@
 #include "raster/framebuffer.h"
 
+#include "raster/multisample.h"
 #include "raster/tile_memory.h"
 
 #include <tbb/parallel_for.h>
@@ -9,15 +10,16 @@
 
 namespace illum {
 
-void Framebuffer::reset(int width, int height, const Color4& clearColor) {
+void Framebuffer::reset(int width, int height, const Color4& clearColor, int samples) {
   width_ = width;
   height_ = height;
+  samples_ = samples;
   tilesX_ = (width + kTileSize - 1) / kTileSize;
   const std::size_t tiles = std::size_t(tilesX_) * std::size_t((height + kTileSize - 1) / kTileSize);
-  if (blocks_ != tiles) {
-    depth_.reset(new Real[tiles * kTileBlock]);
-    color_.reset(new std::uint8_t[tiles * kTileBlock * 4]);
-    blocks_ = tiles;
+  if (blocks_ != tiles * blockSize()) {
+    blocks_ = tiles * blockSize();
+    depth_.reset(new Real[blocks_]);
+    color_.reset(new std::uint32_t[blocks_]);
   }
   clear_ = packUnorm8(clearColor);
   cleared_.assign(tiles, 0);
@@ -28,7 +30,7 @@ void Framebuffer::reset(int width, int height, const Color4& clearColor) {
 void Framebuffer::clearTile(int x0, int y0) {
   const std::size_t t = tileOf(x0, y0);
   if (cleared_[t]) return;
-  fillTile(block_[t].depth, reinterpret_cast<std::uint32_t*>(block_[t].color), kTileBlock, clear_);
+  fillTile(block_[t].depth, block_[t].color, blockSize(), clear_);
   cleared_[t] = 1;
 }
 
@@ -60,8 +62,9 @@ std::size_t Framebuffer::copyTile(int tile, Image& image, std::uint32_t backgrou
     fillPixels(dst, imageStride, count, rows, clear_);
     return std::size_t(clear_ != background8) * std::size_t(count) * std::size_t(rows);
   }
-  return copyPixels(reinterpret_cast<const std::uint32_t*>(colorAt(x0, y0)), kTileSize * 4, dst, imageStride, count,
-                    rows, background8);
+  const std::uint32_t* src = block_[std::size_t(tile)].color;
+  if (samples_ > 1) return resolvePixels(src, samples_, kTileSize, dst, imageStride, count, rows, background8);
+  return copyPixels(src, kTileSize * 4, dst, imageStride, count, rows, background8);
 }
 
 std::size_t Framebuffer::toImage(Image& image, const Color4& background) const {

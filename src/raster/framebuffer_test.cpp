@@ -56,7 +56,7 @@ TEST(Framebuffer, LentTileIsDrawnAndCopiedFromItsMemoryAndForgottenWhenReturned)
   fb.lendTile(tile, *memory);
   fb.clearTile(64, 64);
   EXPECT_TRUE(fb.drawn(tile));
-  EXPECT_EQ(fb.depthTile(64, 64), memory->depth);
+  EXPECT_EQ(fb.depthTile(64, 64), memory->depth.data());
   fb.writeColor(69, 65, kRed);
   EXPECT_TRUE(fb.depthTest(69, 65, Real(0.25)));
   EXPECT_EQ(memory->depth[1 * kTileSize + 5], Real(0.25));

@@ -26,7 +26,6 @@ constexpr auto kFourPattern = scaled(kFour);
 constexpr auto kEightPattern = scaled(kEight);
 constexpr auto kSixteenPattern = scaled(kSixteen);
 constexpr std::array<SubpixelOffset, 1> kCentre = {SubpixelOffset{0, 0}};
-constexpr std::size_t kMaxSampleCount = kSixteenPattern.size();
 
 }  // namespace
 
@@ -39,39 +38,34 @@ std::span<const SubpixelOffset> multisamplePattern(int count) {
   }
 }
 
-std::size_t resolveTile(std::span<const Framebuffer> samples, int tile, Image& image, std::uint32_t background8) {
-  const Framebuffer& first = samples.front();
-  const int x0 = tile % first.tilesX() * kTileSize, y0 = tile / first.tilesX() * kTileSize;
-  const int count = std::min(kTileSize, first.width() - x0), rows = std::min(kTileSize, first.height() - y0);
-  const std::uint32_t n = std::uint32_t(samples.size());
-  const std::uint32_t* planes[kMaxSampleCount];
-  std::uint32_t clear[kMaxSampleCount];
-  for (std::size_t s = 0; s < samples.size(); ++s) {
-    planes[s] = samples[s].tileColors(tile);
-    clear[s] = samples[s].clearWord();
+std::uint32_t resolvePixel(const std::uint32_t* samples, int n) {
+  std::uint32_t premultiplied[3] = {}, straight[3] = {}, alpha = 0;
+  for (int s = 0; s < n; ++s) {
+    const std::uint32_t word = samples[s], a = word >> 24;
+    for (int c = 0; c < 3; ++c) {
+      const std::uint32_t v = word >> (8 * c) & 0xFF;
+      premultiplied[c] += v * a;
+      straight[c] += v;
+    }
+    alpha += a;
   }
+  const std::uint32_t count = std::uint32_t(n);
+  std::uint32_t out = (alpha + count / 2) / count << 24;
+  for (int c = 0; c < 3; ++c)
+    out |= (alpha > 0 ? (premultiplied[c] + alpha / 2) / alpha : (straight[c] + count / 2) / count) << (8 * c);
+  return out;
+}
+
+std::size_t resolvePixels(const std::uint32_t* src, int samples, int srcRowPixels, std::uint8_t* dst,
+                          std::ptrdiff_t dstStride, int count, int rows, std::uint32_t background) {
   std::size_t unlike = 0;
   for (int r = 0; r < rows; ++r) {
-    std::uint8_t* out = image.pixel(x0, first.height() - 1 - (y0 + r));  // the image's rows run from the top
-    for (int x = 0; x < count; ++x, out += 4) {
-      const int at = r * kTileSize + x;
-      std::uint32_t premultiplied[3] = {}, straight[3] = {}, alpha = 0;
-      for (std::size_t s = 0; s < samples.size(); ++s) {
-        const std::uint32_t word = planes[s] ? planes[s][at] : clear[s];
-        const std::uint32_t a = word >> 24;
-        for (int c = 0; c < 3; ++c) {
-          const std::uint32_t v = word >> (8 * c) & 0xFF;
-          premultiplied[c] += v * a;
-          straight[c] += v;
-        }
-        alpha += a;
-      }
-      for (int c = 0; c < 3; ++c)
-        out[c] = std::uint8_t(alpha > 0 ? (premultiplied[c] + alpha / 2) / alpha : (straight[c] + n / 2) / n);
-      out[3] = std::uint8_t((alpha + n / 2) / n);
-      std::uint32_t word;
-      std::memcpy(&word, out, 4);
-      unlike += word != background8;
+    const std::uint32_t* from = src + std::size_t(r) * std::size_t(srcRowPixels) * std::size_t(samples);
+    std::uint8_t* to = dst + r * dstStride;
+    for (int x = 0; x < count; ++x, from += samples, to += 4) {
+      const std::uint32_t word = resolvePixel(from, samples);
+      std::memcpy(to, &word, 4);
+      unlike += word != background;
     }
   }
   return unlike;

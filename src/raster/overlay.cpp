@@ -77,7 +77,8 @@ std::vector<OverlayLine> overlayLines(const Scene& scene) {
   return lines;
 }
 
-void drawOverlayLines(Framebuffer& fb, const FrameContext& frame, std::span<const OverlayLine> lines, Real width) {
+void drawOverlayLines(Framebuffer& fb, const FrameContext& frame, std::span<const OverlayLine> lines, Real width,
+                      int sample) {
   const Mat4 clipFromWorld = frame.clipFromView * frame.viewFromWorld;
   for (const OverlayLine& line : lines) {
     const auto segment = windowSegment(frame, clipFromWorld * Vec4(line.a, 1), clipFromWorld * Vec4(line.b, 1));
@@ -85,8 +86,8 @@ void drawOverlayLines(Framebuffer& fb, const FrameContext& frame, std::span<cons
     forEachSegmentPixel(frame, *segment, width, [&](int x, int y, Real t) {
       fb.clearTile(x, y);  // a tile no triangle touched is cleared now
       const Real z = segment->a.z + t * (segment->b.z - segment->a.z);
-      if (z < 0 || z > 1 || z > fb.depth(x, y) + kLineBias) return;
-      fb.writeColor(x, y, Color4(line.color, 1));
+      if (z < 0 || z > 1 || z > fb.depth(x, y, sample) + kLineBias) return;
+      fb.writeColor(x, y, Color4(line.color, 1), sample);
     });
   }
 }

@@ -23,7 +23,9 @@ struct OverlayLine {
 // the plane below everything, across the camera's up axis, at a round spacing.
 std::vector<OverlayLine> overlayLines(const Scene& scene);
 
-// Draws `lines` `width` pixels wide into `fb` as the frame sees them (its sample position too).
-void drawOverlayLines(Framebuffer& fb, const FrameContext& frame, std::span<const OverlayLine> lines, Real width);
+// Draws `lines` `width` pixels wide into one of `fb`'s samples as the frame sees them (its sample
+// position too).
+void drawOverlayLines(Framebuffer& fb, const FrameContext& frame, std::span<const OverlayLine> lines, Real width,
+                      int sample = 0);
 
 }  // namespace illum

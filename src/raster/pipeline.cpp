@@ -37,11 +37,10 @@ constexpr std::size_t kBatchTiny = 1 << 16;
 
 // What the pipeline keeps from frame to frame.
 struct RasterPipeline::State {
-  // One framebuffer per sample (the first alone without multisampling). A tile drawn once, in the
-  // frame's last flush, lives in its thread's memory instead (Framebuffer::lendTile): the other
-  // samples' blocks are touched only by tiles that several flushes draw.
-  std::vector<Framebuffer> buffers = std::vector<Framebuffer>(kMaxMultisamples);  // never resized: `fb` stays
-  Framebuffer& fb = buffers[0];
+  // Every sample of every pixel. A tile drawn once, in the frame's last flush, lives in its
+  // thread's memory instead (Framebuffer::lendTile): the framebuffer's own blocks are touched only
+  // by tiles that several flushes draw.
+  Framebuffer fb;
   std::vector<std::size_t> tileFragments;
   std::vector<ShadedVertex> vertices;  // a run of objects' (BinnedFrame::drawObjects)
   struct Member {
@@ -86,8 +85,7 @@ class BinnedFrame {
   BinnedFrame(RasterPipeline::State& state, const Scene& scene, const FrameContext& frame, PixelProbe* probe)
       : s_(state), frame_(frame), target_(frame, scene, state.fb, probe),
         samples_(std::max<int>(1, int(frame.samples.size()))) {
-    for (int s = 0; s < samples_; ++s) s_.buffers[std::size_t(s)].reset(scene.width, scene.height, scene.background);
-    if (samples_ > 1) target_.sampleBuffers = std::span(s_.buffers).first(std::size_t(samples_));
+    s_.fb.reset(scene.width, scene.height, scene.background, samples_);
     tiles_.reset(frame.width, frame.height);
     s_.tileFragments.assign(std::size_t(tiles_.tileCount()), 0);
   }
@@ -143,11 +141,10 @@ class BinnedFrame {
           std::size_t n = 0;
           for (int tile = range.begin(); tile < range.end(); ++tile) {
             const bool lent = used_ > 0 && !s_.fb.drawn(tile);
-            if (lent) lendTile(tile);
+            if (lent) s_.fb.lendTile(tile, s_.scratch.local().pixels);
             if (used_ > 0) drawTile(tile);
-            n += copyTile(tile, image, background8);
-            if (lent)
-              for (int s = 0; s < samples_; ++s) s_.buffers[std::size_t(s)].returnTile(tile);
+            n += s_.fb.copyTile(tile, image, background8);
+            if (lent) s_.fb.returnTile(tile);
           }
           unlike += n;
         },
@@ -157,39 +154,14 @@ class BinnedFrame {
     return unlike;
   }
 
-  // The tile's planes in this thread's memory, one per sample.
-  void lendTile(int tile) {
-    TileScratch& scratch = s_.scratch.local();
-    scratch.reserveSamples(samples_);
-    s_.fb.lendTile(tile, scratch.pixels);
-    for (int s = 1; s < samples_; ++s) s_.buffers[std::size_t(s)].lendTile(tile, scratch.samplePixels[std::size_t(s)]);
-  }
-
-  // The finished tile into the image (its samples resolved); returns its pixels unlike the background.
-  std::size_t copyTile(int tile, Image& image, std::uint32_t background8) const {
-    if (samples_ == 1) return s_.fb.copyTile(tile, image, background8);
-    return resolveTile(std::span(s_.buffers).first(std::size_t(samples_)), tile, image, background8);
-  }
-
-  // Every tile into the image, once everything is drawn; returns the pixels unlike the background.
-  std::size_t copyTiles(Image& image, const Color4& background) const {
-    if (samples_ == 1) return s_.fb.toImage(image, background);
-    s_.fb.imageOf(image);
-    const std::uint32_t background8 = packUnorm8(background);
-    std::atomic<std::size_t> unlike{0};
-    tbb::parallel_for(0, tiles_.tileCount(), [&](int tile) { unlike += copyTile(tile, image, background8); });
-    return unlike;
-  }
-
   // Points, lines and overlay lines, after the triangles: into each sample's framebuffer, as a
   // pass at that sample draws them.
   void drawAfterTriangles(const Scene& scene, std::span<const OverlayLine> overlay) {
     for (int s = 0; s < samples_; ++s) {
       FrameContext pass = frame_;
       if (samples_ > 1) pass.sample = frame_.samples[std::size_t(s)];
-      Framebuffer& fb = s_.buffers[std::size_t(s)];
-      drawPointsAndLines(fb, pass, scene, s_.vertices);
-      drawOverlayLines(fb, pass, overlay, 1);
+      drawPointsAndLines(s_.fb, pass, scene, s_.vertices, s);
+      drawOverlayLines(s_.fb, pass, overlay, 1, s);
     }
   }
 
@@ -215,14 +187,8 @@ class BinnedFrame {
     const TinyPixels tiny{list.fragments, list.surfaces};
     if (list.records.empty() && tiny.empty()) return;
     const PixelRect rect = tiles_.tileRect(tile);
-    SampleTiles planes;
-    planes.count = samples_;
-    for (int s = 0; s < samples_; ++s) {
-      Framebuffer& fb = s_.buffers[std::size_t(s)];
-      fb.clearTile(rect.minX, rect.minY);
-      planes.depth[s] = fb.depthTile(rect.minX, rect.minY);
-      planes.color[s] = reinterpret_cast<std::uint32_t*>(fb.colorTile(rect.minX, rect.minY));
-    }
+    s_.fb.clearTile(rect.minX, rect.minY);
+    const SampleTiles planes{samples_, s_.fb.depthTile(rect.minX, rect.minY), s_.fb.colorTile(rect.minX, rect.minY)};
     TileScratch& scratch = s_.scratch.local();
     scratch.reserveSamples(samples_);
     std::size_t& fragments = s_.tileFragments[std::size_t(tile)];
@@ -339,7 +305,7 @@ void RasterPipeline::draw(const Scene& scene, Image& image, RenderStats& stats, 
     pass.flush();
     pass.drawAfterTriangles(scene, overlay);
     stats = pass.stats();
-    stats.pixelsDrawn = pass.copyTiles(image, scene.background);
+    stats.pixelsDrawn = state_->fb.toImage(image, scene.background);
   } else {
     const std::size_t unlike = pass.flushInto(image, scene.background);
     stats = pass.stats();

@@ -36,11 +36,12 @@ void prepareVertices(const FrameContext& litFrame, const Object& object, std::sp
   });
 }
 
-void writeFragment(Framebuffer& fb, const FrameContext& frame, int x, int y, Real z, const Color4& color) {
+// Into `plane`, one of the framebuffer's samples.
+void writeFragment(Framebuffer& fb, int plane, const FrameContext& frame, int x, int y, Real z, const Color4& color) {
   fb.clearTile(x, y);  // a tile no triangle touched is cleared now
-  if (z < 0 || z > 1 || !fb.depthTest(x, y, z)) return;
-  if (frame.blend) fb.blendColor(x, y, color);
-  else fb.writeColor(x, y, color);
+  if (z < 0 || z > 1 || !fb.depthTest(x, y, z, plane)) return;
+  if (frame.blend) fb.blendColor(x, y, color, plane);
+  else fb.writeColor(x, y, color, plane);
 }
 
 // Rows [rowBegin, rowEnd): the band of tile rows one task draws.
@@ -48,7 +49,7 @@ struct Rows {
   int begin, end;
 };
 
-void drawPoint(Framebuffer& fb, const FrameContext& frame, const ShadedVertex& v, Real size, Rows rows) {
+void drawPoint(Framebuffer& fb, int plane, const FrameContext& frame, const ShadedVertex& v, Real size, Rows rows) {
   const Vec4& c = v.clip;
   // GL passes a point whose centre is inside the clip volume, whole, and discards any other.
   if (!(c.w > 0) || std::abs(c.x) > c.w || std::abs(c.y) > c.w || std::abs(c.z) > c.w) return;
@@ -66,11 +67,11 @@ void drawPoint(Framebuffer& fb, const FrameContext& frame, const ShadedVertex& v
       // whose centres lie in the square [c − size/2, c + size/2) (size 1: the pixel c is in).
       const bool covered = frame.multisampled ? glm::dot(d, d) <= half * half
                                               : d.x >= -half && d.x < half && d.y >= -half && d.y < half;
-      if (covered) writeFragment(fb, frame, x, y, z, v.front);
+      if (covered) writeFragment(fb, plane, frame, x, y, z, v.front);
     }
 }
 
-void drawLine(Framebuffer& fb, const FrameContext& frame, const ShadedVertex& a, const ShadedVertex& b, Real width,
+void drawLine(Framebuffer& fb, int plane, const FrameContext& frame, const ShadedVertex& a, const ShadedVertex& b, Real width,
               Rows rows) {
   const auto s = windowSegment(frame, a.clip, b.clip);
   if (!s) return;
@@ -82,7 +83,7 @@ void drawLine(Framebuffer& fb, const FrameContext& frame, const ShadedVertex& a,
       const Real u = s->tA + along * (s->tB - s->tA);
       color = a.front + u * (b.front - a.front);
     }
-    writeFragment(fb, frame, x, y, s->a.z + t * (s->b.z - s->a.z), color);
+    writeFragment(fb, plane, frame, x, y, s->a.z + t * (s->b.z - s->a.z), color);
   }, rows.begin, rows.end);
 }
 
@@ -117,7 +118,7 @@ bool hasPointsOrLines(const Scene& scene) {
 }
 
 void drawPointsAndLines(Framebuffer& fb, const FrameContext& frame, const Scene& scene,
-                        std::vector<ShadedVertex>& vertices) {
+                        std::vector<ShadedVertex>& vertices, int sample) {
   // The vertex stage lights vertices for flat and Gouraud shading: points and lines have no pixels
   // to light in between, so Phong shading lights them at their vertices too.
   FrameContext litFrame = frame;
@@ -140,8 +141,8 @@ void drawPointsAndLines(Framebuffer& fb, const FrameContext& frame, const Scene&
       const Mesh& mesh = *object->mesh;
       const ShadedVertex* v = vertices.data() + first;
       for (std::size_t i = 0; i + 1 < mesh.lineIndices.size(); i += 2)
-        drawLine(fb, frame, v[mesh.lineIndices[i]], v[mesh.lineIndices[i + 1]], scene.lineWidth, rows);
-      for (std::uint32_t i : mesh.pointIndices) drawPoint(fb, frame, v[i], scene.pointSize, rows);
+        drawLine(fb, sample, frame, v[mesh.lineIndices[i]], v[mesh.lineIndices[i + 1]], scene.lineWidth, rows);
+      for (std::uint32_t i : mesh.pointIndices) drawPoint(fb, sample, frame, v[i], scene.pointSize, rows);
     }
   });
 }

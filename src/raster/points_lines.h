@@ -19,9 +19,10 @@
 
 namespace illum {
 
-// Draws every object's points and lines; `vertices` is working memory.
+// Draws every object's points and lines into one of the framebuffer's samples (the pass at
+// frame.sample); `vertices` is working memory.
 void drawPointsAndLines(Framebuffer& fb, const FrameContext& frame, const Scene& scene,
-                        std::vector<ShadedVertex>& vertices);
+                        std::vector<ShadedVertex>& vertices, int sample = 0);
 // Throws InputError when the points and lines, drawn `passes` times, would cover more pixels than
 // scene.maxFill (each segment's clipped length plus its width, times its width; each point's square).
 void checkPointAndLineFill(const FrameContext& frame, const Scene& scene, int passes);

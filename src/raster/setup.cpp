@@ -86,8 +86,10 @@ bool setupTriangle(const ShadedVertex& v0, const ShadedVertex& v1, const ShadedV
   out.edge[2] = makeEdge(x[0], y[0], x[1], y[1]);
   // An edge's function vanishes on its own segment, which lies in the bounds, so anywhere in them
   // |E| ≤ |a|·width + |b|·height (sub-pixel units): small triangles can be rasterized in float.
-  // (Widened bounds reach further from the segments.)
-  const std::int64_t spanX = maxFx - minFx + reach.maxX - reach.minX, spanY = maxFy - minFy + reach.maxY - reach.minY;
+  // Multisampled, the bounds' centres lie up to the reach beyond the vertices' box, and their
+  // samples as far again: floatExact then holds at every sample of the bounds' pixels.
+  const std::int64_t spanX = maxFx - minFx + 2 * (reach.maxX - reach.minX);
+  const std::int64_t spanY = maxFy - minFy + 2 * (reach.maxY - reach.minY);
   out.floatExact = true;
   for (const EdgeFunction& e : out.edge)
     out.floatExact = out.floatExact && std::abs(std::int64_t(e.a)) * spanX + std::abs(std::int64_t(e.b)) * spanY <= (1 << 24);

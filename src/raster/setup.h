@@ -33,7 +33,8 @@ struct TriangleSetup {
   Real invArea;                                 // Real(1) / Real(area2): λi = E_i · invArea
   bool frontFacing;                             // counter-clockwise as submitted (GL_CCW front)
   bool swapped;                                 // vertices 1 and 2 swapped to make it counter-clockwise
-  bool floatExact;                              // every edge value in the bounds is an integer ≤ 2^24
+  bool floatExact;                              // every edge value in the bounds (at their pixels' samples
+                                                // too, when multisampled) is an integer ≤ 2^24
   int minX, maxX, minY, maxY;                   // pixels to visit, inside the viewport
 };
 

@@ -26,29 +26,30 @@ VisiblePixel visiblePixel(const TriangleSetup& t, const PixelRect& rect, int ind
 // every sample that shows that record.
 struct VisibleSamples {
   int count = 1;
-  std::uint32_t* color[kMaxMultisamples];
-  const std::uint32_t* winners[kMaxMultisamples];
+  std::uint32_t* color;
+  const std::uint32_t* winners;
 
-  VisibleSamples(const SampleTiles& tiles, TileScratch& scratch) : count(tiles.count) {
-    for (int s = 0; s < count; ++s) color[s] = tiles.color[s], winners[s] = scratch.winnersOf(s);
-  }
+  VisibleSamples(const SampleTiles& tiles, const TileScratch& scratch)
+      : count(tiles.count), color(tiles.color), winners(scratch.winners.data()) {}
   // f(index, slot) once for each record that some sample of pixel `index` shows, in sample order.
   template <class F>
   void forEachShown(int index, F&& f) const {
+    const std::uint32_t* shown = winners + std::size_t(index) * std::size_t(count);
     for (int s = 0; s < count; ++s) {
-      const std::uint32_t slot = winners[s][index];
+      const std::uint32_t slot = shown[s];
       if (slot == kNoWinner) continue;
       bool earlier = false;
-      for (int e = 0; e < s && !earlier; ++e) earlier = winners[e][index] == slot;
+      for (int e = 0; e < s && !earlier; ++e) earlier = shown[e] == slot;
       if (!earlier) f(index, slot);
     }
   }
   void write(int index, std::uint32_t slot, std::uint32_t rgba) const {
+    const std::size_t at = std::size_t(index) * std::size_t(count);
     for (int s = 0; s < count; ++s)
-      if (winners[s][index] == slot) color[s][index] = rgba;
+      if (winners[at + std::size_t(s)] == slot) color[at + std::size_t(s)] = rgba;
   }
   // The watched pixel reports what its first sample shows.
-  bool reported(int index, std::uint32_t slot) const { return winners[0][index] == slot; }
+  bool reported(int index, std::uint32_t slot) const { return winners[std::size_t(index) * std::size_t(count)] == slot; }
 };
 
 // Writes a coloured pixel: GL_MODULATE by the texel (unless the texel was the base colour), then
@@ -270,21 +271,37 @@ void colorWinners(const DrawTarget& target, std::span<const DrawRecord* const> r
   batch.flush();
 }
 
-// Multisampling in one pass: each record's coverage and depth tested at every sample (its
-// triangle moved as that sample's pass would set it up: the same edge values, exactly), the
-// record it shows kept per sample, and then each record a pixel shows shaded once.
+// Multisampling in one pass: each record's coverage and depth tested at every sample of its
+// pixels (rasterizeSamples: exactly as a pass at that sample would), flat and Gouraud colours
+// worked out once per pixel at its centre as they are found, the other records kept per sample
+// and each record a pixel shows shaded once afterwards.
 std::size_t drawMultisampledTile(const DrawTarget& target, std::span<const DrawRecord* const> records,
                                  const PixelRect& rect, TileScratch& scratch, const SampleTiles& tiles) {
+  std::uint32_t* winners = scratch.winners.data();
+  const SamplePlanes planes{tiles.count, target.frame.samples.data(), tiles.depth, tiles.color, winners};
   std::size_t fragments = 0;
+  bool anyWinner = false;
   for (std::size_t i = 0; i < records.size(); ++i) {
     const DrawRecord& r = *records[i];
-    for (int s = 0; s < tiles.count; ++s)
-      fragments += rasterizeDepth(atSample(r.setup, target.frame.samples[std::size_t(s)]), rect, tiles.depth[s],
-                                  std::uint32_t(i), scratch.winnersOf(s));
+#if !ILLUM_USE_DOUBLE
+    if (target.colorsInDepthPass && !drawnTexture(target.scene.objects[r.object])) {
+      if (target.frame.shading == Shading::Flat) {
+        fragments += rasterizeSamplesColored(r.setup, rect, planes, nullptr, packUnorm8(r.flat), anyWinner);
+        continue;
+      }
+      const AttributeLayout& l = target.layout(r);
+      const Color4 lit[3] = {VertexValues{r.vertex(0, l), l}.lit(), VertexValues{r.vertex(1, l), l}.lit(),
+                             VertexValues{r.vertex(2, l), l}.lit()};
+      fragments += rasterizeSamplesColored(r.setup, rect, planes, lit, 0, anyWinner);
+      continue;
+    }
+#endif
+    fragments += rasterizeSamples(r.setup, rect, planes, std::uint32_t(i));
+    anyWinner = true;
   }
-  if (fragments == 0) return 0;
+  if (!anyWinner) return fragments;
   colorWinners(target, records, rect, scratch, VisibleSamples(tiles, scratch));
-  for (int s = 0; s < tiles.count; ++s) std::fill_n(scratch.winnersOf(s), kTileBlock, kNoWinner);
+  std::fill_n(winners, kTileBlock * std::size_t(tiles.count), kNoWinner);
   return fragments;
 }
 
@@ -293,8 +310,8 @@ std::size_t drawMultisampledTile(const DrawTarget& target, std::span<const DrawR
 std::size_t drawOpaqueTile(const DrawTarget& target, std::span<const DrawRecord* const> records, const TinyPixels& tiny,
                            const PixelRect& rect, TileScratch& scratch, const SampleTiles& tiles) {
   if (tiles.count > 1) return drawMultisampledTile(target, records, rect, scratch, tiles);
-  Real* depth = tiles.depth[0];
-  std::uint32_t* color = tiles.color[0];
+  Real* depth = tiles.depth;
+  std::uint32_t* color = tiles.color;
 #if !ILLUM_USE_DOUBLE
   if (target.litFromSurface) return drawLitSurface(target, records, tiny.surfaces, rect, depth, color, scratch);
 #endif
@@ -324,7 +341,7 @@ std::size_t drawOpaqueTile(const DrawTarget& target, std::span<const DrawRecord*
   fragments += tinyPixels.drawUpTo(records.size());
   if (!anyWinner) return fragments;
   colorWinners(target, records, rect, scratch, VisibleSamples(tiles, scratch));
-  scratch.winners.fill(kNoWinner);
+  std::fill_n(winners, kTileBlock, kNoWinner);
   return fragments;
 }
 

@@ -18,20 +18,19 @@
 
 namespace illum {
 
-constexpr int kMaxMultisamples = 16;
-
-// Where a tile's pixels are kept: its depth and RGBA8 planes (the framebuffer's layout), one per
-// sample of the frame's pattern (one without multisampling).
+// Where a tile's pixels are kept (the framebuffer's layout): depth and RGBA8 words of each pixel's
+// `count` samples, side by side (framebuffer.h).
 struct SampleTiles {
   int count = 1;
-  Real* depth[kMaxMultisamples];
-  std::uint32_t* color[kMaxMultisamples];
+  Real* depth;
+  std::uint32_t* color;
 };
 
 // One thread's working memory for a tile, reused from tile to tile.
 struct TileScratch {
   static constexpr std::size_t kBatch = 256;  // Phong pixels lit together
-  std::array<std::uint32_t, kTileBlock> winners;  // the tile's layout, padding included
+  // The record each sample shows (the framebuffer's layout, padding included), kNoWinner between tiles.
+  std::vector<std::uint32_t> winners = std::vector<std::uint32_t>(kTileBlock, kNoWinner);
   // Phong batch, structure of arrays: eye position, normal, vertex colour, texel, lit colour.
   Real soa[18][kBatch];
   std::uint16_t pixel[kBatch];  // index inside the tile
@@ -40,22 +39,10 @@ struct TileScratch {
   Real surface[10][kTileBlock];
   std::array<std::uint32_t, kTileBlock> owner;
   TileMemory pixels;  // a tile drawn straight into the image (Framebuffer::lendTile)
-  // Multisampling: the other samples' planes of such a tile, and each sample's winners (the
-  // record it shows, as `winners` for one sample), kNoWinner between tiles.
-  std::vector<TileMemory> samplePixels;
-  std::vector<std::uint32_t> sampleWinners;
-  TileScratch() {
-    winners.fill(kNoWinner);
-    owner.fill(kNoWinner);
-  }
-  // Room for `samples` samples.
+  TileScratch() { owner.fill(kNoWinner); }
+  // Room for `samples` samples per pixel.
   void reserveSamples(int samples) {
-    if (samplePixels.size() < std::size_t(samples)) samplePixels.resize(std::size_t(samples));
-    if (sampleWinners.size() < std::size_t(samples) * kTileBlock)
-      sampleWinners.resize(std::size_t(samples) * kTileBlock, kNoWinner);
-  }
-  std::uint32_t* winnersOf(int sample) {
-    return sample == 0 ? winners.data() : sampleWinners.data() + std::size_t(sample) * kTileBlock;
+    if (winners.size() < std::size_t(samples) * kTileBlock) winners.resize(std::size_t(samples) * kTileBlock, kNoWinner);
   }
 };
 

@@ -23,6 +23,23 @@ std::size_t rasterizeDepth(const TriangleSetup& t, const PixelRect& tile, Real* 
   return passed;
 }
 
+std::size_t rasterizeSamples(const TriangleSetup& t, const PixelRect& tile, const SamplePlanes& planes,
+                             std::uint32_t slot) {
+  std::size_t passed = 0;
+  for (int s = 0; s < planes.count; ++s) {
+    const TriangleSetup moved = atSample(t, planes.offsets[s]);
+    rasterizeTriangle(moved, tile, [&](int x, int y, Real l0, Real l1, Real l2) {
+      const Real z = l0 * t.z[0] + l1 * t.z[1] + l2 * t.z[2];
+      const std::size_t at = std::size_t((y - tile.minY) * kTileSize + (x - tile.minX)) * std::size_t(planes.count) + std::size_t(s);
+      if (!(z < planes.depth[at])) return;
+      planes.depth[at] = z;
+      planes.winners[at] = slot;
+      ++passed;
+    });
+  }
+  return passed;
+}
+
 }  // namespace illum
 #else
 #undef HWY_TARGET_INCLUDE
@@ -38,6 +55,7 @@ std::size_t rasterizeDepth(const TriangleSetup& t, const PixelRect& tile, Real* 
 
 #include <algorithm>
 #include <cstddef>
+#include <limits>
 #include <type_traits>
 
 HWY_BEFORE_NAMESPACE();
@@ -551,6 +569,184 @@ std::size_t RasterizeSurface(const TriangleSetup& t, const PixelRect& tile, Real
 #endif
 }
 
+// ---- Multisampling in one pass ----
+
+constexpr int kSamplesMax = 16;
+
+// Floor division for a positive divisor.
+HWY_INLINE std::int64_t FloorDiv(std::int64_t n, std::int64_t d) { return n >= 0 ? n / d : -((-n + d - 1) / d); }
+
+// The pixels of row y (its centres at fy) in [minX, maxX] that may have a sample inside the
+// triangle: for each edge, where its value at the centre plus the largest of its samples'
+// offsets `reach` keeps E + bias ≥ 0 (E moves by A = 256·a a pixel). Returns false when none.
+HWY_INLINE bool RowSpan(const TriangleSetup& t, const std::int64_t (&reach)[3], std::int64_t fy, int& minX, int& maxX) {
+  const int x0 = minX;
+  const std::int64_t fx = std::int64_t(x0) * kSubpixelOne + kSubpixelOne / 2;
+  for (int i = 0; i < 3; ++i) {
+    const std::int64_t A = std::int64_t(t.edge[i].a) * kSubpixelOne;
+    const std::int64_t value = t.edge[i].at(fx, fy) + reach[i] + t.edge[i].bias;  // at x0; ≥ 0 needed
+    if (A > 0) minX = int(std::max<std::int64_t>(minX, x0 + FloorDiv(-value + A - 1, A)));
+    else if (A < 0) maxX = int(std::min<std::int64_t>(maxX, x0 + FloorDiv(value, -A)));
+    else if (value < 0) return false;
+  }
+  return minX <= maxX;
+}
+
+// The depth pass at every sample of the triangle's pixels in `tile`. A vector's lanes are a row's
+// samples in the tile's order (SamplePlanes: pixel by pixel, each pixel's samples side by side),
+// so whole vectors load and store; each row only over the pixels that may have a sample inside
+// (RowSpan). For each vector with a sample passing GL_LESS, write(at, pass, l0, l1, l2): `at` the
+// vector's first sample in the tile, each lane's mask and its pixel centre's barycentrics. A
+// sample's edge value is its pixel centre's plus a·ox + b·oy, an integer as exact as the
+// centre's, so coverage, barycentrics and depth come out as a whole pass at that sample finds them
+// (DepthPass of atSample). The edge values are kept in double lanes, or (kSplit) in float lanes as
+// a multiple of 256 plus a remainder, each exact while the values stay below 2^32 (as
+// DepthPassTwoRows keeps them): their sum rounds as the integer's conversion does, and its sign is
+// the integer's.
+template <bool kSplit, class D, class Write>
+HWY_INLINE std::size_t SamplesPassIn(D d, const TriangleSetup& t, const PixelRect& tile, const SamplePlanes& planes,
+                                     const Write& write) {
+  const int minX = std::max(t.minX, tile.minX), maxX = std::min(t.maxX, tile.maxX);
+  const int minY = std::max(t.minY, tile.minY), maxY = std::min(t.maxY, tile.maxY);
+  using T = hn::TFromD<D>;  // the edge values' lanes: float (split) or double
+  const hn::Rebind<Real, D> dr;
+  const int samples = planes.count, lanes = int(hn::Lanes(d));
+  // A vector holds whole pixels (lanes ≥ samples) or a pixel spans whole vectors: the tables of
+  // lane offsets cover one such group, `pixels` pixels in `vectors` vectors.
+  const int group = std::max(lanes, samples), pixels = std::max(1, lanes / samples), vectors = group / lanes;
+  HWY_ALIGN T high[3][2 * kSamplesMax], low[3][2 * kSamplesMax], centre[3][2 * kSamplesMax];
+  HWY_ALIGN Real pixelOf[2 * kSamplesMax];
+  std::int64_t reach[3];
+  for (int i = 0; i < 3; ++i) {
+    reach[i] = std::numeric_limits<std::int64_t>::min();
+    for (int s = 0; s < samples; ++s) {
+      const SubpixelOffset o = planes.offsets[s];
+      reach[i] = std::max(reach[i], std::int64_t(t.edge[i].a) * o.x + std::int64_t(t.edge[i].b) * o.y);
+    }
+  }
+  for (int k = 0; k < group; ++k) {
+    const int pixel = k / samples;
+    const SubpixelOffset o = planes.offsets[k % samples];
+    pixelOf[k] = Real(pixel);
+    for (int i = 0; i < 3; ++i) {
+      const std::int64_t a = t.edge[i].a, b = t.edge[i].b, along = pixel * a * kSubpixelOne;
+      const std::int64_t offset = a * o.x + b * o.y, rest = kSplit ? (offset & (kSubpixelOne - 1)) : 0;
+      centre[i][k] = T(along);
+      high[i][k] = T(along + offset - rest);  // with kSplit a multiple of 256
+      low[i][k] = T(rest);
+    }
+  }
+  using V = hn::VFromD<D>;
+  V bias[3];
+  for (int i = 0; i < 3; ++i) bias[i] = hn::Set(d, T(t.edge[i].bias));
+  const auto toReal = [&](V v) {
+    if constexpr (sizeof(T) == sizeof(Real)) return v;
+    else return hn::DemoteTo(dr, v);  // rounds as int64 → float does (exact below 2^53 in double)
+  };
+  const auto invArea = hn::Set(dr, t.invArea);
+  const auto z0 = hn::Set(dr, t.z[0]), z1 = hn::Set(dr, t.z[1]), z2 = hn::Set(dr, t.z[2]);
+  const auto zero = hn::Zero(dr);
+  const std::int64_t half = kSubpixelOne / 2;
+  std::size_t passed = 0;
+  for (int y = minY; y <= maxY; ++y) {
+    const std::int64_t fy = std::int64_t(y) * kSubpixelOne + half;
+    int first = minX, last = maxX;
+    if (!RowSpan(t, reach, fy, first, last)) continue;
+    const int row = (y - tile.minY) * kTileSize - tile.minX;  // tile-local index of (0, y)
+    for (int x = first; x <= last; x += pixels) {
+      const std::int64_t fx = std::int64_t(x) * kSubpixelOne + half;
+      const auto inRow = hn::Set(dr, Real(last - x));
+      V Ehigh[3], Elow[3];
+      for (int i = 0; i < 3; ++i) {
+        const std::int64_t e = t.edge[i].at(fx, fy), rest = kSplit ? (e & (kSubpixelOne - 1)) : 0;
+        Ehigh[i] = hn::Set(d, T(e - rest));
+        Elow[i] = hn::Set(d, T(rest));
+      }
+      for (int v = 0; v < vectors; ++v) {
+        const int k = v * lanes;
+        V E[3], Ebias[3];
+        for (int i = 0; i < 3; ++i) {
+          const V h = Ehigh[i] + hn::Load(d, high[i] + k);
+          if constexpr (kSplit) {
+            const V l = Elow[i] + hn::Load(d, low[i] + k);
+            E[i] = h + l;
+            Ebias[i] = h + (l + bias[i]);
+          } else {
+            E[i] = h;
+            Ebias[i] = h + bias[i];
+          }
+        }
+        // Converting to Real keeps the sign and zero, so the test can run in the narrow lanes.
+        const auto inside = hn::And(hn::And(hn::And(toReal(Ebias[0]) >= zero, toReal(Ebias[1]) >= zero),
+                                            toReal(Ebias[2]) >= zero),
+                                    hn::LoadU(dr, pixelOf + k) <= inRow);
+        const auto z = (toReal(E[0]) * invArea) * z0 + (toReal(E[1]) * invArea) * z1 + (toReal(E[2]) * invArea) * z2;
+        const std::size_t at = std::size_t(row + x) * std::size_t(samples) + std::size_t(k);
+        Real* depth = planes.depth + at;
+        const auto pass = hn::And(inside, z < hn::LoadU(dr, depth));
+        if (hn::AllFalse(dr, pass)) continue;
+        hn::BlendedStore(z, pass, dr, depth);
+        passed += hn::CountTrue(dr, pass);
+        const auto centreAt = [&](int i) {
+          if constexpr (kSplit) return toReal((Ehigh[i] + hn::Load(d, centre[i] + k)) + Elow[i]) * invArea;
+          else return toReal(Ehigh[i] + hn::Load(d, centre[i] + k)) * invArea;
+        };
+        write(at, pass, centreAt(0), centreAt(1), centreAt(2));
+      }
+    }
+  }
+  return passed;
+}
+
+// Whether the triangle's edge values at every sample of its pixels in `tile` stay below 2^32 in
+// magnitude (as BlockRowsExact), for SamplesPassIn's split float lanes.
+HWY_INLINE bool SamplesSplitExact(const TriangleSetup& t, const PixelRect& tile, const SamplePlanes& planes) {
+  const int minX = std::max(t.minX, tile.minX), maxX = std::min(t.maxX, tile.maxX);
+  const int minY = std::max(t.minY, tile.minY), maxY = std::min(t.maxY, tile.maxY);
+  std::int64_t reach = 0;
+  for (int s = 0; s < planes.count; ++s)
+    reach = std::max({reach, std::abs(planes.offsets[s].x), std::abs(planes.offsets[s].y)});
+  const std::int64_t half = kSubpixelOne / 2, limit = (std::int64_t(1) << 32) - 4 * kSubpixelOne;
+  for (const EdgeFunction& e : t.edge) {
+    const std::int64_t a = std::abs(std::int64_t(e.a)), b = std::abs(std::int64_t(e.b));
+    if (a > (1 << 24) || b > (1 << 24)) return false;
+    const std::int64_t first = e.at(std::int64_t(minX) * kSubpixelOne + half, std::int64_t(minY) * kSubpixelOne + half);
+    if (std::abs(first) + (a * (maxX - minX) + b * (maxY - minY)) * kSubpixelOne + (a + b) * reach > limit) return false;
+  }
+  return true;
+}
+
+template <class Write>
+HWY_INLINE std::size_t SamplesPass(const TriangleSetup& t, const PixelRect& tile, const SamplePlanes& planes,
+                                   const Write& write) {
+  if (std::max(t.minX, tile.minX) > std::min(t.maxX, tile.maxX) || std::max(t.minY, tile.minY) > std::min(t.maxY, tile.maxY))
+    return 0;
+#if HWY_TARGET != HWY_SCALAR
+  if (sizeof(Real) == 4 && SamplesSplitExact(t, tile, planes))
+    return SamplesPassIn<true>(hn::ScalableTag<float>(), t, tile, planes, write);
+#endif
+  return SamplesPassIn<false>(DD(), t, tile, planes, write);
+}
+
+std::size_t RasterizeSamples(const TriangleSetup& t, const PixelRect& tile, const SamplePlanes& planes,
+                             std::uint32_t slot) {
+  return SamplesPass(t, tile, planes, [&](std::size_t at, auto pass, auto l0, auto, auto) {
+    const hn::Rebind<std::uint32_t, hn::DFromV<decltype(l0)>> du;
+    hn::BlendedStore(hn::Set(du, slot), hn::RebindMask(du, pass), du, planes.winners + at);
+  });
+}
+
+std::size_t RasterizeSamplesColored(const TriangleSetup& t, const PixelRect& tile, const SamplePlanes& planes,
+                                    const Color4* lit, std::uint32_t packed, bool clearWinners) {
+  const bool opaque = lit && Opaque(lit);
+  return SamplesPass(t, tile, planes, [&](std::size_t at, auto pass, auto l0, auto l1, auto l2) {
+    const hn::Rebind<std::uint32_t, hn::DFromV<decltype(l0)>> du;
+    const auto color = lit ? GouraudPixels(t, lit, opaque, l0, l1, l2) : hn::Set(du, packed);
+    hn::BlendedStore(color, hn::RebindMask(du, pass), du, planes.color + at);
+    if (clearWinners) hn::BlendedStore(hn::Set(du, kNoWinner), hn::RebindMask(du, pass), du, planes.winners + at);
+  });
+}
+
 }  // namespace illum::HWY_NAMESPACE
 HWY_AFTER_NAMESPACE();
 
@@ -563,6 +759,18 @@ HWY_EXPORT(RasterizeGouraud);
 HWY_EXPORT(RasterizeSurface);
 HWY_EXPORT(CoverTiny);
 HWY_EXPORT(CoverTinySurface);
+HWY_EXPORT(RasterizeSamples);
+HWY_EXPORT(RasterizeSamplesColored);
+
+std::size_t rasterizeSamples(const TriangleSetup& t, const PixelRect& tile, const SamplePlanes& planes,
+                             std::uint32_t slot) {
+  return HWY_DYNAMIC_DISPATCH(RasterizeSamples)(t, tile, planes, slot);
+}
+
+std::size_t rasterizeSamplesColored(const TriangleSetup& t, const PixelRect& tile, const SamplePlanes& planes,
+                                    const Color4* lit, std::uint32_t packed, bool clearWinners) {
+  return HWY_DYNAMIC_DISPATCH(RasterizeSamplesColored)(t, tile, planes, lit, packed, clearWinners);
+}
 
 std::size_t rasterizeDepth(const TriangleSetup& t, const PixelRect& tile, Real* depth, std::uint32_t slot,
                            std::uint32_t* winners) {

@@ -57,7 +57,31 @@ void forEachTilePiece(const TriangleSetup& t, F&& f) {
     }
 }
 
+// Multisampling in one pass: a tile's depths, RGBA8 words and the records its pixels show, each
+// pixel's `count` samples side by side (sample s of pixel i at i·count + s, framebuffer.h), and
+// where each sample lies from the pixel centre.
+struct SamplePlanes {
+  int count = 0;
+  const SubpixelOffset* offsets = nullptr;
+  Real* depth = nullptr;
+  std::uint32_t* color = nullptr;
+  std::uint32_t* winners = nullptr;
+};
+
+// The depth pass of a triangle set up at the pixel centres (with the samples' reach) at every
+// sample of its pixels in `tile`: coverage and depth at each sample exactly as a pass at that
+// sample finds them (rasterizeDepth of atSample(t, offset)), the depth stored per sample, and
+// where a sample passes, its winner set to `slot`. Returns the samples that passed.
+std::size_t rasterizeSamples(const TriangleSetup& t, const PixelRect& tile, const SamplePlanes& planes,
+                             std::uint32_t slot);
+
 #if !ILLUM_USE_DOUBLE
+// The same for flat (`lit` null: the colour `packed`) and Gouraud (the vertex colours `lit`) drawing,
+// the colour worked out once per pixel at its centre and written to every sample that passed
+// (and, with `clearWinners`, the winner there cleared).
+std::size_t rasterizeSamplesColored(const TriangleSetup& t, const PixelRect& tile, const SamplePlanes& planes,
+                                    const Color4* lit, std::uint32_t packed, bool clearWinners);
+
 // Flat and Gouraud drawing in the same pass, for float colour channels (ILLUM_DOUBLE=OFF): where
 // the depth test passes, the pixel of `color` (the tile's RGBA8 pixels as 32-bit words, same
 // layout) gets the flat colour `packed`, or the three vertex colours `lit` (counter-clockwise

@@ -3,6 +3,8 @@
 #include "raster/draw.h"
 #include "raster/multisample.h"
 
+#include <cstring>
+
 namespace illum {
 
 namespace {
@@ -35,20 +37,26 @@ void drawSceneReference(const Scene& scene, Image& image, RenderStats& stats) {
   FrameContext frame = FrameContext::fromScene(scene);
   const std::span<const SubpixelOffset> samples = multisamplePattern(scene.multisample);
   frame.multisampled = samples.size() > 1;
-  std::vector<Framebuffer> passes;
+  std::vector<Image> passes;
   for (const SubpixelOffset& sample : samples) {
     frame.sample = sample;
-    passes.emplace_back(scene.width, scene.height, scene.background);
+    Framebuffer fb(scene.width, scene.height, scene.background);
     RenderStats passStats;
-    drawPass(scene, frame, passes.back(), passStats);
-    if (passes.size() == 1) stats = passStats;
+    drawPass(scene, frame, fb, passStats);
+    if (passes.empty()) stats = passStats;
     else stats.fragmentsShaded += passStats.fragmentsShaded;
+    passes.push_back(fb.toImage());
   }
   image = Image(scene.width, scene.height);
   const std::uint32_t background8 = packUnorm8(scene.background);
   stats.pixelsDrawn = 0;
-  for (int tile = 0; tile < passes.front().tileCount(); ++tile)
-    stats.pixelsDrawn += resolveTile(passes, tile, image, background8);
+  std::vector<std::uint32_t> words(passes.size());
+  for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
+    for (std::size_t s = 0; s < passes.size(); ++s) std::memcpy(&words[s], &passes[s].rgba[i], 4);
+    const std::uint32_t word = resolvePixel(words.data(), int(words.size()));
+    std::memcpy(&image.rgba[i], &word, 4);
+    stats.pixelsDrawn += word != background8;
+  }
 }
 
 }  // namespace illum
