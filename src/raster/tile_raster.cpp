@@ -573,29 +573,57 @@ std::size_t RasterizeSurface(const TriangleSetup& t, const PixelRect& tile, Real
 
 constexpr int kSamplesMax = 16;
 
-// Floor division for a positive divisor.
-HWY_INLINE std::int64_t FloorDiv(std::int64_t n, std::int64_t d) { return n >= 0 ? n / d : -((-n + d - 1) / d); }
-
-// The pixels of row y (its centres at fy) in [minX, maxX] that may have a sample inside the
-// triangle: for each edge, where its value at the centre plus the largest of its samples'
-// offsets `reach` keeps E + bias ≥ 0 (E moves by A = 256·a a pixel). Returns false when none.
-HWY_INLINE bool RowSpan(const TriangleSetup& t, const std::int64_t (&reach)[3], std::int64_t fy, int& minX, int& maxX) {
-  const int x0 = minX;
-  const std::int64_t fx = std::int64_t(x0) * kSubpixelOne + kSubpixelOne / 2;
-  for (int i = 0; i < 3; ++i) {
-    const std::int64_t A = std::int64_t(t.edge[i].a) * kSubpixelOne;
-    const std::int64_t value = t.edge[i].at(fx, fy) + reach[i] + t.edge[i].bias;  // at x0; ≥ 0 needed
-    if (A > 0) minX = int(std::max<std::int64_t>(minX, x0 + FloorDiv(-value + A - 1, A)));
-    else if (A < 0) maxX = int(std::min<std::int64_t>(maxX, x0 + FloorDiv(value, -A)));
-    else if (value < 0) return false;
+// Which pixels of a row may have a sample inside the triangle: for each edge, where its value at
+// the pixel centre plus the largest of its samples' offsets keeps E + bias ≥ 0. E moves by
+// A = 256·a a pixel, so the bound is a quotient: taken in double through 1/A, then checked and
+// moved by a pixel in exact integers.
+struct RowSpans {
+  std::int64_t need[3];  // −(reach + bias): E at the centre must be at least this
+  double inverse[3];     // 1/A, 0 where A = 0
+  RowSpans(const TriangleSetup& t, const std::int64_t (&reach)[3]) {
+    for (int i = 0; i < 3; ++i) {
+      need[i] = -(reach[i] + t.edge[i].bias);
+      const std::int64_t A = std::int64_t(t.edge[i].a) * kSubpixelOne;
+      inverse[i] = A != 0 ? 1.0 / double(A) : 0.0;
+    }
   }
-  return minX <= maxX;
-}
+  // Narrows [minX, maxX] (pixel centres at fy); false when no pixel is left.
+  bool narrow(const TriangleSetup& t, std::int64_t fy, int& minX, int& maxX) const {
+    const int x0 = minX;
+    const std::int64_t fx = std::int64_t(x0) * kSubpixelOne + kSubpixelOne / 2;
+    for (int i = 0; i < 3; ++i) {
+      const std::int64_t short_ = need[i] - t.edge[i].at(fx, fy);  // what k·A must reach, k pixels on
+      if (t.edge[i].a == 0) {
+        if (short_ > 0) return false;
+        continue;
+      }
+      // The least k with k·A ≥ short for A > 0, the largest for A < 0.
+      const std::int64_t A = std::int64_t(t.edge[i].a) * kSubpixelOne;
+      const double q = double(short_) * inverse[i];
+      if (!(q > -32768 && q < 32768)) {  // the whole row, or none of it
+        if (t.edge[i].a > 0 ? q >= 32768 : q <= -32768) return false;
+        continue;
+      }
+      if (A > 0) {
+        std::int64_t k = std::int64_t(std::ceil(q));
+        if (k * A < short_) ++k;
+        else if ((k - 1) * A >= short_) --k;
+        minX = int(std::max<std::int64_t>(minX, x0 + k));
+      } else {
+        std::int64_t k = std::int64_t(std::floor(q));
+        if (k * A < short_) --k;
+        else if ((k + 1) * A >= short_) ++k;
+        maxX = int(std::min<std::int64_t>(maxX, x0 + k));
+      }
+    }
+    return minX <= maxX;
+  }
+};
 
 // The depth pass at every sample of the triangle's pixels in `tile`. A vector's lanes are a row's
 // samples in the tile's order (SamplePlanes: pixel by pixel, each pixel's samples side by side),
 // so whole vectors load and store; each row only over the pixels that may have a sample inside
-// (RowSpan). For each vector with a sample passing GL_LESS, write(at, pass, l0, l1, l2): `at` the
+// (RowSpans). For each vector with a sample passing GL_LESS, write(at, pass, l0, l1, l2): `at` the
 // vector's first sample in the tile, each lane's mask and its pixel centre's barycentrics. A
 // sample's edge value is its pixel centre's plus a·ox + b·oy, an integer as exact as the
 // centre's, so coverage, barycentrics and depth come out as a whole pass at that sample finds them
@@ -614,27 +642,35 @@ HWY_INLINE std::size_t SamplesPassIn(D d, const TriangleSetup& t, const PixelRec
   // A vector holds whole pixels (lanes ≥ samples) or a pixel spans whole vectors: the tables of
   // lane offsets cover one such group, `pixels` pixels in `vectors` vectors.
   const int group = std::max(lanes, samples), pixels = std::max(1, lanes / samples), vectors = group / lanes;
-  HWY_ALIGN T high[3][2 * kSamplesMax], low[3][2 * kSamplesMax], centre[3][2 * kSamplesMax];
-  HWY_ALIGN Real pixelOf[2 * kSamplesMax];
+  // Each sample's offset of each edge value, a·ox + b·oy, split (kSplit) into a multiple of 256
+  // and the rest; then the tables of a group's lanes: lane k is sample k mod samples of pixel
+  // k / samples.
   std::int64_t reach[3];
+  T sampleHigh[3][kSamplesMax], sampleLow[3][kSamplesMax];
   for (int i = 0; i < 3; ++i) {
+    const std::int64_t a = t.edge[i].a, b = t.edge[i].b;
     reach[i] = std::numeric_limits<std::int64_t>::min();
     for (int s = 0; s < samples; ++s) {
-      const SubpixelOffset o = planes.offsets[s];
-      reach[i] = std::max(reach[i], std::int64_t(t.edge[i].a) * o.x + std::int64_t(t.edge[i].b) * o.y);
+      const std::int64_t offset = a * planes.offsets[s].x + b * planes.offsets[s].y;
+      const std::int64_t rest = kSplit ? (offset & (kSubpixelOne - 1)) : 0;
+      reach[i] = std::max(reach[i], offset);
+      sampleHigh[i][s] = T(offset - rest);
+      sampleLow[i][s] = T(rest);
     }
   }
-  for (int k = 0; k < group; ++k) {
-    const int pixel = k / samples;
-    const SubpixelOffset o = planes.offsets[k % samples];
-    pixelOf[k] = Real(pixel);
+  HWY_ALIGN T high[3][2 * kSamplesMax], low[3][2 * kSamplesMax], centre[3][2 * kSamplesMax];
+  HWY_ALIGN Real pixelOf[2 * kSamplesMax];
+  for (int k = 0, pixel = 0; pixel * samples < group; ++pixel) {
     for (int i = 0; i < 3; ++i) {
-      const std::int64_t a = t.edge[i].a, b = t.edge[i].b, along = pixel * a * kSubpixelOne;
-      const std::int64_t offset = a * o.x + b * o.y, rest = kSplit ? (offset & (kSubpixelOne - 1)) : 0;
-      centre[i][k] = T(along);
-      high[i][k] = T(along + offset - rest);  // with kSplit a multiple of 256
-      low[i][k] = T(rest);
+      const T along = T(pixel * std::int64_t(t.edge[i].a) * kSubpixelOne);  // exact: a multiple of 256 below 2^32
+      for (int s = 0; s < samples; ++s) {
+        centre[i][k + s] = along;
+        high[i][k + s] = along + sampleHigh[i][s];
+        low[i][k + s] = sampleLow[i][s];
+      }
     }
+    for (int s = 0; s < samples; ++s) pixelOf[k + s] = Real(pixel);
+    k += samples;
   }
   using V = hn::VFromD<D>;
   V bias[3];
@@ -647,11 +683,12 @@ HWY_INLINE std::size_t SamplesPassIn(D d, const TriangleSetup& t, const PixelRec
   const auto z0 = hn::Set(dr, t.z[0]), z1 = hn::Set(dr, t.z[1]), z2 = hn::Set(dr, t.z[2]);
   const auto zero = hn::Zero(dr);
   const std::int64_t half = kSubpixelOne / 2;
+  const RowSpans spans(t, reach);
   std::size_t passed = 0;
   for (int y = minY; y <= maxY; ++y) {
     const std::int64_t fy = std::int64_t(y) * kSubpixelOne + half;
     int first = minX, last = maxX;
-    if (!RowSpan(t, reach, fy, first, last)) continue;
+    if (!spans.narrow(t, fy, first, last)) continue;
     const int row = (y - tile.minY) * kTileSize - tile.minX;  // tile-local index of (0, y)
     for (int x = first; x <= last; x += pixels) {
       const std::int64_t fx = std::int64_t(x) * kSubpixelOne + half;
@@ -698,15 +735,17 @@ HWY_INLINE std::size_t SamplesPassIn(D d, const TriangleSetup& t, const PixelRec
   return passed;
 }
 
-// Whether the triangle's edge values at every sample of its pixels in `tile` stay below 2^32 in
-// magnitude (as BlockRowsExact), for SamplesPassIn's split float lanes.
+// Whether the triangle's edge values at every sample of its pixels in `tile`, and every part they
+// are summed from, stay below 2^32 in magnitude (as BlockRowsExact), for SamplesPassIn's split
+// float lanes: the value at the bounds' first pixel, the steps across them and the samples'
+// offsets each below 2^31.
 HWY_INLINE bool SamplesSplitExact(const TriangleSetup& t, const PixelRect& tile, const SamplePlanes& planes) {
   const int minX = std::max(t.minX, tile.minX), maxX = std::min(t.maxX, tile.maxX);
   const int minY = std::max(t.minY, tile.minY), maxY = std::min(t.maxY, tile.maxY);
   std::int64_t reach = 0;
   for (int s = 0; s < planes.count; ++s)
     reach = std::max({reach, std::abs(planes.offsets[s].x), std::abs(planes.offsets[s].y)});
-  const std::int64_t half = kSubpixelOne / 2, limit = (std::int64_t(1) << 32) - 4 * kSubpixelOne;
+  const std::int64_t half = kSubpixelOne / 2, limit = (std::int64_t(1) << 31) - 4 * kSubpixelOne;
   for (const EdgeFunction& e : t.edge) {
     const std::int64_t a = std::abs(std::int64_t(e.a)), b = std::abs(std::int64_t(e.b));
     if (a > (1 << 24) || b > (1 << 24)) return false;

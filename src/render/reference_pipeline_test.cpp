@@ -103,6 +103,11 @@ TEST(BinnedPipeline, MultisamplingInOnePassEqualsAPassPerSample) {
   scenes.push_back({"blended 700x500", wide});
   scenes.push_back({"dense", denseScene(false)});
   scenes.push_back({"dense, blended", denseScene(true)});
+  // Big triangles whose edge values outgrow float lanes (the coverage kernel's double lanes).
+  Scene big = defaultScene();
+  big.width = 2400, big.height = 300;
+  big.camera.fovy = 12;
+  scenes.push_back({"big triangles 2400x300", big});
   for (auto& [name, scene] : scenes)
     for (Shading shading : {Shading::Flat, Shading::Gouraud, Shading::Phong})
       for (int samples : {4, 8, 16}) {
