@@ -37,6 +37,12 @@ class Texture {
   // Bilinear sample of one mip level.
   Vec4 sampleLevel(const Vec2& uv, int level) const;
 
+  // What a sampler over SIMD lanes reads (src/image/texture_lanes-inl.h, the same filtering): a
+  // level's RGBA8 image, and the value of each colour byte (alpha's: alphaTable(), byte/255).
+  const Image& level(int i) const { return levels_[std::size_t(i)]; }
+  const Real* colorTable() const { return decode_; }
+  static const Real* alphaTable();
+
  private:
   // Each level an RGBA8 image, rows top to bottom as images are (row 0 is GL's v = 1 end).
   using Level = Image;

@@ -80,6 +80,8 @@ std::size_t Texture::byteSize() const {
   return n;
 }
 
+const Real* Texture::alphaTable() { return tables().linear.data(); }
+
 Vec4 Texture::texel(const Level& level, int x, int glRow) const {
   const std::uint8_t* p = level.pixel(x, level.height - 1 - glRow);
   return Vec4(decode_[p[0]], decode_[p[1]], decode_[p[2]], tables().linear[p[3]]);

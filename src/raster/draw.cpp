@@ -12,18 +12,28 @@ namespace {
 bool isTranslucent(const Object& o);
 }  // namespace
 
+Route chooseRoute(const FrameContext& frame, const Object& object, bool translucent) {
+  if (translucent) return Route::Blended;
+  // The colouring kernels write float channels (the SIMD conversion to RGBA8 takes floats).
+  if (sizeof(Real) != 4) return Route::Deferred;
+  const bool textured = drawnTexture(object) != nullptr;
+  if (frame.shading != Shading::Phong) return textured ? Route::Deferred : Route::Colored;
+  // The visible surface is one per pixel: a multisampled tile keeps what each sample shows.
+  const bool oneSample = frame.samples.size() <= 1;
+  return oneSample && !textured && !mapsDrawn(object, frame.litPerPixel()) ? Route::Surface : Route::Deferred;
+}
+
 DrawTarget::DrawTarget(const FrameContext& frame, const Scene& scene, Framebuffer& fb, PixelProbe* probe)
     : frame(frame), scene(scene), fb(fb), probe(probe) {
-  // (The visible surface is one per pixel: a multisampled tile keeps what each sample shows.)
-  const bool oneSample = frame.samples.size() <= 1;
-  litFromSurface = sizeof(Real) == 4 && !probe && frame.shading == Shading::Phong && oneSample;
-  colorsInDepthPass = sizeof(Real) == 4 && !probe && frame.shading != Shading::Phong;
   for (const Object& o : scene.objects) {
     layouts.push_back(AttributeLayout::forObject(frame, o, probe != nullptr));
     setups.push_back({frame.lights, frame.lightModel, modelOf(o.material, frame.model), o.material});
     colored.push_back(!o.mesh->colors.empty());
-    translucent.push_back(frame.blend && isTranslucent(o));
-    if (drawnTexture(o) || mapsDrawn(o, frame.litPerPixel())) litFromSurface = false;
+    route.push_back(chooseRoute(frame, o, frame.blend && isTranslucent(o)));
+    // Tiny triangles are worked out at setup as the tile would draw them: coloured, or as visible
+    // surface (without vertex colours), in frames of one sample.
+    tiny.push_back(frame.samples.size() <= 1 &&
+                   (route.back() == Route::Colored || (route.back() == Route::Surface && colored.back() == 0)));
   }
   // Objects that share a material usually come together: each is compared with the last few
   // owners found, not with every object before it.
@@ -41,11 +51,6 @@ DrawTarget::DrawTarget(const FrameContext& frame, const Scene& scene, Framebuffe
       shadeOwner.push_back(std::uint32_t(i));
       owners.push_back(std::uint32_t(i));
     }
-  }
-  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
-    const Object& o = scene.objects[i];
-    tiny.push_back(oneSample && !translucent[i] &&
-                   ((colorsInDepthPass && !drawnTexture(o)) || (litFromSurface && !colored[i])));
   }
 }
 

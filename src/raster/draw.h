@@ -20,6 +20,16 @@
 
 namespace illum {
 
+// How an object's triangles are drawn, chosen once per frame for each object by chooseRoute, the
+// one place the rasterizer decides it. Every route's colours are the one-pixel formulas' bits.
+enum class Route : std::uint8_t {
+  Colored,   // flat and Gouraud, untextured: coloured as the depth pass finds each pixel (tile_raster.h)
+  Surface,   // Phong without texture or maps, one sample: the visible surface kept, lit once per pixel
+  Deferred,  // the record each pixel (each sample) shows kept, coloured afterwards (shade_visible.h)
+  Blended,   // translucent under blending: fragment by fragment, in order (drawRecord)
+};
+Route chooseRoute(const FrameContext& frame, const Object& object, bool translucent);
+
 // What every triangle of a frame draws into.
 struct DrawTarget {
   const FrameContext& frame;
@@ -27,31 +37,21 @@ struct DrawTarget {
   Framebuffer& fb;
   PixelProbe* probe;  // null unless a pixel is watched
   std::vector<AttributeLayout> layouts;  // per object: what its records carry
-  // Phong shading lit from the tile's visible surface in SIMD (shade_tile.h): float channels, one
-  // sample, no texture or map in the scene and no watched pixel. Then, per object, its lighting and vertex colours.
-  bool litFromSurface = false;
+  std::vector<Route> route;  // per object
+  // Per object, for the Surface route: its lighting and whether it has vertex colours.
   std::vector<ShadeSetup> setups;
   std::vector<std::uint8_t> colored;
   // Per object: the object whose setup and colouring light it alike (itself or an earlier one),
   // the owner its pixels name in the visible surface, so that a vector of pixels of several such
   // objects is lit in one pass (shadeOwnedPoints lights lanes of one owner at a time).
   std::vector<std::uint32_t> shadeOwner;
-  // Per object: blending on and the object translucent (material, texture or vertex alpha below 1).
-  // An opaque object is drawn as without blending even when it is on: its alpha of 1 would blend
-  // to the fragment itself, and so its interpolated alpha, a few ulps from 1, cannot blend at all.
-  std::vector<std::uint8_t> translucent;
-  // Flat and Gouraud pixels coloured in the depth pass itself (tile_raster.h), at every sample
-  // they cover when multisampled: float channels, no watched pixel.
-  bool colorsInDepthPass = false;
-  // Per object: its tiny triangles worked out at setup, without records (tile_raster.h), in
-  // frames of one sample: coloured
-  // when colorsInDepthPass (opaque, untextured objects), or as visible surface when litFromSurface
-  // (opaque objects without vertex colours).
+  // Per object: its tiny triangles worked out at setup, without records (tile_raster.h), in frames
+  // of one sample: coloured (Colored), or as visible surface (Surface, without vertex colours).
   std::vector<std::uint8_t> tiny;
 
   DrawTarget(const FrameContext& frame, const Scene& scene, Framebuffer& fb, PixelProbe* probe);
   const AttributeLayout& layout(const DrawRecord& r) const { return layouts[r.object]; }
-  bool blends(const DrawRecord& r) const { return translucent[r.object] != 0; }
+  bool blends(const DrawRecord& r) const { return route[r.object] == Route::Blended; }
 };
 
 // Draws the record's pixels inside `rect`; adds the fragments that passed the depth test. With

@@ -11,6 +11,7 @@
 #include "raster/multisample.h"
 #include "raster/overlay.h"
 #include "raster/points_lines.h"
+#include "raster/probe.h"
 #include "raster/shade_tile.h"
 
 #include <tbb/blocked_range.h>
@@ -82,8 +83,8 @@ namespace {
 // One frame through the pipeline, in the renderer's working memory.
 class BinnedFrame {
  public:
-  BinnedFrame(RasterPipeline::State& state, const Scene& scene, const FrameContext& frame, PixelProbe* probe)
-      : s_(state), frame_(frame), target_(frame, scene, state.fb, probe),
+  BinnedFrame(RasterPipeline::State& state, const Scene& scene, const FrameContext& frame)
+      : s_(state), frame_(frame), target_(frame, scene, state.fb, nullptr),
         samples_(std::max<int>(1, int(frame.samples.size()))) {
     s_.fb.reset(scene.width, scene.height, scene.background, samples_);
     tiles_.reset(frame.width, frame.height);
@@ -288,7 +289,6 @@ RasterPipeline::~RasterPipeline() = default;
 
 void RasterPipeline::draw(const Scene& scene, Image& image, RenderStats& stats, PixelProbe* probe) {
   FrameContext frame = FrameContext::fromScene(scene);
-  if (probe) probe->hit = false;
   const std::span<const SubpixelOffset> samples = multisamplePattern(scene.multisample);
   const std::vector<OverlayLine> overlay = overlayLines(scene);
   if (hasPointsOrLines(scene)) checkPointAndLineFill(frame, scene, int(samples.size()));
@@ -299,7 +299,7 @@ void RasterPipeline::draw(const Scene& scene, Image& image, RenderStats& stats, 
     frame.multisampled = true;
     frame.samples = samples;
   }
-  BinnedFrame pass(*state_, scene, frame, probe);
+  BinnedFrame pass(*state_, scene, frame);
   pass.drawObjects(scene, drawingOrder(scene, frame));
   if (hasPointsOrLines(scene) || !overlay.empty()) {
     pass.flush();
@@ -311,6 +311,7 @@ void RasterPipeline::draw(const Scene& scene, Image& image, RenderStats& stats, 
     stats = pass.stats();
     stats.pixelsDrawn = unlike;
   }
+  if (probe) probePixel(scene, frame, *probe);
 }
 
 }  // namespace illum

@@ -13,6 +13,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -27,23 +28,26 @@ struct SampleTiles {
 };
 
 // One thread's working memory for a tile, reused from tile to tile.
+struct VisibleBatch;
+
 struct TileScratch {
-  static constexpr std::size_t kBatch = 256;  // Phong pixels lit together
   // The record each sample shows (the framebuffer's layout, padding included), kNoWinner between tiles.
   std::vector<std::uint32_t> winners = std::vector<std::uint32_t>(kTileBlock, kNoWinner);
-  // Phong batch, structure of arrays: eye position, normal, vertex colour, texel, lit colour.
-  Real soa[18][kBatch];
-  std::uint16_t pixel[kBatch];  // index inside the tile
-  std::uint32_t slot[kBatch];   // which record
   // Phong's visible surface (tile_raster.h): position, normal, colour planes and owners.
   Real surface[10][kTileBlock];
   std::array<std::uint32_t, kTileBlock> owner;
   TileMemory pixels;  // a tile drawn straight into the image (Framebuffer::lendTile)
-  TileScratch() { owner.fill(kNoWinner); }
+  TileScratch();
+  ~TileScratch();
+  // The deferred colours' batch (shade_visible.h).
+  VisibleBatch& visible() { return *visible_; }
   // Room for `samples` samples per pixel.
   void reserveSamples(int samples) {
     if (winners.size() < std::size_t(samples) * kTileBlock) winners.resize(std::size_t(samples) * kTileBlock, kNoWinner);
   }
+
+ private:
+  std::unique_ptr<VisibleBatch> visible_;
 };
 
 // A tile's pixels of tiny triangles (tile_raster.h), each where its count of records before it

@@ -10,7 +10,7 @@
 namespace illum {
 
 std::size_t rasterizeDepth(const TriangleSetup& t, const PixelRect& tile, Real* depth, std::uint32_t slot,
-                           std::uint32_t* winners) {
+                           std::uint32_t* winners, std::uint32_t* owner) {
   std::size_t passed = 0;
   rasterizeTriangle(t, tile, [&](int x, int y, Real l0, Real l1, Real l2) {
     const Real z = l0 * t.z[0] + l1 * t.z[1] + l2 * t.z[2];
@@ -18,6 +18,7 @@ std::size_t rasterizeDepth(const TriangleSetup& t, const PixelRect& tile, Real* 
     if (!(z < depth[at])) return;
     depth[at] = z;
     winners[at] = slot;
+    if (owner) owner[at] = kNoWinner;
     ++passed;
   });
   return passed;
@@ -326,18 +327,19 @@ HWY_INLINE std::size_t DepthPass(const TriangleSetup& t, const PixelRect& tile, 
   return DepthPass<false>(t, tile, depth, write);
 }
 
-std::size_t RasterizeDepth(const TriangleSetup& t, const PixelRect& tile, Real* depth, std::uint32_t slot,
-                           std::uint32_t* winners) {
-  return DepthPass(t, tile, depth, [&](int at, auto pass, auto l0, auto, auto) {
-    const hn::Rebind<std::uint32_t, hn::DFromV<decltype(l0)>> du;
-    hn::BlendedStore(hn::Set(du, slot), hn::RebindMask(du, pass), du, winners + at);
-  });
-}
-
-// A pixel coloured here shows no record of the winners' pass any more.
+// A pixel drawn here shows nothing another route kept there (a record, an owner) any more.
 template <class DU, class M>
 HWY_INLINE void ClearWinners(DU du, std::uint32_t* winners, int at, M pass) {
   if (winners) hn::BlendedStore(hn::Set(du, kNoWinner), hn::RebindMask(du, pass), du, winners + at);
+}
+
+std::size_t RasterizeDepth(const TriangleSetup& t, const PixelRect& tile, Real* depth, std::uint32_t slot,
+                           std::uint32_t* winners, std::uint32_t* owner) {
+  return DepthPass(t, tile, depth, [&](int at, auto pass, auto l0, auto, auto) {
+    const hn::Rebind<std::uint32_t, hn::DFromV<decltype(l0)>> du;
+    hn::BlendedStore(hn::Set(du, slot), hn::RebindMask(du, pass), du, winners + at);
+    ClearWinners(du, owner, at, pass);
+  });
 }
 
 std::size_t RasterizeFlat(const TriangleSetup& t, const PixelRect& tile, Real* depth, std::uint32_t* color,
@@ -532,7 +534,7 @@ std::size_t CoverTinySurface(const TriangleSetup& t, const SurfaceVertices& v, s
 }
 
 std::size_t RasterizeSurface(const TriangleSetup& t, const PixelRect& tile, Real* depth, const SurfaceVertices& v,
-                             const SurfaceTile& out) {
+                             const SurfaceTile& out, std::uint32_t* winners) {
   // The planes of the pixels where `pass` (per half: StoreRows) holds.
   const auto keep = [&](const auto& store, auto l0, auto l1, auto l2) {
     using V = decltype(l0);
@@ -546,6 +548,7 @@ std::size_t RasterizeSurface(const TriangleSetup& t, const PixelRect& tile, Real
   const auto owner = [&](auto dr, int at, auto pass) {
     const hn::Rebind<std::uint32_t, decltype(dr)> du;
     hn::BlendedStore(hn::Set(du, v.owner), hn::RebindMask(du, pass), du, out.owner + at);
+    ClearWinners(du, winners, at, pass);
   };
   const auto narrow = [&](int at, auto pass, auto l0, auto l1, auto l2) {
     const hn::DFromV<decltype(l0)> dr;
@@ -812,8 +815,8 @@ std::size_t rasterizeSamplesColored(const TriangleSetup& t, const PixelRect& til
 }
 
 std::size_t rasterizeDepth(const TriangleSetup& t, const PixelRect& tile, Real* depth, std::uint32_t slot,
-                           std::uint32_t* winners) {
-  return HWY_DYNAMIC_DISPATCH(RasterizeDepth)(t, tile, depth, slot, winners);
+                           std::uint32_t* winners, std::uint32_t* owner) {
+  return HWY_DYNAMIC_DISPATCH(RasterizeDepth)(t, tile, depth, slot, winners, owner);
 }
 
 std::size_t rasterizeFlat(const TriangleSetup& t, const PixelRect& tile, Real* depth, std::uint32_t* color,
@@ -827,8 +830,8 @@ std::size_t rasterizeGouraud(const TriangleSetup& t, const PixelRect& tile, Real
 }
 
 std::size_t rasterizeSurface(const TriangleSetup& t, const PixelRect& tile, Real* depth, const SurfaceVertices& v,
-                             const SurfaceTile& out) {
-  return HWY_DYNAMIC_DISPATCH(RasterizeSurface)(t, tile, depth, v, out);
+                             const SurfaceTile& out, std::uint32_t* winners) {
+  return HWY_DYNAMIC_DISPATCH(RasterizeSurface)(t, tile, depth, v, out, winners);
 }
 
 std::size_t coverTinyFlat(const TriangleSetup& t, std::uint32_t packed, std::uint32_t recordsBefore, TinyFragment* out) {

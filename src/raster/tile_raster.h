@@ -23,9 +23,10 @@ constexpr std::uint32_t kNoWinner = 0xFFFFFFFF;
 // GL_LESS against the tile's depths (kTileSize² of them, the tile's bottom-left pixel first); where
 // a fragment passes, its depth is stored and `slot` written to `winners` (the same layout), so that
 // afterwards each pixel names the triangle it shows. `tile` is the tile's rectangle, clipped to the
-// viewport. Returns the number of fragments that passed.
+// viewport; where it passes, the visible surface's owner (SurfaceTile), unless null, is cleared.
+// Returns the number of fragments that passed.
 std::size_t rasterizeDepth(const TriangleSetup& t, const PixelRect& tile, Real* depth, std::uint32_t slot,
-                           std::uint32_t* winners);
+                           std::uint32_t* winners, std::uint32_t* owner = nullptr);
 
 // A tiny triangle (isTiny: bounds of a few pixels) is worked out as soon as it is set up, without
 // a record, in each tile its bounds overlap (forEachTilePiece): coverTiny* write its covered pixels
@@ -114,9 +115,10 @@ struct SurfaceVertices {
 };
 
 // Where the depth test passes: the perspective-correct position, the renormalized normal and the
-// colour (exactly as phongSurface in fragment.h computes them) and the owner.
+// colour (exactly as phongSurface in fragment.h computes them) and the owner; `winners`, unless
+// null, cleared there.
 std::size_t rasterizeSurface(const TriangleSetup& t, const PixelRect& tile, Real* depth, const SurfaceVertices& v,
-                             const SurfaceTile& out);
+                             const SurfaceTile& out, std::uint32_t* winners = nullptr);
 std::size_t coverTinySurface(const TriangleSetup& t, const SurfaceVertices& v, std::uint32_t recordsBefore,
                              TinySurface* out);
 #endif  // !ILLUM_USE_DOUBLE

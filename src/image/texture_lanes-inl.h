@@ -1,0 +1,107 @@
+// Texture::sample over SIMD lanes (Highway, included once per target by the kernels that shade
+// textured pixels): GL_LINEAR_MIPMAP_LINEAR with GL_REPEAT, each lane its own uv and footprint,
+// with the same operations in the same order as the one-texel sampler (texture.cpp), so every
+// lane's texel is the bits Texture::sample gives. The mip level's log2 is taken per lane with
+// std::log2 (a vector log2 would round differently).
+
+#if defined(ILLUM_IMAGE_TEXTURE_LANES_INL_H_) == defined(HWY_TARGET_TOGGLE)
+#ifdef ILLUM_IMAGE_TEXTURE_LANES_INL_H_
+#undef ILLUM_IMAGE_TEXTURE_LANES_INL_H_
+#else
+#define ILLUM_IMAGE_TEXTURE_LANES_INL_H_
+#endif
+
+#include <hwy/highway.h>
+
+#include <illum/texture.h>
+
+#include <cmath>
+#include <cstdint>
+
+HWY_BEFORE_NAMESPACE();
+namespace illum::HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+// Texture::sampleLevel of one level in the lanes of `active` (the others read a valid texel and
+// are left to the caller).
+template <class D, class V = hn::VFromD<D>, class M>
+HWY_INLINE void SampleLevelLanes(D d, const Texture& texture, int levelIndex, V u, V v, M active, V (&out)[4]) {
+  const hn::RebindToSigned<D> di;
+  const hn::RebindToUnsigned<D> du;
+  const Image& level = texture.level(levelIndex);
+  const int width = level.width, height = level.height;
+  // GL_REPEAT, then GL_LINEAR: the four texels around (u·w − 0.5, v·h − 0.5).
+  const V half = hn::Set(d, Real(0.5)), one = hn::Set(d, Real(1));
+  const V uf = u - hn::Floor(u), vf = v - hn::Floor(v);
+  const V x = uf * hn::Set(d, Real(width)) - half, y = vf * hn::Set(d, Real(height)) - half;
+  const V fx = hn::Floor(x), fy = hn::Floor(y);
+  const V ax = x - fx, ay = y - fy;
+  const auto wrap = [&](auto i, int n) {
+    const auto vn = hn::Set(di, n);
+    i = hn::IfThenElse(i < hn::Zero(di), i + vn, i);
+    return hn::IfThenElse(hn::Not(i < vn), i - vn, i);
+  };
+  const auto ix = hn::ConvertTo(di, fx), iy = hn::ConvertTo(di, fy);
+  const auto x0 = wrap(ix, width), x1 = wrap(ix + hn::Set(di, 1), width);
+  const auto y0 = wrap(iy, height), y1 = wrap(iy + hn::Set(di, 1), height);
+  // Texel (x, GL row r) is the image's pixel (x, height − 1 − r); inactive lanes read texel 0.
+  const auto activeI = hn::RebindMask(di, active);
+  const auto rowStart = [&](auto r) { return (hn::Set(di, height - 1) - r) * hn::Set(di, width); };
+  const auto* words = reinterpret_cast<const std::uint32_t*>(level.rgba.data());
+  const Real* color = texture.colorTable();
+  const Real* alpha = Texture::alphaTable();
+  const auto texel = [&](auto xi, auto row, V (&t)[4]) {
+    const auto index = hn::IfThenElseZero(activeI, row + xi);
+    const auto word = hn::BitCast(di, hn::GatherIndex(du, words, index));
+    const auto mask = hn::Set(di, 0xFF);
+    const decltype(word) bytes[4] = {hn::And(word, mask), hn::And(hn::ShiftRight<8>(word), mask),
+                                     hn::And(hn::ShiftRight<16>(word), mask), hn::And(hn::ShiftRight<24>(word), mask)};
+    for (int c = 0; c < 4; ++c) t[c] = hn::GatherIndex(d, c == 3 ? alpha : color, bytes[c]);
+  };
+  V t00[4], t10[4], t01[4], t11[4];
+  const auto r0 = rowStart(y0), r1 = rowStart(y1);
+  texel(x0, r0, t00);
+  texel(x1, r0, t10);
+  texel(x0, r1, t01);
+  texel(x1, r1, t11);
+  const V bx = one - ax, by = one - ay;
+  for (int c = 0; c < 4; ++c) out[c] = by * (bx * t00[c] + ax * t10[c]) + ay * (bx * t01[c] + ax * t11[c]);
+}
+
+// Texture::sample: each lane's texel at (u, v) for a footprint of `texelsPerPixel` base texels.
+template <class D, class V = hn::VFromD<D>>
+HWY_INLINE void SampleTextureLanes(D d, const Texture& texture, V u, V v, V texelsPerPixel, V (&out)[4]) {
+  const hn::RebindToSigned<D> di;
+  constexpr std::size_t kMaxLanes = hn::MaxLanes(D());
+  const V one = hn::Set(d, Real(1));
+  // The level: log2 of the footprint, per lane as std::log2 rounds it.
+  HWY_ALIGN Real footprint[kMaxLanes], lod[kMaxLanes];
+  hn::Store(texelsPerPixel, d, footprint);
+  for (std::size_t i = 0; i < hn::Lanes(d); ++i) lod[i] = footprint[i] > 1 ? std::log2(footprint[i]) : Real(0);
+  const V clamped = hn::Min(hn::Load(d, lod), hn::Set(d, Real(texture.levelCount() - 1)));
+  const V floorLevel = hn::Floor(clamped);
+  const V t = clamped - floorLevel;
+  const auto level = hn::ConvertTo(di, floorLevel);
+  const auto finite = hn::And(hn::IsFinite(u), hn::IsFinite(v));
+  for (int c = 0; c < 4; ++c) out[c] = one;  // a uv that is not finite samples white, as Texture::sample
+  // One level (pair) at a time: the lanes of a surface mostly share it.
+  auto pending = finite;
+  while (!hn::AllFalse(d, pending)) {
+    const std::size_t lane = std::size_t(hn::FindFirstTrue(d, pending));
+    const int l0 = hn::ExtractLane(level, lane);
+    const auto these = hn::And(pending, hn::RebindMask(d, level == hn::Set(di, l0)));
+    pending = hn::AndNot(these, pending);
+    V s0[4], s1[4];
+    SampleLevelLanes(d, texture, l0, u, v, these, s0);
+    // (t = 0 at the last level: its next one is never needed.)
+    SampleLevelLanes(d, texture, std::min(l0 + 1, texture.levelCount() - 1), u, v, these, s1);
+    const auto exact = t == hn::Zero(d);
+    for (int c = 0; c < 4; ++c)
+      out[c] = hn::IfThenElse(these, hn::IfThenElse(exact, s0[c], (one - t) * s0[c] + t * s1[c]), out[c]);
+  }
+}
+
+}  // namespace illum::HWY_NAMESPACE
+HWY_AFTER_NAMESPACE();
+
+#endif  // ILLUM_IMAGE_TEXTURE_LANES_INL_H_
