@@ -49,14 +49,18 @@ HWY_INLINE void SampleLevelLanes(D d, const Texture& texture, int levelIndex, V 
   const auto rowStart = [&](auto r) { return (hn::Set(di, height - 1) - r) * hn::Set(di, width); };
   const auto* words = reinterpret_cast<const std::uint32_t*>(level.rgba.data());
   const Real* color = texture.colorTable();
-  const Real* alpha = Texture::alphaTable();
+  const bool linear = texture.encoding() == TexelEncoding::Linear;
+  const V max = hn::Set(d, Real(255));
   const auto texel = [&](auto xi, auto row, V (&t)[4]) {
     const auto index = hn::IfThenElseZero(activeI, row + xi);
     const auto word = hn::BitCast(di, hn::GatherIndex(du, words, index));
     const auto mask = hn::Set(di, 0xFF);
     const decltype(word) bytes[4] = {hn::And(word, mask), hn::And(hn::ShiftRight<8>(word), mask),
                                      hn::And(hn::ShiftRight<16>(word), mask), hn::And(hn::ShiftRight<24>(word), mask)};
-    for (int c = 0; c < 4; ++c) t[c] = hn::GatherIndex(d, c == 3 ? alpha : color, bytes[c]);
+    // A linear byte's value is byte/255, as the table holds it (one division, rounded alike);
+    // sRGB colour bytes are looked up.
+    for (int c = 0; c < 4; ++c)
+      t[c] = c == 3 || linear ? hn::ConvertTo(d, bytes[c]) / max : hn::GatherIndex(d, color, bytes[c]);
   };
   V t00[4], t10[4], t01[4], t11[4];
   const auto r0 = rowStart(y0), r1 = rowStart(y1);
@@ -76,9 +80,13 @@ HWY_INLINE void SampleTextureLanes(D d, const Texture& texture, V u, V v, V texe
   const V one = hn::Set(d, Real(1));
   // The level: log2 of the footprint, per lane as std::log2 rounds it.
   HWY_ALIGN Real footprint[kMaxLanes], lod[kMaxLanes];
-  hn::Store(texelsPerPixel, d, footprint);
-  for (std::size_t i = 0; i < hn::Lanes(d); ++i) lod[i] = footprint[i] > 1 ? std::log2(footprint[i]) : Real(0);
-  const V clamped = hn::Min(hn::Load(d, lod), hn::Set(d, Real(texture.levelCount() - 1)));
+  V levels = hn::Zero(d);
+  if (!hn::AllFalse(d, texelsPerPixel > one)) {  // (magnified everywhere: level 0)
+    hn::Store(texelsPerPixel, d, footprint);
+    for (std::size_t i = 0; i < hn::Lanes(d); ++i) lod[i] = footprint[i] > 1 ? std::log2(footprint[i]) : Real(0);
+    levels = hn::Load(d, lod);
+  }
+  const V clamped = hn::Min(levels, hn::Set(d, Real(texture.levelCount() - 1)));
   const V floorLevel = hn::Floor(clamped);
   const V t = clamped - floorLevel;
   const auto level = hn::ConvertTo(di, floorLevel);
@@ -93,9 +101,13 @@ HWY_INLINE void SampleTextureLanes(D d, const Texture& texture, V u, V v, V texe
     pending = hn::AndNot(these, pending);
     V s0[4], s1[4];
     SampleLevelLanes(d, texture, l0, u, v, these, s0);
-    // (t = 0 at the last level: its next one is never needed.)
-    SampleLevelLanes(d, texture, std::min(l0 + 1, texture.levelCount() - 1), u, v, these, s1);
+    // Lanes at a level exactly (t = 0: magnified, or at the last level) need no second one.
     const auto exact = t == hn::Zero(d);
+    if (hn::AllTrue(d, hn::Or(exact, hn::Not(these)))) {
+      for (int c = 0; c < 4; ++c) out[c] = hn::IfThenElse(these, s0[c], out[c]);
+      continue;
+    }
+    SampleLevelLanes(d, texture, std::min(l0 + 1, texture.levelCount() - 1), u, v, these, s1);
     for (int c = 0; c < 4; ++c)
       out[c] = hn::IfThenElse(these, hn::IfThenElse(exact, s0[c], (one - t) * s0[c] + t * s1[c]), out[c]);
   }

@@ -95,9 +95,7 @@ void colorWinners(const DrawTarget& target, std::span<const DrawRecord* const> r
                   TileScratch& scratch, const SampleTiles& tiles) {
   const VisibleSamples out{tiles.count, tiles.color, scratch.winners.data()};
   VisibleShader shader(target, records, rect, scratch.visible(), out);
-  for (int i = 0; i < kTileSize * kTileSize; ++i)
-    out.forEachShown(i, [&](int index, std::uint32_t slot) { shader.add(index, slot); });
-  shader.flush();
+  shader.shadeAll(scratch.shown);
 }
 
 // Multisampling in one pass: each record's coverage and depth tested at every sample of its

@@ -8,6 +8,7 @@
 #pragma once
 
 #include "raster/draw.h"
+#include "raster/shade_visible.h"
 #include "raster/tile_raster.h"
 #include "raster/tiny_fragment.h"
 
@@ -28,7 +29,6 @@ struct SampleTiles {
 };
 
 // One thread's working memory for a tile, reused from tile to tile.
-struct VisibleBatch;
 
 struct TileScratch {
   // The record each sample shows (the framebuffer's layout, padding included), kNoWinner between tiles.
@@ -39,8 +39,9 @@ struct TileScratch {
   TileMemory pixels;  // a tile drawn straight into the image (Framebuffer::lendTile)
   TileScratch();
   ~TileScratch();
-  // The deferred colours' batch (shade_visible.h).
+  // The deferred colours' batch and lists (shade_visible.h).
   VisibleBatch& visible() { return *visible_; }
+  ShownLists shown;
   // Room for `samples` samples per pixel.
   void reserveSamples(int samples) {
     if (winners.size() < std::size_t(samples) * kTileBlock) winners.resize(std::size_t(samples) * kTileBlock, kNoWinner);

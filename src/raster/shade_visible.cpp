@@ -1,5 +1,5 @@
 // shade_visible.h: the lanes' part compiled once per SIMD target (Highway's foreach_target) and
-// dispatched at run time; the batches gathered and written back (HWY_ONCE).
+// dispatched at run time; the records gathered, lit and written back (HWY_ONCE).
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "raster/shade_visible.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
@@ -10,32 +10,33 @@
 #include "raster/interpolate-inl.h"
 #include "raster/shade_visible.h"
 
+#include <algorithm>
+
 HWY_BEFORE_NAMESPACE();
 namespace illum::HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
-// The layout's texel at each lane's pixel: its uv, and how uv changes one pixel right and one up
+// The record's texel at each lane's pixel: its uv, and how uv changes one pixel right and one up
 // (texturePoint), trilinearly filtered for that footprint (sampleAt).
 template <class D, class V = hn::VFromD<D>>
-HWY_INLINE void TexelLanes(D d, const VisibleLayout& layout, const VisibleBatch& b, std::size_t i, const V (&l)[3],
-                           const V (&invW)[3], const V (&p)[3], V (&texel)[4]) {
-  const auto load = [&](const Real* a) { return hn::Load(d, a + i); };
-  V uv[2][3];  // channel, vertex
-  for (int c = 0; c < 2; ++c)
-    for (int k = 0; k < 3; ++k) uv[c][k] = load(b.vertex[k][layout.uv + c]);
+HWY_INLINE void TexelLanes(D d, const VisibleLayout& layout, const ShownRecord& rec, const V (&l)[3], const V (&invW)[3],
+                           const V (&p)[3], V (&texel)[4]) {
   const auto uvAt = [&](const V (&w)[3], V (&out)[2]) {
-    for (int c = 0; c < 2; ++c) out[c] = Blend(w, uv[c][0], uv[c][1], uv[c][2]);
+    for (int c = 0; c < 2; ++c)
+      out[c] = Blend(w, hn::Set(d, rec.vertex[0][layout.uv + c]), hn::Set(d, rec.vertex[1][layout.uv + c]),
+                     hn::Set(d, rec.vertex[2][layout.uv + c]));
   };
   V at[2];
   uvAt(p, at);
   V length[2];
-  const Real size[2] = {Real(layout.texture->width()), Real(layout.texture->height())};
+  const V size[2] = {hn::Set(d, Real(layout.texture->width())), hn::Set(d, Real(layout.texture->height()))};
   for (int axis = 0; axis < 2; ++axis) {
-    const Real(&step)[3][VisibleBatch::kSize] = axis == 0 ? b.stepX : b.stepY;
+    const Real(&step)[3] = axis == 0 ? rec.stepX : rec.stepY;
     V w[3], moved[2];
-    PerspectiveWeights(l[0] + load(step[0]), l[1] + load(step[1]), l[2] + load(step[2]), invW[0], invW[1], invW[2], w);
+    PerspectiveWeights(l[0] + hn::Set(d, step[0]), l[1] + hn::Set(d, step[1]), l[2] + hn::Set(d, step[2]), invW[0],
+                       invW[1], invW[2], w);
     uvAt(w, moved);
-    const V x = (moved[0] - at[0]) * hn::Set(d, size[0]), y = (moved[1] - at[1]) * hn::Set(d, size[1]);
+    const V x = (moved[0] - at[0]) * size[0], y = (moved[1] - at[1]) * size[1];
     length[axis] = hn::Sqrt(x * x + y * y);
   }
   const V footprint = hn::IfThenElse(length[0] < length[1], length[1], length[0]);  // std::max's choice
@@ -52,44 +53,117 @@ HWY_INLINE void TexelLanes(D d, const VisibleLayout& layout, const VisibleBatch&
 #endif
 }
 
-void InterpolateVisible(const VisibleLayout& layout, VisibleBatch& b) {
-  const hn::ScalableTag<Real> d;
-  using V = hn::VFromD<decltype(d)>;
-  const hn::RebindToUnsigned<decltype(d)> du;
-  const V one = hn::Set(d, Real(1));
-  for (std::size_t i = 0; i < b.count; i += hn::Lanes(d)) {
-    const auto load = [&](const Real* a) { return hn::Load(d, a + i); };
-    const auto vertex = [&](int k, int value) { return load(b.vertex[k][value]); };
-    const auto blend = [&](const V (&p)[3], int value) { return Blend(p, vertex(0, value), vertex(1, value), vertex(2, value)); };
-    const V l[3] = {load(b.l[0]), load(b.l[1]), load(b.l[2])};
-    const V invW[3] = {load(b.invW[0]), load(b.invW[1]), load(b.invW[2])};
-    V p[3];
+// gatherShown over lanes `d` of the edge values: kSplit float lanes (a multiple of 256 plus the
+// rest, exact while every part stays below 2^31, as SamplesPassIn keeps them), else double lanes.
+// Each lane's edge values are the first pixel's plus dx·256a + dy·256b, exact integers.
+template <bool kSplit, class D>
+HWY_INLINE void GatherShownIn(D d, const VisibleLayout& layout, const ShownRecord& rec, const PixelRect& rect,
+                              const std::uint32_t* pixels, std::size_t count, VisibleBatch& b) {
+  const TriangleSetup& t = *rec.setup;
+  using T = hn::TFromD<D>;
+  const hn::Rebind<Real, D> dr;
+  const hn::Rebind<std::uint32_t, D> du;
+  const hn::Rebind<std::int32_t, D> di;
+  using VR = hn::VFromD<decltype(dr)>;
+  const auto toReal = [&](hn::VFromD<D> v) {
+    if constexpr (sizeof(T) == sizeof(Real)) return v;
+    else return hn::DemoteTo(dr, v);
+  };
+  const auto toT = [&](auto i) {  // int32 lanes → the edge values' lanes, exactly
+    if constexpr (sizeof(T) == 4) return hn::ConvertTo(d, i);
+    else return hn::ConvertTo(d, hn::PromoteTo(hn::Rebind<std::int64_t, D>(), i));
+  };
+  // The first pixel's edge values (split: its multiple of 256, and the rest), and the steps.
+  const int x0 = rect.minX + int(pixels[0] % kTileSize), y0 = rect.minY + int(pixels[0] / kTileSize);
+  const std::int64_t half = kSubpixelOne / 2;
+  hn::VFromD<D> high[3], low[3], A[3], B[3];
+  for (int i = 0; i < 3; ++i) {
+    const std::int64_t e = t.edge[i].at(std::int64_t(x0) * kSubpixelOne + half, std::int64_t(y0) * kSubpixelOne + half);
+    const std::int64_t rest = kSplit ? (e & (kSubpixelOne - 1)) : 0;
+    high[i] = hn::Set(d, T(e - rest));
+    low[i] = hn::Set(d, T(rest));
+    A[i] = hn::Set(d, T(std::int64_t(t.edge[i].a) * kSubpixelOne));
+    B[i] = hn::Set(d, T(std::int64_t(t.edge[i].b) * kSubpixelOne));
+  }
+  const VR invArea = hn::Set(dr, t.invArea), one = hn::Set(dr, Real(1));
+  const VR invW[3] = {hn::Set(dr, t.invW[0]), hn::Set(dr, t.invW[1]), hn::Set(dr, t.invW[2])};
+  const auto vertex = [&](int k, int value) { return hn::Set(dr, rec.vertex[k][value]); };
+  const auto blend = [&](const VR (&p)[3], int value) { return Blend(p, vertex(0, value), vertex(1, value), vertex(2, value)); };
+  const auto negate = hn::FirstN(dr, rec.negate ? hn::Lanes(dr) : 0);
+  const auto column0 = hn::Set(di, x0 - rect.minX), row0 = hn::Set(di, y0 - rect.minY);
+  const std::size_t lanes = hn::Lanes(d);
+  for (std::size_t i = 0; i < count; i += lanes) {
+    const auto shown = hn::FirstN(dr, count - i);
+    const auto index = hn::LoadU(du, pixels + i);  // (the list has room for a vector past its end)
+    const auto indexI = hn::BitCast(di, index);
+    const auto dx = toT(hn::And(indexI, hn::Set(di, kTileSize - 1)) - column0);
+    const auto dy = toT(hn::ShiftRight<6>(indexI) - row0);
+    static_assert(kTileSize == 64);
+    // The centres' barycentrics, as the rasterizer computes them.
+    VR l[3];
+    for (int e = 0; e < 3; ++e) {
+      const auto offset = dx * A[e] + dy * B[e];  // a multiple of 256, exact
+      l[e] = (kSplit ? toReal((high[e] + offset) + low[e]) : toReal(high[e] + offset)) * invArea;
+    }
+    VR p[3];
     PerspectiveWeights(l[0], l[1], l[2], invW[0], invW[1], invW[2], p);
-    V color[4];
-    for (int c = 0; c < 4; ++c) color[c] = load(b.color[c]);  // flat: the provoking vertex's, as gathered
-    if (layout.shading == Shading::Gouraud) {
+    VR color[4];
+    const std::size_t at = b.count;
+    // (Compressed in a register and stored whole: the batch has room for a vector past its end,
+    // and a compressing store to memory is slow on some CPUs.)
+    const auto keep = [&](VR v, Real* plane) { hn::StoreU(hn::Compress(v, shown), dr, plane + at); };
+    if (layout.shading == Shading::Flat) {
+      for (int c = 0; c < 4; ++c) color[c] = hn::Set(dr, rec.flat[c]);
+    } else if (layout.shading == Shading::Gouraud) {
       for (int c = 0; c < 4; ++c) color[c] = blend(p, layout.lit + c);
-    } else if (layout.shading == Shading::Phong) {
-      V n[3], unit[3];
+    } else {
+      VR n[3], unit[3];
       for (int c = 0; c < 3; ++c) {
-        hn::Store(blend(p, layout.position + c), d, b.position[c] + i);
+        keep(blend(p, layout.position + c), b.position[c]);
         n[c] = blend(p, layout.normal + c);
       }
-      UnitNormal(n, hn::RebindMask(d, hn::Ne(hn::Load(du, b.negate + i), hn::Zero(du))), unit);
-      for (int c = 0; c < 3; ++c) hn::Store(unit[c], d, b.normal[c] + i);
+      UnitNormal(n, negate, unit);
+      for (int c = 0; c < 3; ++c) keep(unit[c], b.normal[c]);
       for (int c = 0; c < 4; ++c) color[c] = layout.color >= 0 ? blend(p, layout.color + c) : one;
     }
     if (layout.texture) {
-      V texel[4];
-      TexelLanes(d, layout, b, i, l, invW, p, texel);
-      for (int c = 0; c < 4; ++c) hn::Store(texel[c], d, b.texel[c] + i);
+      VR texel[4];
+      TexelLanes(dr, layout, rec, l, invW, p, texel);
+      for (int c = 0; c < 4; ++c) keep(texel[c], b.texel[c]);
       // A base colour texture tints the material's (or the vertex's) colour before lighting.
       if (layout.baseTexel)
         for (int c = 0; c < 4; ++c)
-          color[c] = (layout.color >= 0 ? color[c] : hn::Set(d, layout.baseColor[c])) * texel[c];
+          color[c] = (layout.color >= 0 ? color[c] : hn::Set(dr, layout.baseColor[c])) * texel[c];
     }
-    for (int c = 0; c < 4; ++c) hn::Store(color[c], d, b.color[c] + i);
+    for (int c = 0; c < 4; ++c) keep(color[c], b.color[c]);
+    hn::StoreU(index, du, b.pixel + at);
+    const std::size_t n = std::min(lanes, count - i);
+    std::fill_n(b.slot + at, n, rec.slot);
+    b.count += n;
   }
+}
+
+void GatherShown(const VisibleLayout& layout, const ShownRecord& rec, const PixelRect& rect, const std::uint32_t* pixels,
+                 std::size_t count, VisibleBatch& b) {
+  if (count == 0) return;
+#if HWY_TARGET != HWY_SCALAR
+  if (sizeof(Real) == 4) {
+    // Every edge value over the record's pixels in the tile, and the parts it is summed from,
+    // below 2^31.
+    const TriangleSetup& t = *rec.setup;
+    const int minX = std::max(t.minX, rect.minX), maxX = std::min(t.maxX, rect.maxX);
+    const int minY = std::max(t.minY, rect.minY), maxY = std::min(t.maxY, rect.maxY);
+    bool split = true;
+    const std::int64_t half = kSubpixelOne / 2, limit = (std::int64_t(1) << 31) - 4 * kSubpixelOne;
+    for (const EdgeFunction& e : t.edge) {
+      const std::int64_t a = std::abs(std::int64_t(e.a)), bb = std::abs(std::int64_t(e.b));
+      const std::int64_t first = e.at(std::int64_t(minX) * kSubpixelOne + half, std::int64_t(minY) * kSubpixelOne + half);
+      split = split && std::abs(first) + 2 * (a * (maxX - minX) + bb * (maxY - minY)) * kSubpixelOne <= limit;
+    }
+    if (split) return GatherShownIn<true>(hn::ScalableTag<float>(), layout, rec, rect, pixels, count, b);
+  }
+#endif
+  GatherShownIn<false>(hn::ScalableTag<double>(), layout, rec, rect, pixels, count, b);
 }
 
 void FinishVisible(const VisibleLayout& layout, VisibleBatch& b) {
@@ -107,7 +181,7 @@ void FinishVisible(const VisibleLayout& layout, VisibleBatch& b) {
 #else
     HWY_ALIGN Real out[4][hn::MaxLanes(d)];
     for (int k = 0; k < 4; ++k) hn::Store(c[k], d, out[k]);
-    for (std::size_t k = 0; k < hn::Lanes(d) && i + k < VisibleBatch::kSize; ++k)
+    for (std::size_t k = 0; k < hn::Lanes(d) && i + k < b.count; ++k)
       b.rgba[i + k] = packUnorm8(Color4(out[0][k], out[1][k], out[2][k], out[3][k]));
 #endif
   }
@@ -120,15 +194,14 @@ HWY_AFTER_NAMESPACE();
 #include "raster/fragment.h"
 #include "shading/shade_points.h"
 
-#include <algorithm>
-
 namespace illum {
 
-HWY_EXPORT(InterpolateVisible);
+HWY_EXPORT(GatherShown);
 HWY_EXPORT(FinishVisible);
 
-void interpolateVisible(const VisibleLayout& layout, VisibleBatch& batch) {
-  HWY_DYNAMIC_DISPATCH(InterpolateVisible)(layout, batch);
+void gatherShown(const VisibleLayout& layout, const ShownRecord& record, const PixelRect& rect,
+                 const std::uint32_t* pixels, std::size_t count, VisibleBatch& batch) {
+  HWY_DYNAMIC_DISPATCH(GatherShown)(layout, record, rect, pixels, count, batch);
 }
 
 void finishVisible(const VisibleLayout& layout, VisibleBatch& batch) {
@@ -137,7 +210,7 @@ void finishVisible(const VisibleLayout& layout, VisibleBatch& batch) {
 
 namespace {
 
-// Where an object's per-vertex values go in a batch, for the frame's shading.
+// Where an object's per-vertex values go in a ShownRecord, for the frame's shading.
 VisibleLayout layoutOf(const FrameContext& frame, const Object& object) {
   VisibleLayout v;
   v.shading = frame.shading;
@@ -162,58 +235,82 @@ VisibleLayout layoutOf(const FrameContext& frame, const Object& object) {
 
 }  // namespace
 
-void VisibleShader::add(int index, std::uint32_t slot) {
+void VisibleShader::shadeAll(ShownLists& lists) {
+  // Count each record's pixels, then lay them out record by record.
+  const std::size_t n = records_.size();
+  lists.start.assign(n + 1, 0);
+  const int pixels = kTileSize * kTileSize;
+  if (out_.count == 1) {
+    for (int i = 0; i < pixels; ++i)
+      if (out_.winners[i] != kNoWinner) ++lists.start[out_.winners[i] + 1];
+  } else {
+    for (int i = 0; i < pixels; ++i) out_.forEachShown(i, [&](int, std::uint32_t slot) { ++lists.start[slot + 1]; });
+  }
+  for (std::size_t r = 0; r < n; ++r) lists.start[r + 1] += lists.start[r];
+  if (lists.start[n] == 0) return;
+  lists.pixels.resize(lists.start[n] + 16);  // room for a vector read past the last
+  std::vector<std::uint32_t>& next = lists.start;  // moved to each record's end, then back
+  if (out_.count == 1) {
+    for (int i = 0; i < pixels; ++i)
+      if (out_.winners[i] != kNoWinner) lists.pixels[next[out_.winners[i]]++] = std::uint32_t(i);
+  } else {
+    for (int i = 0; i < pixels; ++i)
+      out_.forEachShown(i, [&](int index, std::uint32_t slot) { lists.pixels[next[slot]++] = std::uint32_t(index); });
+  }
+  for (std::size_t r = n; r > 0; --r) next[r] = next[r - 1];
+  next[0] = 0;
+  for (std::size_t r = 0; r < n; ++r)
+    if (lists.start[r + 1] > lists.start[r])
+      shade(std::uint32_t(r), lists.pixels.data() + lists.start[r], lists.start[r + 1] - lists.start[r]);
+  flush();
+}
+
+void VisibleShader::shade(std::uint32_t slot, const std::uint32_t* pixels, std::size_t count) {
   const DrawRecord& r = *records_[slot];
   const Object& object = target_.scene.objects[r.object];
-  if (mapsDrawn(object, target_.frame.litPerPixel())) return shadeMapped(object, index, slot, r);
-  if (b_.count == VisibleBatch::kSize || (b_.count > 0 && r.object != object_)) flush();
+  const TriangleSetup& t = r.setup;
+  if (mapsDrawn(object, target_.frame.litPerPixel())) {
+    for (std::size_t k = 0; k < count; ++k) shadeMapped(object, int(pixels[k]), slot, r);
+    return;
+  }
+  if (b_.count > 0 && r.object != object_) flush();
   if (b_.count == 0) {
     object_ = r.object;
     layout_ = layoutOf(target_.frame, object);
   }
-  const std::size_t k = b_.count++;
-  const TriangleSetup& t = r.setup;
-  const int x = rect_.minX + index % kTileSize, y = rect_.minY + index / kTileSize;
-  const std::array<Real, 3> l = centreBarycentrics(t, x, y, target_.frame.sample);
-  for (int i = 0; i < 3; ++i) b_.l[i][k] = l[std::size_t(i)], b_.invW[i][k] = t.invW[std::size_t(i)];
+  ShownRecord rec;
+  rec.setup = &t;
+  rec.slot = slot;
   const AttributeLayout& a = target_.layout(r);
-  for (int i = 0; i < 3; ++i) {
-    const VertexValues v{r.vertex(i, a), a};
+  for (int k = 0; k < 3; ++k) {
+    const VertexValues v{r.vertex(k, a), a};
     const auto put = [&](int at, const auto& value, int n) {
-      if (at >= 0)
-        for (int c = 0; c < n; ++c) b_.vertex[i][at + c][k] = value[c];
+      for (int c = 0; c < n; ++c) rec.vertex[k][at + c] = value[c];
     };
     if (layout_.lit >= 0) put(layout_.lit, v.lit(), 4);
     if (layout_.position >= 0) put(layout_.position, v.position(), 3), put(layout_.normal, v.normal(), 3);
     if (layout_.color >= 0) put(layout_.color, v.color(), 4);
     if (layout_.uv >= 0) put(layout_.uv, v.uv(), 2);
   }
-  if (layout_.shading == Shading::Flat)
-    for (int c = 0; c < 4; ++c) b_.color[c][k] = r.flat[c];
+  rec.flat = r.flat;
+  rec.negate = target_.frame.lightModel.twoSided && !t.frontFacing;
   if (layout_.texture) {
     // Screen-space barycentrics are linear: one pixel right adds a·256/area, one up adds b·256/area.
     const Real step = Real(kSubpixelOne) / Real(t.area2);
     for (int i = 0; i < 3; ++i)
-      b_.stepX[i][k] = Real(t.edge[std::size_t(i)].a) * step, b_.stepY[i][k] = Real(t.edge[std::size_t(i)].b) * step;
+      rec.stepX[i] = Real(t.edge[std::size_t(i)].a) * step, rec.stepY[i] = Real(t.edge[std::size_t(i)].b) * step;
   }
-  b_.negate[k] = target_.frame.lightModel.twoSided && !t.frontFacing ? ~0u : 0u;
-  b_.pixel[k] = std::uint16_t(index);
-  b_.slot[k] = slot;
+  // In pieces that fit in the batch.
+  for (std::size_t done = 0; done < count;) {
+    if (b_.count == VisibleBatch::kSize) flush();
+    const std::size_t piece = std::min(count - done, VisibleBatch::kSize - b_.count);
+    gatherShown(layout_, rec, rect_, pixels + done, piece, b_);
+    done += piece;
+  }
 }
 
 void VisibleShader::flush() {
   if (b_.count == 0) return;
-  // The lanes read whole vectors: the spare ones repeat pair 0 (finite values).
-  const std::size_t padded = std::min(VisibleBatch::kSize, (b_.count + 15) / 16 * 16);
-  for (std::size_t k = b_.count; k < padded; ++k) {
-    for (int i = 0; i < 3; ++i) {
-      b_.l[i][k] = b_.l[i][0], b_.invW[i][k] = b_.invW[i][0], b_.stepX[i][k] = b_.stepX[i][0], b_.stepY[i][k] = b_.stepY[i][0];
-      for (int v = 0; v < VisibleBatch::kValues; ++v) b_.vertex[i][v][k] = b_.vertex[i][v][0];
-    }
-    for (int c = 0; c < 4; ++c) b_.color[c][k] = b_.color[c][0];
-    b_.negate[k] = b_.negate[0];
-  }
-  interpolateVisible(layout_, b_);
   const Object& object = target_.scene.objects[object_];
   if (layout_.shading == Shading::Phong) {
     const ShadeSetup setup{target_.frame.lights, target_.frame.lightModel, modelOf(object.material, target_.frame.model),
@@ -226,26 +323,10 @@ void VisibleShader::flush() {
     Real* const lit[4] = {b_.lit[0], b_.lit[1], b_.lit[2], b_.lit[3]};
     shadePoints(setup, points, lit);
   } else {
-    for (int c = 0; c < 4; ++c) std::copy_n(b_.color[c], padded, b_.lit[c]);
+    for (int c = 0; c < 4; ++c) std::copy_n(b_.color[c], b_.count, b_.lit[c]);
   }
   finishVisible(layout_, b_);
-  // The watched pixel's index in this tile, if it lies here (GL rows run bottom up).
-  int probeIndex = -1;
-  if (const PixelProbe* probe = target_.probe) {
-    const int x = probe->x, y = target_.frame.height - 1 - probe->y;
-    if (x >= rect_.minX && x <= rect_.maxX && y >= rect_.minY && y <= rect_.maxY)
-      probeIndex = (y - rect_.minY) * kTileSize + (x - rect_.minX);
-  }
-  for (std::size_t k = 0; k < b_.count; ++k) {
-    out_.write(b_.pixel[k], b_.slot[k], b_.rgba[k]);
-    if (b_.pixel[k] != probeIndex || !out_.reported(b_.pixel[k], b_.slot[k])) continue;
-    const DrawRecord& r = *records_[b_.slot[k]];
-    const Color4 lit(b_.lit[0][k], b_.lit[1][k], b_.lit[2][k], b_.lit[3][k]);
-    const Vec4 texel(b_.texel[0][k], b_.texel[1][k], b_.texel[2][k], b_.texel[3][k]);
-    const Color4 c = layout_.texture && !layout_.baseTexel ? lit * texel : lit;
-    recordProbe(target_, r, perspectiveWeights(r.setup, b_.l[0][k], b_.l[1][k], b_.l[2][k]), lit,
-                layout_.texture ? &texel : nullptr, c, layout_.baseTexel);
-  }
+  for (std::size_t k = 0; k < b_.count; ++k) out_.write(int(b_.pixel[k]), b_.slot[k], b_.rgba[k]);
   b_.count = 0;
 }
 
@@ -256,12 +337,7 @@ void VisibleShader::shadeMapped(const Object& object, int index, std::uint32_t s
   const MappedSurface surface = mappedSurface(target_.frame, object, r, target_.layout(r), l0, l1, l2);
   const Color4 lit = shadeMappedFragment(target_.frame, surface);
   const Vec4* texel = surface.point.textured ? &surface.point.texel : nullptr;
-  const Color4 c = texel && !surface.point.texelIsBaseColor ? lit * *texel : lit;
-  out_.write(index, slot, packUnorm8(c));
-  if (target_.probe && x == target_.probe->x && y == target_.frame.height - 1 - target_.probe->y &&
-      out_.reported(index, slot))
-    recordProbe(target_, r, perspectiveWeights(r.setup, l0, l1, l2), lit, texel, c, surface.point.texelIsBaseColor,
-                &surface);
+  out_.write(index, slot, packUnorm8(texel && !surface.point.texelIsBaseColor ? lit * *texel : lit));
 }
 
 }  // namespace illum

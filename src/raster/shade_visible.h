@@ -1,10 +1,10 @@
-// The deferred draws' one shade hand-off: the (pixel, record) pairs a tile's pixels show (each
-// record once per pixel, whichever of its samples show it), gathered object by object and
-// coloured in SIMD lanes: the pixel centre's barycentrics → perspective-correct weights → the
-// draw's colour (flat, Gouraud's interpolated one, or Phong's surface lit by shadePoints) → the
-// texel (texture_lanes-inl.h) → GL_MODULATE → RGBA8, written to every sample that shows the
-// record. The same bits as the one-pixel formulas of fragment.h; an object whose glTF maps are
-// drawn is lit pixel by pixel through them.
+// The deferred draws' one shade hand-off: record by record, the pixels of the tile that show it
+// (whichever of their samples do), in SIMD lanes with the record's values broadcast: the pixel
+// centres' barycentrics → perspective-correct weights → the draw's colour (flat, Gouraud's
+// interpolated one, or Phong's surface, lit by shadePoints a batch of the object's pixels at a
+// time) → the texel (texture_lanes-inl.h) → GL_MODULATE → RGBA8, written to every sample that
+// shows the record. The same bits as the one-pixel formulas of fragment.h; an object whose glTF
+// maps are drawn is lit pixel by pixel through them.
 #pragma once
 
 #include "raster/draw.h"
@@ -13,6 +13,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <vector>
 
 namespace illum {
 
@@ -44,55 +45,70 @@ struct VisibleSamples {
   bool reported(int index, std::uint32_t slot) const { return winners[std::size_t(index) * std::size_t(count)] == slot; }
 };
 
-// A batch of pairs of one object, structure of arrays, and what the lanes make of them.
-struct VisibleBatch {
-  static constexpr std::size_t kSize = 256;
-  static constexpr int kValues = 12;  // per vertex, at most: position 3, normal 3, colour 4, uv 2
-  std::size_t count = 0;
-  // Per pair: the pixel centre's screen-space barycentrics, 1/w at the vertices and, for the
-  // texture's footprint, how the barycentrics move one pixel right (a·256/area) and up (b·…).
-  alignas(64) Real l[3][kSize];
-  alignas(64) Real invW[3][kSize];
-  alignas(64) Real stepX[3][kSize];
-  alignas(64) Real stepY[3][kSize];
-  alignas(64) Real vertex[3][kValues][kSize];  // per vertex, the values the layout below names
-  alignas(64) std::uint32_t negate[kSize];     // all ones: a back face under two-sided lighting
-  // Results: the surface (Phong), the colour (flat: as gathered; Gouraud: interpolated; Phong: the
-  // vertex colour, or the base colour tinted by the texel), the texel and the lit colour.
-  alignas(64) Real position[3][kSize];
-  alignas(64) Real normal[3][kSize];
-  alignas(64) Real color[4][kSize];
-  alignas(64) Real texel[4][kSize];
-  alignas(64) Real lit[4][kSize];
-  alignas(64) std::uint32_t rgba[kSize];
-  std::uint16_t pixel[kSize];
-  std::uint32_t slot[kSize];
-};
-
-// What a batch's lanes compute, the same for every pair of the batch (its object's).
+// What the lanes of one record see, the same in every lane: where its per-vertex values sit
+// (VisibleLayout), its geometry, and the values.
 struct VisibleLayout {
   Shading shading = Shading::Phong;
-  int lit = -1, position = -1, normal = -1, color = -1, uv = -1;  // in VisibleBatch::vertex, −1: none
+  int lit = -1, position = -1, normal = -1, color = -1, uv = -1;  // in ShownRecord::vertex, −1: none
   const Texture* texture = nullptr;  // the object's drawn texture
   bool baseTexel = false;            // the texel tints the base colour before lighting
   Color4 baseColor{1};               // the material's base colour and alpha, for baseTexel without vertex colours
 };
 
-// The lanes' part (SIMD, dispatched): weights, colour or surface, texel; then, after lighting,
-// GL_MODULATE and RGBA8.
-void interpolateVisible(const VisibleLayout& layout, VisibleBatch& batch);
+struct ShownRecord {
+  static constexpr int kValues = 12;  // per vertex, at most: position 3, normal 3, colour 4, uv 2
+  const TriangleSetup* setup = nullptr;
+  std::uint32_t slot = 0;
+  Real vertex[3][kValues];  // the values the layout names, vertex by vertex (counter-clockwise)
+  Color4 flat{0};           // flat shading: the provoking vertex's lit colour
+  bool negate = false;      // a back face under two-sided lighting: lit with −N
+  Real stepX[3], stepY[3];  // textured: how the barycentrics move one pixel right (a·256/area) and up (b·…)
+};
+
+// The shown pixels of some records of one object, structure of arrays: their surface (Phong), the
+// colour (flat: the record's; Gouraud: interpolated; Phong: the vertex colour, or the base colour
+// tinted by the texel), the texel, then the lit colour and the RGBA8 word.
+struct VisibleBatch {
+  static constexpr std::size_t kSize = 1024;
+  static constexpr std::size_t kRoom = kSize + 16;  // a vector stored whole past the last pixel
+  std::size_t count = 0;
+  alignas(64) Real position[3][kRoom];
+  alignas(64) Real normal[3][kRoom];
+  alignas(64) Real color[4][kRoom];
+  alignas(64) Real texel[4][kRoom];
+  alignas(64) Real lit[4][kRoom];
+  alignas(64) std::uint32_t rgba[kRoom];
+  alignas(64) std::uint32_t pixel[kRoom];  // index in the tile
+  std::uint32_t slot[kRoom];
+};
+
+// The lanes' part (SIMD, dispatched). gatherShown appends the record's pixels `pixels` (tile
+// indices, `count` of them) of the tile `rect`: their centres' barycentrics exactly as the
+// rasterizer's, the perspective-correct weights, the layout's colour or surface and texel.
+// finishVisible: after lighting, GL_MODULATE and RGBA8.
+void gatherShown(const VisibleLayout& layout, const ShownRecord& record, const PixelRect& rect,
+                 const std::uint32_t* pixels, std::size_t count, VisibleBatch& batch);
 void finishVisible(const VisibleLayout& layout, VisibleBatch& batch);
 
-// Colours each record the tile's pixels show (`out`), object by object in batches.
+// The pixels each record shows in a tile, record by record (a counting sort of the pixels by the
+// records their samples show), reused from tile to tile.
+struct ShownLists {
+  std::vector<std::uint32_t> start;   // per record slot, its first pixel in `pixels`; then the end
+  std::vector<std::uint32_t> pixels;  // tile indices
+};
+
+// Colours the pixels the tile's Deferred records show (`out`), object by object in batches.
 class VisibleShader {
  public:
   VisibleShader(const DrawTarget& target, std::span<const DrawRecord* const> records, const PixelRect& rect,
                 VisibleBatch& batch, const VisibleSamples& out)
       : target_(target), records_(records), rect_(rect), b_(batch), out_(out) {}
-  void add(int index, std::uint32_t slot);
-  void flush();
+  // Every record of the tile that some pixel shows, in submission order.
+  void shadeAll(ShownLists& lists);
 
  private:
+  void shade(std::uint32_t slot, const std::uint32_t* pixels, std::size_t count);
+  void flush();
   void shadeMapped(const Object& object, int index, std::uint32_t slot, const DrawRecord& r);
   const DrawTarget& target_;
   std::span<const DrawRecord* const> records_;

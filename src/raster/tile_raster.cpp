@@ -52,6 +52,7 @@ std::size_t rasterizeSamples(const TriangleSetup& t, const PixelRect& tile, cons
 #include "raster/interpolate-inl.h"
 
 #include "raster/framebuffer.h"
+#include "raster/row_span.h"
 #include "raster/tile_raster.h"
 
 #include <algorithm>
@@ -576,53 +577,6 @@ std::size_t RasterizeSurface(const TriangleSetup& t, const PixelRect& tile, Real
 
 constexpr int kSamplesMax = 16;
 
-// Which pixels of a row may have a sample inside the triangle: for each edge, where its value at
-// the pixel centre plus the largest of its samples' offsets keeps E + bias ≥ 0. E moves by
-// A = 256·a a pixel, so the bound is a quotient: taken in double through 1/A, then checked and
-// moved by a pixel in exact integers.
-struct RowSpans {
-  std::int64_t need[3];  // −(reach + bias): E at the centre must be at least this
-  double inverse[3];     // 1/A, 0 where A = 0
-  RowSpans(const TriangleSetup& t, const std::int64_t (&reach)[3]) {
-    for (int i = 0; i < 3; ++i) {
-      need[i] = -(reach[i] + t.edge[i].bias);
-      const std::int64_t A = std::int64_t(t.edge[i].a) * kSubpixelOne;
-      inverse[i] = A != 0 ? 1.0 / double(A) : 0.0;
-    }
-  }
-  // Narrows [minX, maxX] (pixel centres at fy); false when no pixel is left.
-  bool narrow(const TriangleSetup& t, std::int64_t fy, int& minX, int& maxX) const {
-    const int x0 = minX;
-    const std::int64_t fx = std::int64_t(x0) * kSubpixelOne + kSubpixelOne / 2;
-    for (int i = 0; i < 3; ++i) {
-      const std::int64_t short_ = need[i] - t.edge[i].at(fx, fy);  // what k·A must reach, k pixels on
-      if (t.edge[i].a == 0) {
-        if (short_ > 0) return false;
-        continue;
-      }
-      // The least k with k·A ≥ short for A > 0, the largest for A < 0.
-      const std::int64_t A = std::int64_t(t.edge[i].a) * kSubpixelOne;
-      const double q = double(short_) * inverse[i];
-      if (!(q > -32768 && q < 32768)) {  // the whole row, or none of it
-        if (t.edge[i].a > 0 ? q >= 32768 : q <= -32768) return false;
-        continue;
-      }
-      if (A > 0) {
-        std::int64_t k = std::int64_t(std::ceil(q));
-        if (k * A < short_) ++k;
-        else if ((k - 1) * A >= short_) --k;
-        minX = int(std::max<std::int64_t>(minX, x0 + k));
-      } else {
-        std::int64_t k = std::int64_t(std::floor(q));
-        if (k * A < short_) --k;
-        else if ((k + 1) * A >= short_) ++k;
-        maxX = int(std::min<std::int64_t>(maxX, x0 + k));
-      }
-    }
-    return minX <= maxX;
-  }
-};
-
 // The depth pass at every sample of the triangle's pixels in `tile`. A vector's lanes are a row's
 // samples in the tile's order (SamplePlanes: pixel by pixel, each pixel's samples side by side),
 // so whole vectors load and store; each row only over the pixels that may have a sample inside
@@ -648,15 +602,12 @@ HWY_INLINE std::size_t SamplesPassIn(D d, const TriangleSetup& t, const PixelRec
   // Each sample's offset of each edge value, a·ox + b·oy, split (kSplit) into a multiple of 256
   // and the rest; then the tables of a group's lanes: lane k is sample k mod samples of pixel
   // k / samples.
-  std::int64_t reach[3];
   T sampleHigh[3][kSamplesMax], sampleLow[3][kSamplesMax];
   for (int i = 0; i < 3; ++i) {
     const std::int64_t a = t.edge[i].a, b = t.edge[i].b;
-    reach[i] = std::numeric_limits<std::int64_t>::min();
     for (int s = 0; s < samples; ++s) {
       const std::int64_t offset = a * planes.offsets[s].x + b * planes.offsets[s].y;
       const std::int64_t rest = kSplit ? (offset & (kSubpixelOne - 1)) : 0;
-      reach[i] = std::max(reach[i], offset);
       sampleHigh[i][s] = T(offset - rest);
       sampleLow[i][s] = T(rest);
     }
@@ -686,7 +637,7 @@ HWY_INLINE std::size_t SamplesPassIn(D d, const TriangleSetup& t, const PixelRec
   const auto z0 = hn::Set(dr, t.z[0]), z1 = hn::Set(dr, t.z[1]), z2 = hn::Set(dr, t.z[2]);
   const auto zero = hn::Zero(dr);
   const std::int64_t half = kSubpixelOne / 2;
-  const RowSpans spans(t, reach);
+  const RowSpans spans(t, std::span(planes.offsets, std::size_t(samples)));
   std::size_t passed = 0;
   for (int y = minY; y <= maxY; ++y) {
     const std::int64_t fy = std::int64_t(y) * kSubpixelOne + half;

@@ -100,11 +100,13 @@ class EdgeLanes {
     const DU du;
     if (count_ > 0 && owner_ != o) flush();
     owner_ = o;
+    // (Compressed in a register and stored whole, which the planes have room for: a compressing
+    // store to memory is slow on some CPUs.)
     const hn::Vec<D> planes[6] = {P.x, P.y, P.z, N.x, N.y, N.z};
-    for (int c = 0; c < 6; ++c) hn::CompressStore(planes[c], mine, d, plane_[c] + count_);
+    for (int c = 0; c < 6; ++c) hn::StoreU(hn::Compress(planes[c], mine), d, plane_[c] + count_);
     if (colored_[o])
-      for (int c = 0; c < 4; ++c) hn::CompressStore(hn::LoadU(d, p.color[c] + i), mine, d, plane_[6 + c] + count_);
-    hn::CompressStore(hn::Iota(du, std::uint32_t(i)), hn::RebindMask(du, mine), du, pixel_ + count_);
+      for (int c = 0; c < 4; ++c) hn::StoreU(hn::Compress(hn::LoadU(d, p.color[c] + i), mine), d, plane_[6 + c] + count_);
+    hn::StoreU(hn::Compress(hn::Iota(du, std::uint32_t(i)), hn::RebindMask(du, mine)), du, pixel_ + count_);
     count_ += hn::CountTrue(d, mine);
     const std::size_t lanes = hn::Lanes(d);
     if (count_ < lanes) return;
