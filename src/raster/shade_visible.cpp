@@ -11,6 +11,7 @@
 #include "raster/shade_visible.h"
 
 #include <algorithm>
+#include <type_traits>
 
 HWY_BEFORE_NAMESPACE();
 namespace illum::HWY_NAMESPACE {
@@ -53,58 +54,69 @@ HWY_INLINE void TexelLanes(D d, const VisibleLayout& layout, const ShownRecord& 
 #endif
 }
 
-// gatherShown over lanes `d` of the edge values: kSplit float lanes (a multiple of 256 plus the
-// rest, exact while every part stays below 2^31, as SamplesPassIn keeps them), else double lanes.
-// Each lane's edge values are the first pixel's plus dx·256a + dy·256b, exact integers.
-template <bool kSplit, class D>
-HWY_INLINE void GatherShownIn(D d, const VisibleLayout& layout, const ShownRecord& rec, const PixelRect& rect,
+// gatherShown, its pixels in the widest Real lanes. Their edge values are exact integers, the
+// first pixel's plus dx·256a + dy·256b: with kSplit in float lanes, a multiple of 256 plus the
+// rest (exact while every part stays below 2^31, as SamplesPassIn keeps them), else in double
+// lanes, half a vector at a time, each converted to Real once.
+template <bool kSplit>
+HWY_INLINE void GatherShownIn(const VisibleLayout& layout, const ShownRecord& rec, const PixelRect& rect,
                               const std::uint32_t* pixels, std::size_t count, VisibleBatch& b) {
   const TriangleSetup& t = *rec.setup;
-  using T = hn::TFromD<D>;
-  const hn::Rebind<Real, D> dr;
-  const hn::Rebind<std::uint32_t, D> du;
-  const hn::Rebind<std::int32_t, D> di;
+  const hn::ScalableTag<Real> dr;
+  const hn::Rebind<std::uint32_t, decltype(dr)> du;
+  const hn::Rebind<std::int32_t, decltype(dr)> di;
   using VR = hn::VFromD<decltype(dr)>;
-  const auto toReal = [&](hn::VFromD<D> v) {
-    if constexpr (sizeof(T) == sizeof(Real)) return v;
-    else return hn::DemoteTo(dr, v);
-  };
-  const auto toT = [&](auto i) {  // int32 lanes → the edge values' lanes, exactly
-    if constexpr (sizeof(T) == 4) return hn::ConvertTo(d, i);
-    else return hn::ConvertTo(d, hn::PromoteTo(hn::Rebind<std::int64_t, D>(), i));
-  };
+  using VI = hn::VFromD<decltype(di)>;
+  using T = std::conditional_t<kSplit, float, double>;
   // The first pixel's edge values (split: its multiple of 256, and the rest), and the steps.
   const int x0 = rect.minX + int(pixels[0] % kTileSize), y0 = rect.minY + int(pixels[0] / kTileSize);
   const std::int64_t half = kSubpixelOne / 2;
-  hn::VFromD<D> high[3], low[3], A[3], B[3];
+  T high[3], low[3], A[3], B[3];
   for (int i = 0; i < 3; ++i) {
     const std::int64_t e = t.edge[i].at(std::int64_t(x0) * kSubpixelOne + half, std::int64_t(y0) * kSubpixelOne + half);
     const std::int64_t rest = kSplit ? (e & (kSubpixelOne - 1)) : 0;
-    high[i] = hn::Set(d, T(e - rest));
-    low[i] = hn::Set(d, T(rest));
-    A[i] = hn::Set(d, T(std::int64_t(t.edge[i].a) * kSubpixelOne));
-    B[i] = hn::Set(d, T(std::int64_t(t.edge[i].b) * kSubpixelOne));
+    high[i] = T(e - rest), low[i] = T(rest);
+    A[i] = T(std::int64_t(t.edge[i].a) * kSubpixelOne), B[i] = T(std::int64_t(t.edge[i].b) * kSubpixelOne);
   }
+  // Edge value i at the lanes' pixels dx, dy from the first one, as Real.
+  const auto edgeAt = [&](int i, VI dx, VI dy) -> VR {
+    if constexpr (kSplit) {
+      const VR offset = hn::ConvertTo(dr, dx) * hn::Set(dr, A[i]) + hn::ConvertTo(dr, dy) * hn::Set(dr, B[i]);
+      return (hn::Set(dr, high[i]) + offset) + hn::Set(dr, low[i]);  // a multiple of 256 plus the rest
+    } else {
+      const auto exact = [&](auto dd, auto x, auto y) {  // in double lanes
+        return hn::Set(dd, high[i]) + (hn::PromoteTo(dd, x) * hn::Set(dd, A[i]) + hn::PromoteTo(dd, y) * hn::Set(dd, B[i]));
+      };
+#if HWY_TARGET == HWY_SCALAR || ILLUM_USE_DOUBLE
+      const hn::Rebind<double, decltype(dr)> dd;
+      if constexpr (sizeof(Real) == 8) return exact(dd, dx, dy);
+      else return hn::DemoteTo(dr, exact(dd, dx, dy));
+#else
+      const hn::Half<decltype(dr)> dh;
+      const hn::Half<decltype(di)> dih;
+      const hn::Rebind<double, decltype(dh)> dd;
+      const auto lower = hn::DemoteTo(dh, exact(dd, hn::LowerHalf(dih, dx), hn::LowerHalf(dih, dy)));
+      const auto upper = hn::DemoteTo(dh, exact(dd, hn::UpperHalf(dih, dx), hn::UpperHalf(dih, dy)));
+      return hn::Combine(dr, upper, lower);
+#endif
+    }
+  };
   const VR invArea = hn::Set(dr, t.invArea), one = hn::Set(dr, Real(1));
   const VR invW[3] = {hn::Set(dr, t.invW[0]), hn::Set(dr, t.invW[1]), hn::Set(dr, t.invW[2])};
   const auto vertex = [&](int k, int value) { return hn::Set(dr, rec.vertex[k][value]); };
   const auto blend = [&](const VR (&p)[3], int value) { return Blend(p, vertex(0, value), vertex(1, value), vertex(2, value)); };
   const auto negate = hn::FirstN(dr, rec.negate ? hn::Lanes(dr) : 0);
   const auto column0 = hn::Set(di, x0 - rect.minX), row0 = hn::Set(di, y0 - rect.minY);
-  const std::size_t lanes = hn::Lanes(d);
+  const std::size_t lanes = hn::Lanes(dr);
   for (std::size_t i = 0; i < count; i += lanes) {
     const auto shown = hn::FirstN(dr, count - i);
     const auto index = hn::LoadU(du, pixels + i);  // (the list has room for a vector past its end)
     const auto indexI = hn::BitCast(di, index);
-    const auto dx = toT(hn::And(indexI, hn::Set(di, kTileSize - 1)) - column0);
-    const auto dy = toT(hn::ShiftRight<6>(indexI) - row0);
     static_assert(kTileSize == 64);
+    const VI dx = hn::And(indexI, hn::Set(di, kTileSize - 1)) - column0, dy = hn::ShiftRight<6>(indexI) - row0;
     // The centres' barycentrics, as the rasterizer computes them.
     VR l[3];
-    for (int e = 0; e < 3; ++e) {
-      const auto offset = dx * A[e] + dy * B[e];  // a multiple of 256, exact
-      l[e] = (kSplit ? toReal((high[e] + offset) + low[e]) : toReal(high[e] + offset)) * invArea;
-    }
+    for (int e = 0; e < 3; ++e) l[e] = edgeAt(e, dx, dy) * invArea;
     VR p[3];
     PerspectiveWeights(l[0], l[1], l[2], invW[0], invW[1], invW[2], p);
     VR color[4];
@@ -160,10 +172,10 @@ void GatherShown(const VisibleLayout& layout, const ShownRecord& rec, const Pixe
       const std::int64_t first = e.at(std::int64_t(minX) * kSubpixelOne + half, std::int64_t(minY) * kSubpixelOne + half);
       split = split && std::abs(first) + 2 * (a * (maxX - minX) + bb * (maxY - minY)) * kSubpixelOne <= limit;
     }
-    if (split) return GatherShownIn<true>(hn::ScalableTag<float>(), layout, rec, rect, pixels, count, b);
+    if (split) return GatherShownIn<true>(layout, rec, rect, pixels, count, b);
   }
 #endif
-  GatherShownIn<false>(hn::ScalableTag<double>(), layout, rec, rect, pixels, count, b);
+  GatherShownIn<false>(layout, rec, rect, pixels, count, b);
 }
 
 void FinishVisible(const VisibleLayout& layout, VisibleBatch& b) {
