@@ -519,6 +519,14 @@ Scene prepareScene(SceneOptions o, double* loadMs, ModelCache* cache, std::vecto
     throw InputError(scene.renderer == RendererKind::Path
                          ? "--ambient-occlusion: the path tracer computes the light that ambient occlusion approximates"
                          : "--ambient-occlusion: the rasterizer's; the ray tracers keep the classic ambient term");
+  if (model && scene.ambientOcclusion.enabled) {
+    // A preview's ambient is faint: occlusion shades the rig's fill light instead, made light
+    // from everywhere (framing.h), so that crevices darken.
+    const Real intensity = o.lightIntensity ? Real(*o.lightIntensity) : Real(1);
+    const Encoding rig = scene.display.encoding == Encoding::Srgb ? Encoding::Srgb : Encoding::Linear;
+    scene.lights = cameraLightRig(scene.camera, intensity, rig, true);
+    scene.lightModel.ambient = cameraRigAmbient(intensity, rig, true);
+  }
   if (model) scene.pointSize = 3;  // a point cloud's 1-pixel points are hard to see in a preview
   if (o.pointSize) scene.pointSize = Real(*o.pointSize);
   if (o.lineWidth) scene.lineWidth = Real(*o.lineWidth);

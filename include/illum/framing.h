@@ -35,8 +35,11 @@ std::vector<Vec3> worldPoints(const std::vector<Object>& objects);
 // from the right, a rim light from behind. `intensity` scales every light. For a picture encoded
 // sRGB the lights are set in linear light (a stronger key, much weaker fill, rim and ambient), so
 // that the encoding's lift of dark values does not wash the picture out.
-std::vector<Light> cameraLightRig(const Camera& camera, Real intensity, Encoding encoding = Encoding::Linear);
+// With `occluded` (ambient occlusion on), the fill light is left out of the rig and joins the
+// ambient instead: soft light from everywhere, which the occlusion shades, so that crevices darken.
+std::vector<Light> cameraLightRig(const Camera& camera, Real intensity, Encoding encoding = Encoding::Linear,
+                                  bool occluded = false);
 // The light-model ambient that goes with the rig.
-Color3 cameraRigAmbient(Real intensity, Encoding encoding = Encoding::Linear);
+Color3 cameraRigAmbient(Real intensity, Encoding encoding = Encoding::Linear, bool occluded = false);
 
 }  // namespace illum

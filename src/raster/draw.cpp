@@ -18,9 +18,11 @@ Route chooseRoute(const FrameContext& frame, const Object& object, bool transluc
   if (sizeof(Real) != 4) return Route::Deferred;
   const bool textured = drawnTexture(object) != nullptr;
   if (frame.shading != Shading::Phong) return textured ? Route::Deferred : Route::Colored;
-  // The visible surface is one per pixel: a multisampled tile keeps what each sample shows.
+  // The visible surface is one per pixel: a multisampled tile keeps what each sample shows. Pixels
+  // whose ambient is occluded are lit with their occlusion, which the Deferred route asks for.
   const bool oneSample = frame.samples.size() <= 1;
-  return oneSample && !textured && !mapsDrawn(object, frame.litPerPixel()) ? Route::Surface : Route::Deferred;
+  return oneSample && !textured && !mapsDrawn(object, frame.litPerPixel()) && !frame.occlusion ? Route::Surface
+                                                                                             : Route::Deferred;
 }
 
 DrawTarget::DrawTarget(const FrameContext& frame, const Scene& scene, Framebuffer& fb, PixelProbe* probe)
@@ -144,12 +146,13 @@ void drawPixels(const DrawTarget& target, const DrawRecord& record, const Sample
     else if constexpr (kShading == Shading::Gouraud) c = gouraudColor(record, l, perspectiveWeights(t, l0, l1, l2));
     if (kShading == Shading::Phong && mapped) {
       surface = mappedSurface(frame, object, record, l, l0, l1, l2);
-      c = shadeMappedFragment(frame, surface);
+      c = shadeMappedFragment(frame, surface, OcclusionQuery::pixelSeed(x, y, frame.width));
       texel = surface.point.texel;
     } else {
       if constexpr (kTextured) texel = sampleDiffuseTexture(*texture, record, l, l0, l1, l2);
       if constexpr (kShading == Shading::Phong)
-        c = shadePhongFragment(frame, object, record, l, perspectiveWeights(t, l0, l1, l2), kTextured ? &texel : nullptr);
+        c = shadePhongFragment(frame, object, record, l, perspectiveWeights(t, l0, l1, l2), kTextured ? &texel : nullptr,
+                               OcclusionQuery::pixelSeed(x, y, frame.width));
     }
     const Color4 lit = c;
     // GL_MODULATE: the lit colour times the texel, alpha included (unless it was the base colour).

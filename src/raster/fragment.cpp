@@ -18,14 +18,34 @@ PhongSurface phongSurface(const FrameContext& frame, bool vertexColors, const Dr
   return s;
 }
 
+namespace {
+
+// The clamped colour of a material at a point lit per pixel, its ambient occluded when the frame
+// traces occlusion (as shadePoints scales it: SurfacePoints::ambientOpen).
+Color4 litAt(const FrameContext& frame, const PointMaterial& point, const Vec3& position, const Vec3& normal,
+             std::uint64_t seed) {
+  const SurfaceGeometry s{position, normal, viewerDirection(position, frame.lightModel.localViewer)};
+  LightingTerms terms = evaluateTerms(frame.lights, frame.lightModel, point.material, point.model, s);
+  if (frame.occlusion) {
+    const Real* P[3] = {&position.x, &position.y, &position.z};
+    const Real* N[3] = {&normal.x, &normal.y, &normal.z};
+    Real open = 1;
+    frame.occlusion->open(1, P, N, &seed, &open);
+    terms.ambient = open * terms.ambient;
+  }
+  return clampedColor(terms, point.material);
+}
+
+}  // namespace
+
 Color4 shadePhongFragment(const FrameContext& frame, const Object& object, const DrawRecord& r,
-                          const AttributeLayout& l, const std::array<Real, 3>& w, const Vec4* texel) {
+                          const AttributeLayout& l, const std::array<Real, 3>& w, const Vec4* texel,
+                          std::uint64_t seed) {
   const bool vertexColors = !object.mesh->colors.empty();
   const PhongSurface p = phongSurface(frame, vertexColors, r, l, w);
   const PointMaterial point = materialAt(object, frame.model, true, vertexColors ? &p.color : nullptr,
                                          [&](const Texture&) { return texel ? *texel : Vec4(1); });
-  const SurfaceGeometry s{p.position, p.normal, viewerDirection(p.position, frame.lightModel.localViewer)};
-  return clampedColor(evaluateTerms(frame.lights, frame.lightModel, point.material, point.model, s), point.material);
+  return litAt(frame, point, p.position, p.normal, seed);
 }
 
 TexturePoint texturePoint(const DrawRecord& r, const AttributeLayout& l, Real l0, Real l1, Real l2) {
@@ -69,9 +89,8 @@ MappedSurface mappedSurface(const FrameContext& frame, const Object& object, con
   return s;
 }
 
-Color4 shadeMappedFragment(const FrameContext& frame, const MappedSurface& s) {
-  const SurfaceGeometry g{s.position, s.normal, viewerDirection(s.position, frame.lightModel.localViewer)};
-  return clampedColor(evaluateTerms(frame.lights, frame.lightModel, s.point.material, s.point.model, g), s.point.material);
+Color4 shadeMappedFragment(const FrameContext& frame, const MappedSurface& s, std::uint64_t seed) {
+  return litAt(frame, s.point, s.position, s.normal, seed);
 }
 
 }  // namespace illum

@@ -43,9 +43,11 @@ PhongSurface phongSurface(const FrameContext& frame, bool vertexColors, const Dr
 // The per-pixel lighting of Phong shading, one pixel at a time (the binned pipeline lights its
 // pixels in batches, shade_tile.cpp, with the same equation), of an object without maps. With
 // `texel`, the object's texel at the pixel: it tints the base colour before lighting where
-// texelIsBaseColor says so (the caller multiplies the lit colour by it otherwise).
+// texelIsBaseColor says so (the caller multiplies the lit colour by it otherwise). `seed` is the
+// pixel's (OcclusionQuery::pixelSeed), for the frame's ambient occlusion.
 Color4 shadePhongFragment(const FrameContext& frame, const Object& object, const DrawRecord& r,
-                          const AttributeLayout& l, const std::array<Real, 3>& w, const Vec4* texel = nullptr);
+                          const AttributeLayout& l, const std::array<Real, 3>& w, const Vec4* texel,
+                          std::uint64_t seed);
 
 // Where a pixel falls on the textures: its perspective-correct uv, and how much uv changes one
 // pixel to the right and one up (the uv evaluated there), which sets each texture's footprint.
@@ -72,7 +74,7 @@ struct MappedSurface {
 };
 MappedSurface mappedSurface(const FrameContext& frame, const Object& object, const DrawRecord& r,
                             const AttributeLayout& l, Real l0, Real l1, Real l2);
-Color4 shadeMappedFragment(const FrameContext& frame, const MappedSurface& surface);
+Color4 shadeMappedFragment(const FrameContext& frame, const MappedSurface& surface, std::uint64_t seed);
 
 // Gouraud: the vertex colours (lit for the side shown), interpolated.
 inline Color4 gouraudColor(const DrawRecord& r, const AttributeLayout& l, const std::array<Real, 3>& w) {

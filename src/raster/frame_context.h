@@ -4,6 +4,8 @@
 #include <illum/lighting.h>
 #include <illum/scene.h>
 
+#include "shading/occlusion.h"
+
 #include <cstdint>
 
 #include <span>
@@ -34,6 +36,9 @@ struct FrameContext {
   // centres, and each tile keeps coverage, depth and colour per sample of this pattern (more
   // than one offset), resolved in the tile. Empty otherwise (and in a pass of one sample).
   std::span<const SubpixelOffset> samples;
+  // Ambient occlusion, when the scene asks for it (traced from above: render/): it scales the
+  // ambient term of every point lit, each pixel's under Phong shading, each vertex's otherwise.
+  const OcclusionQuery* occlusion = nullptr;
 
   // How far, in sub-pixel units, the samples of a pixel lie from its centre (setup widens a
   // triangle's pixel bounds by it, so that they hold every pixel with a covered sample).

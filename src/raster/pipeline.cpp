@@ -225,7 +225,7 @@ class BinnedFrame {
         ranges.push_back({&member, v, std::min(n, v + kVertexGrain)});
     tbb::parallel_for(std::size_t(0), ranges.size(), [&](std::size_t r) {
       const auto& [member, first, last] = ranges[r];
-      runVertexStage(frame_, *member->object, ofMember(*member), first, last);
+      runVertexStage(frame_, *member->object, member->index, ofMember(*member), first, last);
     });
     // The chunks of triangles, in submission order.
     ranges.clear();
@@ -287,8 +287,10 @@ class BinnedFrame {
 RasterPipeline::RasterPipeline() : state_(std::make_unique<State>()) {}
 RasterPipeline::~RasterPipeline() = default;
 
-void RasterPipeline::draw(const Scene& scene, Image& image, RenderStats& stats, PixelProbe* probe) {
+void RasterPipeline::draw(const Scene& scene, Image& image, RenderStats& stats, PixelProbe* probe,
+                          const OcclusionQuery* occlusion) {
   FrameContext frame = FrameContext::fromScene(scene);
+  frame.occlusion = occlusion;
   const std::span<const SubpixelOffset> samples = multisamplePattern(scene.multisample);
   const std::vector<OverlayLine> overlay = overlayLines(scene);
   if (hasPointsOrLines(scene)) checkPointAndLineFill(frame, scene, int(samples.size()));

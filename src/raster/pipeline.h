@@ -7,6 +7,8 @@
 #include <illum/render.h>
 #include <illum/scene.h>
 
+#include "shading/occlusion.h"
+
 #include <memory>
 
 namespace illum {
@@ -23,8 +25,9 @@ class RasterPipeline {
 
   // Draws `scene` into `image` (its memory reused), row 0 at the top. `stats` is filled, its
   // pixelsDrawn with the pixels unlike the background; `probe`, if given, with the watched pixel's
-  // last fragment.
-  void draw(const Scene& scene, Image& image, RenderStats& stats, PixelProbe* probe);
+  // last fragment. `occlusion`, if given, occludes the ambient term (the scene's ambient occlusion).
+  void draw(const Scene& scene, Image& image, RenderStats& stats, PixelProbe* probe,
+            const OcclusionQuery* occlusion = nullptr);
 
   struct State;
 

@@ -23,7 +23,7 @@ void prepareVertices(const FrameContext& litFrame, const Object& object, std::sp
   const Mat4 clipFromObject = litFrame.clipFromView * litFrame.viewFromWorld * object.worldFromObject;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, out.size(), kVertexGrain), [&](const auto& r) {
     if (!mesh.normals.empty()) {
-      runVertexStage(litFrame, object, out, r.begin(), r.end());
+      runVertexStage(litFrame, object, 0, out, r.begin(), r.end());
       return;
     }
     // A physically based material's colour is its base colour (its GL diffuse is base·(1 − metallic)).
@@ -123,6 +123,7 @@ void drawPointsAndLines(Framebuffer& fb, const FrameContext& frame, const Scene&
   // to light in between, so Phong shading lights them at their vertices too.
   FrameContext litFrame = frame;
   if (frame.shading == Shading::Phong) litFrame.shading = Shading::Gouraud;
+  litFrame.occlusion = nullptr;  // points and lines have no surface to occlude
   // Every object's vertices first (one after another in `vertices`), then the primitives in
   // their order, by bands of tile rows in parallel: a pixel belongs to one band, so it sees the
   // same fragments in the same order as if drawn by one thread, and each tile is cleared by one.

@@ -26,7 +26,7 @@ void probePixel(const Scene& scene, const FrameContext& frame, PixelProbe& probe
     if (object->mesh->triangleCount() == 0) continue;
     const auto index = std::uint32_t(object - scene.objects.data());
     vertices.resize(object->mesh->positions.size());
-    runVertexStage(pass, *object, vertices, 0, vertices.size());
+    runVertexStage(pass, *object, index, vertices, 0, vertices.size());
     // A chunk of records at a time: a dense mesh's would not fit in memory at once.
     constexpr std::size_t kChunk = 4096;
     for (std::size_t first = 0, n = object->mesh->triangleCount(); first < n; first += kChunk) {

@@ -332,6 +332,16 @@ void VisibleShader::flush() {
     for (int c = 0; c < 3; ++c) points.position[c] = b_.position[c], points.normal[c] = b_.normal[c];
     if (layout_.color >= 0 || layout_.baseTexel)
       for (int c = 0; c < 4; ++c) points.color[c] = b_.color[c];
+    if (const OcclusionQuery* occlusion = target_.frame.occlusion) {
+      // The ambient's open share at each pixel's point, seeded by the pixel.
+      for (std::size_t k = 0; k < b_.count; ++k)
+        b_.seed[k] = OcclusionQuery::pixelSeed(rect_.minX + int(b_.pixel[k] % kTileSize),
+                                               rect_.minY + int(b_.pixel[k] / kTileSize), target_.frame.width);
+      const Real* position[3] = {b_.position[0], b_.position[1], b_.position[2]};
+      const Real* normal[3] = {b_.normal[0], b_.normal[1], b_.normal[2]};
+      occlusion->open(b_.count, position, normal, b_.seed, b_.open);
+      points.ambientOpen = b_.open;
+    }
     Real* const lit[4] = {b_.lit[0], b_.lit[1], b_.lit[2], b_.lit[3]};
     shadePoints(setup, points, lit);
   } else {
@@ -347,7 +357,7 @@ void VisibleShader::shadeMapped(const Object& object, int index, std::uint32_t s
   const int x = rect_.minX + index % kTileSize, y = rect_.minY + index / kTileSize;
   const auto [l0, l1, l2] = centreBarycentrics(r.setup, x, y, target_.frame.sample);
   const MappedSurface surface = mappedSurface(target_.frame, object, r, target_.layout(r), l0, l1, l2);
-  const Color4 lit = shadeMappedFragment(target_.frame, surface);
+  const Color4 lit = shadeMappedFragment(target_.frame, surface, OcclusionQuery::pixelSeed(x, y, target_.frame.width));
   const Vec4* texel = surface.point.textured ? &surface.point.texel : nullptr;
   out_.write(index, slot, packUnorm8(texel && !surface.point.texelIsBaseColor ? lit * *texel : lit));
 }

@@ -80,6 +80,9 @@ struct VisibleBatch {
   alignas(64) std::uint32_t rgba[kRoom];
   alignas(64) std::uint32_t pixel[kRoom];  // index in the tile
   std::uint32_t slot[kRoom];
+  // Ambient occlusion: each pixel's seed and its ambient's open share.
+  std::uint64_t seed[kRoom];
+  Real open[kRoom];
 };
 
 // The lanes' part (SIMD, dispatched). gatherShown appends the record's pixels `pixels` (tile

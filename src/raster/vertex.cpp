@@ -12,10 +12,11 @@ namespace illum {
 
 namespace {
 
-// Lights a batch of transformed vertices: front colours with N, and under two-sided lighting back
-// colours with −N, into out[0, n).
-void lightBatch(const FrameContext& frame, const Object& object, TransformedVertices& batch, const Color4* colors,
-                std::size_t n, ShadedVertex* out) {
+// Lights a batch of transformed vertices (the object's from `first` on): front colours with N, and
+// under two-sided lighting back colours with −N, into out[0, n); each side's ambient occluded as
+// seen along its normal when the frame traces occlusion.
+void lightBatch(const FrameContext& frame, const Object& object, std::uint32_t objectIndex, std::size_t first,
+                TransformedVertices& batch, const Color4* colors, std::size_t n, ShadedVertex* out) {
   const ShadeSetup setup{frame.lights, frame.lightModel, modelOf(object.material, frame.model), object.material};
   Real color[4][kVertexBatch], result[4][kVertexBatch];
   SurfacePoints points;
@@ -27,19 +28,29 @@ void lightBatch(const FrameContext& frame, const Object& object, TransformedVert
     for (int c = 0; c < 4; ++c) points.color[c] = color[c];
   }
   Real* const lit[4] = {result[0], result[1], result[2], result[3]};
+  Real open[kVertexBatch];
+  std::uint64_t seed[kVertexBatch];
+  const auto occlude = [&](bool back) {
+    if (!frame.occlusion) return;
+    for (std::size_t k = 0; k < n; ++k) seed[k] = OcclusionQuery::vertexSeed(objectIndex, first + k, back);
+    frame.occlusion->open(n, points.position, points.normal, seed, open);
+    points.ambientOpen = open;
+  };
+  occlude(false);
   shadePoints(setup, points, lit);
   for (std::size_t k = 0; k < n; ++k) out[k].front = {result[0][k], result[1][k], result[2][k], result[3][k]};
   if (!frame.lightModel.twoSided) return;
   for (int c = 0; c < 3; ++c)
     for (std::size_t k = 0; k < n; ++k) batch.normal[c][k] = -batch.normal[c][k];
+  occlude(true);
   shadePoints(setup, points, lit);
   for (std::size_t k = 0; k < n; ++k) out[k].back = {result[0][k], result[1][k], result[2][k], result[3][k]};
 }
 
 }  // namespace
 
-void runVertexStage(const FrameContext& frame, const Object& object, std::span<ShadedVertex> out,
-                    std::size_t first, std::size_t last) {
+void runVertexStage(const FrameContext& frame, const Object& object, std::uint32_t objectIndex,
+                    std::span<ShadedVertex> out, std::size_t first, std::size_t last) {
   const Mesh& mesh = *object.mesh;
   VertexTransform transform;
   transform.viewFromObject = frame.viewFromWorld * object.worldFromObject;  // GL_MODELVIEW
@@ -63,7 +74,7 @@ void runVertexStage(const FrameContext& frame, const Object& object, std::span<S
       if (hasColors) v.color = mesh.colors[b + k];
     }
     if (frame.shading != Shading::Phong)
-      lightBatch(frame, object, batch, hasColors ? &mesh.colors[b] : nullptr, n, &out[b]);
+      lightBatch(frame, object, objectIndex, b, batch, hasColors ? &mesh.colors[b] : nullptr, n, &out[b]);
   }
 }
 

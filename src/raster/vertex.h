@@ -38,9 +38,10 @@ struct alignas(64) ShadedVertex {
 };
 
 // The object's vertices [first, last) through the vertex stage, into `out` (as many as the mesh's
-// vertices); each vertex independent of the others, so ranges can run in parallel.
-void runVertexStage(const FrameContext& frame, const Object& object, std::span<ShadedVertex> out,
-                    std::size_t first, std::size_t last);
+// vertices); each vertex independent of the others, so ranges can run in parallel. `objectIndex`
+// (in the scene) numbers the vertices' occlusion rays.
+void runVertexStage(const FrameContext& frame, const Object& object, std::uint32_t objectIndex,
+                    std::span<ShadedVertex> out, std::size_t first, std::size_t last);
 
 // Linear interpolation of every attribute, as clipping needs it.
 ShadedVertex lerp(const ShadedVertex& a, const ShadedVertex& b, Real t);

@@ -3,12 +3,10 @@
 #include <illum/display.h>
 
 #include "render/labels.h"
-#include "trace/ambient_occlusion.h"
 
 namespace illum {
 
 void finishRasterPicture(const Scene& scene, RenderStats& stats, Image& image, FloatImage* linear) {
-  applyAmbientOcclusion(scene, image);
   if (linear) {
     *linear = FloatImage{image.width, image.height, std::vector<float>(image.rgba.size())};
     for (std::size_t i = 0; i < image.rgba.size(); ++i) linear->rgba[i] = float(image.rgba[i]) / 255;

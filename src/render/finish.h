@@ -7,9 +7,8 @@
 
 namespace illum {
 
-// The rasterizer's linear 8-bit picture finished: ambient occlusion (when the scene asks for it),
-// its linear values copied to `linear` if asked, the scene's display encoding applied, then the
-// scene's labels and gizmo drawn over it.
+// The rasterizer's linear 8-bit picture finished: its linear values copied to `linear` if asked,
+// the scene's display encoding applied, then the scene's labels and gizmo drawn over it.
 void finishRasterPicture(const Scene& scene, RenderStats& stats, Image& image, FloatImage* linear);
 
 // The ray tracers encode their own pixels from the float means (ray_tracer.h): only the labels.

@@ -76,6 +76,11 @@ TEST(BinnedPipeline, EqualsTheReferenceAndEveryThreadCount) {
   scenes.push_back({"blended 1000x700", wide});
   scenes.push_back({"dense", denseScene(false)});
   scenes.push_back({"dense, blended", denseScene(true)});
+  // Ambient occlusion traced at the points the routes light (pixels, or vertices).
+  Scene occluded = defaultScene();
+  occluded.width = 240, occluded.height = 180;
+  occluded.ambientOcclusion.enabled = true;
+  scenes.push_back({"ambient occlusion", occluded});
   for (auto& [name, scene] : scenes)
     for (Shading shading : {Shading::Flat, Shading::Gouraud, Shading::Phong}) {
       scene.shading = shading;
@@ -103,6 +108,10 @@ TEST(BinnedPipeline, MultisamplingInOnePassEqualsAPassPerSample) {
   scenes.push_back({"blended 700x500", wide});
   scenes.push_back({"dense", denseScene(false)});
   scenes.push_back({"dense, blended", denseScene(true)});
+  Scene occluded = defaultScene();
+  occluded.width = 240, occluded.height = 180;
+  occluded.ambientOcclusion.enabled = true;
+  scenes.push_back({"ambient occlusion", occluded});
   // Big triangles whose edge values outgrow float lanes (the coverage kernel's double lanes).
   Scene big = defaultScene();
   big.width = 2400, big.height = 300;

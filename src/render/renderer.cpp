@@ -5,6 +5,7 @@
 #include "raster/pipeline.h"
 #include "render/finish.h"
 #include "shading/shade_points.h"
+#include "trace/ambient_occlusion.h"
 #include "trace/ray_tracer.h"
 
 namespace illum {
@@ -20,7 +21,10 @@ Renderer::~Renderer() = default;
 void Renderer::render(const Scene& scene, Image& image, RenderStats* statsOut, PixelProbe* probe, FloatImage* linear) {
   RenderStats stats;
   if (scene.renderer == RendererKind::Raster) {
-    state_->raster.draw(scene, image, stats, probe);
+    // Ambient occlusion is traced for the points the rasterizer lights (trace/ambient_occlusion.h).
+    std::unique_ptr<TracedOcclusion> occlusion;
+    if (scene.ambientOcclusion.enabled && !scene.objects.empty()) occlusion = std::make_unique<TracedOcclusion>(scene);
+    state_->raster.draw(scene, image, stats, probe, occlusion.get());
     finishRasterPicture(scene, stats, image, linear);
   } else {
     traceScene(scene, image, stats, probe, linear, progress_);

@@ -86,7 +86,16 @@ Camera framePoints(std::span<const Vec3> points, const ViewOptions& o, Real aspe
   return cam;
 }
 
-std::vector<Light> cameraLightRig(const Camera& cam, Real intensity, Encoding encoding) {
+namespace {
+
+// The rig's fill light: from the right, a little below, cool; no highlight.
+Color3 fillColor(Encoding encoding) {
+  return encoding == Encoding::Srgb ? Color3(0.15, 0.17, 0.21) : Color3(0.36, 0.38, 0.42);
+}
+
+}  // namespace
+
+std::vector<Light> cameraLightRig(const Camera& cam, Real intensity, Encoding encoding, bool occluded) {
   const Vec3 back = glm::normalize(cam.eye - cam.center);  // towards the viewer
   const Vec3 right = glm::normalize(glm::cross(cam.up, back));
   const Vec3 up = glm::cross(back, right);
@@ -97,21 +106,20 @@ std::vector<Light> cameraLightRig(const Camera& cam, Real intensity, Encoding en
     l.specular = glm::clamp(specular * intensity, Color3(0), Color3(1));
     return l;
   };
-  if (encoding == Encoding::Srgb)
-    return {
-        directional(-0.5f, 0.6f, 1.0f, {0.86, 0.83, 0.77}, {0.6, 0.6, 0.6}),    // key: upper left, in front
-        directional(0.8f, -0.2f, 0.6f, {0.15, 0.17, 0.21}, {0, 0, 0}),          // fill: right, a little below
-        directional(0.2f, 0.7f, -1.0f, {0.12, 0.12, 0.12}, {0.25, 0.25, 0.25}), // rim: above, from behind
-    };
-  return {
-      directional(-0.5f, 0.6f, 1.0f, {0.68, 0.66, 0.62}, {0.55, 0.55, 0.55}),  // key: upper left, in front
-      directional(0.8f, -0.2f, 0.6f, {0.36, 0.38, 0.42}, {0, 0, 0}),            // fill: right, a little below
-      directional(0.2f, 0.7f, -1.0f, {0.3, 0.3, 0.3}, {0.3, 0.3, 0.3}),         // rim: above, from behind
+  const bool srgb = encoding == Encoding::Srgb;
+  std::vector<Light> rig = {
+      srgb ? directional(-0.5f, 0.6f, 1.0f, {0.86, 0.83, 0.77}, {0.6, 0.6, 0.6})       // key: upper left, in front
+           : directional(-0.5f, 0.6f, 1.0f, {0.68, 0.66, 0.62}, {0.55, 0.55, 0.55}),
+      srgb ? directional(0.2f, 0.7f, -1.0f, {0.12, 0.12, 0.12}, {0.25, 0.25, 0.25})    // rim: above, from behind
+           : directional(0.2f, 0.7f, -1.0f, {0.3, 0.3, 0.3}, {0.3, 0.3, 0.3}),
   };
+  if (!occluded) rig.insert(rig.begin() + 1, directional(0.8f, -0.2f, 0.6f, fillColor(encoding), {0, 0, 0}));
+  return rig;
 }
 
-Color3 cameraRigAmbient(Real intensity, Encoding encoding) {
-  return glm::clamp(Color3(encoding == Encoding::Srgb ? Real(0.035) : Real(0.2)) * intensity, Color3(0), Color3(1));
+Color3 cameraRigAmbient(Real intensity, Encoding encoding, bool occluded) {
+  const Color3 ambient(encoding == Encoding::Srgb ? Real(0.035) : Real(0.2));
+  return glm::clamp((occluded ? ambient + fillColor(encoding) : ambient) * intensity, Color3(0), Color3(1));
 }
 
 }  // namespace illum

@@ -13,30 +13,32 @@ HWY_BEFORE_NAMESPACE();
 namespace illum::HWY_NAMESPACE {
 
 // The clamped colour at each lane of `s` (its toViewer filled in here), with each lane's own
-// colour for GL_COLOR_MATERIAL when `color` is given (four arrays read at the lanes).
+// colour for GL_COLOR_MATERIAL when `color` is given (four arrays read at the lanes), and the
+// ambient term scaled by each lane's open share when `open` is given (ambient occlusion).
 template <class D, class V = hn::VFromD<D>>
-HWY_INLINE void LitColor(D d, const ShadeSetup& setup, SurfaceL<V>& s, const Real* const* color, V& r, V& g, V& b,
-                         V& a) {
+HWY_INLINE void LitColor(D d, const ShadeSetup& setup, SurfaceL<V>& s, const Real* const* color, const Real* open,
+                         V& r, V& g, V& b, V& a) {
   s.toViewer = ToViewer(d, s.P, setup.lightModel.localViewer);
   MaterialColorsL<V> colors = UniformColors(d, setup.material, setup.model);
   if (color) {
     const Vec3L<V> c{hn::LoadU(d, color[0]), hn::LoadU(d, color[1]), hn::LoadU(d, color[2])};
     colors = {c, c, hn::LoadU(d, color[3])};
   }
-  const TermsL<V> terms = ShadeEquation(d, setup.lights, setup.lightModel, setup.material, colors, setup.model, s);
+  TermsL<V> terms = ShadeEquation(d, setup.lights, setup.lightModel, setup.material, colors, setup.model, s);
+  if (open) terms.ambient = hn::LoadU(d, open) * terms.ambient;
   ClampedColor(d, terms, colors.alpha, r, g, b, a);
 }
 
 // Points [first, first + lanes) of `p`, read from and written to arrays offset by `first`.
 template <class D>
 HWY_INLINE void ShadeLanes(D d, const ShadeSetup& setup, const Real* const position[3], const Real* const normal[3],
-                           const Real* const color[4], Real* const out[4]) {
+                           const Real* const color[4], const Real* open, Real* const out[4]) {
   using V = hn::VFromD<D>;
   SurfaceL<V> s;
   s.P = {hn::LoadU(d, position[0]), hn::LoadU(d, position[1]), hn::LoadU(d, position[2])};
   s.N = {hn::LoadU(d, normal[0]), hn::LoadU(d, normal[1]), hn::LoadU(d, normal[2])};
   V r, g, b, a;
-  LitColor(d, setup, s, color[0] ? color : nullptr, r, g, b, a);
+  LitColor(d, setup, s, color[0] ? color : nullptr, open, r, g, b, a);
   hn::StoreU(r, d, out[0]);
   hn::StoreU(g, d, out[1]);
   hn::StoreU(b, d, out[2]);
@@ -54,12 +56,12 @@ void ShadePoints(const ShadeSetup& setup, const SurfacePoints& p, Real* const ou
     const Real* color[4] = {};
     if (colored) color[0] = p.color[0] + i, color[1] = p.color[1] + i, color[2] = p.color[2] + i, color[3] = p.color[3] + i;
     Real* const dst[4] = {out[0] + i, out[1] + i, out[2] + i, out[3] + i};
-    ShadeLanes(d, setup, position, normal, color, dst);
+    ShadeLanes(d, setup, position, normal, color, p.ambientOpen ? p.ambientOpen + i : nullptr, dst);
   }
   if (i == p.count) return;
   // The last few points: copied into full vectors, the spare lanes repeating the last point.
   constexpr std::size_t kMax = hn::MaxLanes(d);
-  HWY_ALIGN Real in[10][kMax], result[4][kMax];
+  HWY_ALIGN Real in[11][kMax], result[4][kMax];
   const Real* const* sources[3] = {p.position, p.normal, p.color};
   for (std::size_t k = 0; k < lanes; ++k) {
     const std::size_t from = std::min(i + k, p.count - 1);
@@ -67,13 +69,14 @@ void ShadePoints(const ShadeSetup& setup, const SurfacePoints& p, Real* const ou
       const Real* src = sources[a < 3 ? 0 : a < 6 ? 1 : 2][a < 3 ? a : a < 6 ? a - 3 : a - 6];
       in[a][k] = src ? src[from] : Real(0);
     }
+    in[10][k] = p.ambientOpen ? p.ambientOpen[from] : Real(1);
   }
   const Real* position[3] = {in[0], in[1], in[2]};
   const Real* normal[3] = {in[3], in[4], in[5]};
   const Real* color[4] = {};
   if (colored) color[0] = in[6], color[1] = in[7], color[2] = in[8], color[3] = in[9];
   Real* const dst[4] = {result[0], result[1], result[2], result[3]};
-  ShadeLanes(d, setup, position, normal, color, dst);
+  ShadeLanes(d, setup, position, normal, color, p.ambientOpen ? in[10] : nullptr, dst);
   for (std::size_t k = 0; i + k < p.count; ++k)
     for (int c = 0; c < 4; ++c) out[c][i + k] = result[c][k];
 }
@@ -134,7 +137,7 @@ class EdgeLanes {
     s.N = {hn::Load(d, plane_[3]), hn::Load(d, plane_[4]), hn::Load(d, plane_[5])};
     const Real* color[4] = {plane_[6], plane_[7], plane_[8], plane_[9]};
     V r, g, b, a;
-    LitColor(d, setups_[owner_], s, colored_[owner_] ? color : nullptr, r, g, b, a);
+    LitColor(d, setups_[owner_], s, colored_[owner_] ? color : nullptr, nullptr, r, g, b, a);
     HWY_ALIGN std::uint32_t packed[hn::MaxLanes(du)];
     hn::Store(PackUnorm8(d, r, g, b, a), du, packed);
     for (std::size_t k = 0; k < n; ++k) rgba_[pixel_[k]] = packed[k];
@@ -171,7 +174,7 @@ void ShadeOwnedPoints(std::span<const ShadeSetup> setups, std::span<const std::u
     if (hn::AllTrue(du, owners == hn::Set(du, first))) {  // a whole vector of one owner: lit as it is
       const Real* color[4] = {p.color[0] + i, p.color[1] + i, p.color[2] + i, p.color[3] + i};
       V r, g, b, a;
-      LitColor(d, setups[first], s, colored[first] ? color : nullptr, r, g, b, a);
+      LitColor(d, setups[first], s, colored[first] ? color : nullptr, nullptr, r, g, b, a);
       hn::StoreU(PackUnorm8(d, r, g, b, a), du, rgba + i);
       continue;
     }

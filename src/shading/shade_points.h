@@ -25,12 +25,16 @@ struct SurfacePoints {
   const Real* position[3] = {};
   const Real* normal[3] = {};  // unit, of the side being lit (−N for a back face)
   const Real* color[4] = {};   // GL_COLOR_MATERIAL: each point's ambient and diffuse; null: the material's
+  // Ambient occlusion: the open share of each point's hemisphere, which scales its ambient term
+  // (the light arriving from everywhere); null: all open.
+  const Real* ambientOpen = nullptr;
 };
 
 // out[c][i] = channel c of point i's clamped colour (what clampedColor(evaluateTerms(...)) gives).
 void shadePoints(const ShadeSetup& setup, const SurfacePoints& points, Real* const out[4]);
 
-// Lights the points that have an owner (owner[i] != kNoOwner) with that owner's setup, and with the
+// Lights the points that have an owner (owner[i] != kNoOwner) with that owner's setup (without
+// ambient occlusion: frames that trace it light their points by shadePoints), and with the
 // points' own colours where colored[owner]; writes each lit point's colour to rgba[i] as an RGBA8
 // word (toUnorm8 per channel, R in the lowest byte). The arrays are read in whole vectors: they
 // must hold `count` rounded up to a multiple of 16 values. Float channels only (ILLUM_DOUBLE=OFF).

@@ -1,12 +1,8 @@
 #include "trace/ambient_occlusion.h"
 
-#include "math/unorm8.h"
-#include "trace/camera_rays.h"
 #include "trace/ray_scene.h"
 #include "trace/sampling.h"
 #include "trace/surface_hit.h"
-
-#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
@@ -53,46 +49,20 @@ Real occlusionDistance(const Scene& scene) {
   return std::isfinite(diagonal) && diagonal > 0 ? diagonal / 5 : Real(1);
 }
 
-void applyAmbientOcclusion(const Scene& scene, Image& image) {
-  if (!scene.ambientOcclusion.enabled || scene.objects.empty()) return;
-  const RayScene rays(scene);
-  const CameraRays camera(scene.camera, scene.width, scene.height);
-  std::vector<EyeLight> lights;
-  const Mat4 viewFromWorld = scene.camera.viewFromWorld();
-  for (const Light& l : scene.lights) lights.push_back(toEyeSpace(l, viewFromWorld));
-  const Real distance = occlusionDistance(scene);
-  const int count = std::clamp(scene.ambientOcclusion.rays, 1, 256);
-  tbb::parallel_for(0, scene.height, [&](int y) {
-    for (int x = 0; x < scene.width; ++x) {
-      const Ray ray = camera.through(Real(x) + Real(0.5), Real(y) + Real(0.5));
-      RayHit hit;
-      if (!rays.intersect(ray, hit)) continue;
-      HitPoint h = hitPoint(rays, ray, hit);
-      const EyeMesh& mesh = rays.mesh(hit.object);
-      const Object& object = *h.object;
-      // The material and normal as the rasterizer sees them here.
-      const Real length = hit.t * glm::length(ray.direction);
-      const RayCone cone{camera.pixelWidthAt(0), camera.pixelWidthAt(1) - camera.pixelWidthAt(0), false, {}, {}};
-      const PointMaterial point = materialAtHit(mesh, h, ray, cone, cone.width + cone.spread * length, scene.model,
-                                                scene.shading == Shading::Phong);
-      const Material& material = point.material;
-      const LightingModel model = point.model;
-      // Lit on the side the camera sees.
-      const Vec3 toEye = -glm::normalize(ray.direction);
-      const Vec3 facet = glm::dot(h.geometricNormal, toEye) >= 0 ? h.geometricNormal : -h.geometricNormal;
-      const Vec3 N = glm::dot(h.normal, facet) >= 0 ? h.normal : -h.normal;
-      const SurfaceGeometry g{h.position, N, viewerDirection(h.position, scene.lightModel.localViewer)};
-      const LightingTerms terms = evaluateTerms(lights, scene.lightModel, material, model, g);
-      if (terms.ambient == Color3(0)) continue;
-      const Real open = openShare(rays, h.position, N, facet, count, distance, sampleSeed(x, y, 0, 7));
-      // What the clamped colour loses: min(sum, 1) − min(sum − (1 − k)·a, 1), per channel.
-      const Color3 sum = terms.sum(), occluded = sum - (1 - open) * terms.ambient;
-      const Color3 loss = glm::min(sum, Color3(1)) - glm::min(occluded, Color3(1));
-      const Color3 factor(point.modulation());
-      std::uint8_t* p = image.pixel(x, y);
-      for (int c = 0; c < 3; ++c) p[c] = toUnorm8(Real(p[c]) / 255 - loss[c] * factor[c]);
-    }
-  });
+TracedOcclusion::TracedOcclusion(const Scene& scene)
+    : rays_(std::make_unique<RayScene>(scene)), distance_(occlusionDistance(scene)),
+      count_(std::clamp(scene.ambientOcclusion.rays, 1, 256)) {}
+
+TracedOcclusion::~TracedOcclusion() = default;
+
+void TracedOcclusion::open(std::size_t count, const Real* const position[3], const Real* const normal[3],
+                           const std::uint64_t* seed, Real* open) const {
+  for (std::size_t i = 0; i < count; ++i) {
+    const Vec3 P(position[0][i], position[1][i], position[2][i]);
+    const Vec3 N(normal[0][i], normal[1][i], normal[2][i]);
+    // (The interpolated normal stands for the facet too: the rays leave on the side it faces.)
+    open[i] = openShare(*rays_, P, N, N, count_, distance_, sampleSeed(int(seed[i] >> 32), int(seed[i]), 0, 7));
+  }
 }
 
 }  // namespace illum

@@ -1,18 +1,33 @@
-// Ambient occlusion for the rasterizer's picture: at each pixel's centre, a camera ray finds the
-// surface, rays over its hemisphere (cosine-weighted, stratified, seeded by the pixel alone) find
-// how much of it is open within a distance, and the pixel loses that share of its ambient term.
-// Ray-traced on Embree, so it has none of screen-space AO's halos or missing occluders.
+// Ambient occlusion for the rasterizer, ray-traced on Embree: at each point it lights (a pixel's
+// visible surface, or a vertex for flat and Gouraud shading), rays over the hemisphere of the side
+// it lights (cosine-weighted, stratified, seeded by the point's own number) find how much of it is
+// open within a distance, and that share scales the point's ambient term (shading/occlusion.h)
+// before its colour is quantised. None of screen-space AO's halos or missing occluders.
 #pragma once
 
-#include <illum/image.h>
 #include <illum/scene.h>
+
+#include "shading/occlusion.h"
+
+#include <memory>
 
 namespace illum {
 
-// Darkens `image` (the rasterizer's linear bytes, rows top to bottom, before display encoding):
-// each pixel's lit colour c = clamp(e + a + d + s)·t becomes clamp(e + k·a + d + s)·t, with the
-// terms evaluated at the pixel centre's surface point and t GL_MODULATE's texel.
-void applyAmbientOcclusion(const Scene& scene, Image& image);
+class RayScene;
+
+class TracedOcclusion final : public OcclusionQuery {
+ public:
+  // The scene's triangles in one BVH, and its occlusion settings (rays, distance).
+  explicit TracedOcclusion(const Scene& scene);
+  ~TracedOcclusion() override;
+  void open(std::size_t count, const Real* const position[3], const Real* const normal[3], const std::uint64_t* seed,
+            Real* open) const override;
+
+ private:
+  std::unique_ptr<RayScene> rays_;
+  Real distance_;
+  int count_;
+};
 
 // The distance occlusion rays travel in a scene: as set, else a fifth of its bounds' diagonal.
 Real occlusionDistance(const Scene& scene);

@@ -1,6 +1,6 @@
 // Ambient occlusion against closed forms: an open plane keeps all of its ambient light, a floor
 // beside a wall keeps half (the wall hides half of the cosine-weighted hemisphere), and in the
-// corner of two walls a quarter.
+// corner of two walls a quarter; per pixel under Phong shading, per vertex under flat and Gouraud.
 #include "trace/ambient_occlusion.h"
 
 #include <illum/render.h>
@@ -75,6 +75,38 @@ TEST(AmbientOcclusion, AWallHidesHalfAndTwoWallsThreeQuarters) {
   // The same bytes on one thread.
   const tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
   EXPECT_EQ(renderScene(s).rgba, two.rgba);
+}
+
+// Flat and Gouraud shading light the vertices: each vertex's ambient is occluded as seen from it,
+// and the pixels between take the vertices' colours. A strip of floor beside a wall, every vertex
+// far nearer the wall than its size, keeps half at every vertex, so everywhere.
+TEST(AmbientOcclusion, VerticesLitBesideAWallKeepHalf) {
+  for (Shading shading : {Shading::Flat, Shading::Gouraud}) {
+    Scene s = floorScene();
+    s.shading = shading;
+    s.objects.clear();
+    // (The wall reaches far past the strip's ends, which its rays, 1000 long, never see beyond.)
+    s.objects.push_back(plane({0.01f, 0, 500}, {0.3f, 0, 500}, {0.3f, 0, -500}, {0.01f, 0, -500}));
+    s.objects.push_back(plane({0, 0, 5000}, {0, 0, -5000}, {0, 5000, -5000}, {0, 5000, 5000}));
+    const Image off = renderScene(s);
+    EXPECT_EQ(off.pixel(36, 32)[0], 204) << toString(shading);
+    s.ambientOcclusion.enabled = true;
+    EXPECT_NEAR(meanRed(renderScene(s), 33, 41, 8, 56), 0.8 * 0.5 * 255, 8) << toString(shading);
+  }
+}
+
+// Multisampled, each pixel is lit once per surface it shows, at its centre, with that surface's
+// occlusion: a pixel a surface covers whole is as one sample draws it.
+TEST(AmbientOcclusion, MultisampledPixelsKeepTheirOneSampleOcclusion) {
+  Scene s = floorScene();
+  s.ambientOcclusion.enabled = true;
+  const Real far = 500, high = 500;
+  s.objects.push_back(plane({0, 0, far}, {0, 0, -far}, {0, high, -far}, {0, high, far}));
+  const Image one = renderScene(s);
+  s.multisample = 8;
+  const Image eight = renderScene(s);
+  for (int y = 8; y < 56; ++y)
+    for (int x = 34; x < 60; ++x) ASSERT_EQ(eight.pixel(x, y)[0], one.pixel(x, y)[0]) << x << "," << y;
 }
 
 TEST(AmbientOcclusion, OccludersBeyondTheDistanceDoNotCount) {

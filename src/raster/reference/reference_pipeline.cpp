@@ -20,7 +20,7 @@ void drawPass(const Scene& scene, const FrameContext& frame, Framebuffer& fb, Re
     if (object->mesh->triangleCount() == 0) continue;  // the oracle is for triangles
     const auto index = std::uint32_t(object - scene.objects.data());
     vertices.resize(object->mesh->positions.size());
-    runVertexStage(frame, *object, vertices, 0, vertices.size());
+    runVertexStage(frame, *object, index, vertices, 0, vertices.size());
     records.reset(target.layouts[index]);
     stats.trianglesIn += object->mesh->triangleCount();
     stats.trianglesDrawn += setupTriangles(frame, *object, index, vertices, 0, object->mesh->triangleCount(), records);
@@ -33,8 +33,9 @@ void drawPass(const Scene& scene, const FrameContext& frame, Framebuffer& fb, Re
 // Multisampled, the way multisampling was first done on one thread: one whole pass per sample
 // position into a framebuffer of its own (coverage and depth at the sample, the colour at the
 // pixel centre), then the passes averaged.
-void drawSceneReference(const Scene& scene, Image& image, RenderStats& stats) {
+void drawSceneReference(const Scene& scene, Image& image, RenderStats& stats, const OcclusionQuery* occlusion) {
   FrameContext frame = FrameContext::fromScene(scene);
+  frame.occlusion = occlusion;
   const std::span<const SubpixelOffset> samples = multisamplePattern(scene.multisample);
   frame.multisampled = samples.size() > 1;
   std::vector<Image> passes;

@@ -5,10 +5,13 @@
 
 #include <illum/render.h>
 
+#include "shading/occlusion.h"
+
 namespace illum {
 
 // The scene's linear 8-bit picture, as RasterPipeline::draw gives it (render/ finishes both the
 // same way: render/reference_render.h).
-void drawSceneReference(const Scene& scene, Image& image, RenderStats& stats);
+void drawSceneReference(const Scene& scene, Image& image, RenderStats& stats,
+                        const OcclusionQuery* occlusion = nullptr);
 
 }  // namespace illum
