@@ -28,6 +28,13 @@ struct VisibleSamples {
   template <class F>
   void forEachShown(int index, F&& f) const {
     const std::uint32_t* shown = winners + std::size_t(index) * std::size_t(count);
+    // Most pixels show one record in every sample.
+    int same = 1;
+    while (same < count && shown[same] == shown[0]) ++same;
+    if (same == count) {
+      if (shown[0] != kNoWinner) f(index, shown[0]);
+      return;
+    }
     for (int s = 0; s < count; ++s) {
       const std::uint32_t slot = shown[s];
       if (slot == kNoWinner) continue;
