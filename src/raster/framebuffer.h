@@ -37,6 +37,14 @@ struct TileMemory {
 // The framebuffer keeps `samples` samples per pixel (multisampling), side by side: sample s of
 // the tile's pixel i is at i·samples + s, so that a vector holds whole pixels' samples and a
 // pixel's samples lie together for the resolve. One sample is the plain layout.
+// Source-over blending of `c` onto the RGBA8 pixel `p`: RGB by (SRC_ALPHA, ONE_MINUS_SRC_ALPHA),
+// alpha by (ONE, ONE_MINUS_SRC_ALPHA).
+inline void blendOver(std::uint8_t* p, const Color4& c) {
+  const Real a = std::clamp(c.a, Real(0), Real(1));
+  for (int i = 0; i < 3; ++i) p[i] = toUnorm8(std::clamp(c[i], Real(0), Real(1)) * a + Real(p[i]) / 255 * (1 - a));
+  p[3] = toUnorm8(a + Real(p[3]) / 255 * (1 - a));
+}
+
 class Framebuffer {
  public:
   Framebuffer() = default;
@@ -71,13 +79,7 @@ class Framebuffer {
     for (int i = 0; i < 4; ++i) p[i] = toUnorm8(c[i]);
   }
 
-  // Source-over blending: RGB by (SRC_ALPHA, ONE_MINUS_SRC_ALPHA), alpha by (ONE, ONE_MINUS_SRC_ALPHA).
-  void blendColor(int x, int y, const Color4& c, int sample = 0) {
-    std::uint8_t* p = colorAt(x, y, sample);
-    const Real a = std::clamp(c.a, Real(0), Real(1));
-    for (int i = 0; i < 3; ++i) p[i] = toUnorm8(std::clamp(c[i], Real(0), Real(1)) * a + Real(p[i]) / 255 * (1 - a));
-    p[3] = toUnorm8(a + Real(p[3]) / 255 * (1 - a));
-  }
+  void blendColor(int x, int y, const Color4& c, int sample = 0) { blendOver(colorAt(x, y, sample), c); }
 
   // The picture as an image file stores it: row 0 at the top, each pixel its samples resolved.
   Image toImage() const;

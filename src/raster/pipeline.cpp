@@ -200,11 +200,8 @@ class BinnedFrame {
     while (opaque < list.records.size() && !target_.blends(*list.records[opaque])) ++opaque;
     if (opaque > 0 || !tiny.empty())
       fragments += drawOpaqueTile(target_, std::span(list.records).first(opaque), tiny, rect, scratch, planes);
-    for (std::size_t i = opaque; i < list.records.size(); ++i) {
-      if (samples_ == 1) drawRecord(target_, *list.records[i], rect, fragments);
-      else
-        for (int s = 0; s < samples_; ++s) drawRecord(target_, *list.records[i], rect, fragments, s);
-    }
+    if (opaque < list.records.size())
+      fragments += drawBlendedTile(target_, std::span(list.records).subspan(opaque), rect, scratch, planes);
   }
 
   RenderStats stats() const {

@@ -128,6 +128,24 @@ std::size_t drawMultisampledTile(const DrawTarget& target, std::span<const DrawR
 
 }  // namespace
 
+std::size_t drawBlendedTile(const DrawTarget& target, std::span<const DrawRecord* const> records, const PixelRect& rect,
+                            TileScratch& scratch, const SampleTiles& tiles) {
+  std::uint32_t* winners = scratch.winners.data();
+  const SamplePlanes planes{tiles.count, target.frame.samples.data(), tiles.depth, tiles.color, winners};
+  const VisibleSamples out{tiles.count, tiles.color, winners};
+  VisibleShader shader(target, records, rect, scratch.visible(), out);
+  std::size_t fragments = 0;
+  for (std::size_t i = 0; i < records.size(); ++i) {
+    const TriangleSetup& t = records[i]->setup;
+    const std::size_t passed = tiles.count == 1 ? rasterizeDepth(t, rect, tiles.depth, std::uint32_t(i), winners)
+                                                : rasterizeSamples(t, rect, planes, std::uint32_t(i));
+    if (passed == 0) continue;
+    fragments += passed;
+    shader.blendRecord(std::uint32_t(i), scratch.shown);
+  }
+  return fragments;
+}
+
 // One sample: each record by its route, in submission order, with the tiny triangles' pixels
 // where their counts of records put them. Colored pixels are written as found; a Surface pixel
 // keeps its surface (and owner) to be lit once when the tile is done; a Deferred pixel keeps its

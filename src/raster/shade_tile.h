@@ -65,4 +65,11 @@ struct TinyPixels {
 std::size_t drawOpaqueTile(const DrawTarget& target, std::span<const DrawRecord* const> records, const TinyPixels& tiny,
                            const PixelRect& rect, TileScratch& scratch, const SampleTiles& tiles);
 
+// Draws the translucent `records` (the tile's, after the opaque ones, farthest first) into the
+// tile, blending: each record's coverage and depth test (writing depth) at every sample, then its
+// pixels' colours in SIMD lanes as the deferred ones are found (shade_visible.h), blended over the
+// samples it covers (source-over), record after record. Returns the fragments (samples) that passed.
+std::size_t drawBlendedTile(const DrawTarget& target, std::span<const DrawRecord* const> records, const PixelRect& rect,
+                            TileScratch& scratch, const SampleTiles& tiles);
+
 }  // namespace illum

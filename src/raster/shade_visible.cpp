@@ -347,9 +347,45 @@ void VisibleShader::flush() {
   } else {
     for (int c = 0; c < 4; ++c) std::copy_n(b_.color[c], b_.count, b_.lit[c]);
   }
-  finishVisible(layout_, b_);
-  for (std::size_t k = 0; k < b_.count; ++k) out_.write(int(b_.pixel[k]), b_.slot[k], b_.rgba[k]);
+  if (blending_) {
+    // Each pixel's colour (GL_MODULATE's product too) blended over its samples, in float.
+    const bool modulate = layout_.texture && !layout_.baseTexel;
+    for (std::size_t k = 0; k < b_.count; ++k) {
+      const Color4 lit(b_.lit[0][k], b_.lit[1][k], b_.lit[2][k], b_.lit[3][k]);
+      out_.blend(int(b_.pixel[k]), b_.slot[k],
+                 modulate ? lit * Vec4(b_.texel[0][k], b_.texel[1][k], b_.texel[2][k], b_.texel[3][k]) : lit);
+    }
+  } else {
+    finishVisible(layout_, b_);
+    for (std::size_t k = 0; k < b_.count; ++k) out_.write(int(b_.pixel[k]), b_.slot[k], b_.rgba[k]);
+  }
   b_.count = 0;
+}
+
+void VisibleShader::write(int index, std::uint32_t slot, const Color4& c) const {
+  if (blending_) out_.blend(index, slot, c);
+  else out_.write(index, slot, packUnorm8(c));
+}
+
+void VisibleShader::blendRecord(std::uint32_t slot, ShownLists& lists) {
+  const TriangleSetup& t = records_[slot]->setup;
+  const int minX = std::max(t.minX, rect_.minX), maxX = std::min(t.maxX, rect_.maxX);
+  const int minY = std::max(t.minY, rect_.minY), maxY = std::min(t.maxY, rect_.maxY);
+  if (minX > maxX || minY > maxY) return;
+  // Its pixels: those of its bounds some sample of which shows it.
+  lists.pixels.clear();
+  for (int y = minY; y <= maxY; ++y)
+    for (int x = minX; x <= maxX; ++x) {
+      const int index = (y - rect_.minY) * kTileSize + (x - rect_.minX);
+      if (out_.shows(index, slot)) lists.pixels.push_back(std::uint32_t(index));
+    }
+  const std::size_t count = lists.pixels.size();
+  if (count == 0) return;
+  lists.pixels.resize(count + 16);  // room for a vector read past the last
+  blending_ = true;
+  shade(slot, lists.pixels.data(), count);
+  flush();
+  blending_ = false;
 }
 
 // A pixel whose material or normal comes from glTF's maps: lit on its own (fragment.h).
@@ -359,7 +395,7 @@ void VisibleShader::shadeMapped(const Object& object, int index, std::uint32_t s
   const MappedSurface surface = mappedSurface(target_.frame, object, r, target_.layout(r), l0, l1, l2);
   const Color4 lit = shadeMappedFragment(target_.frame, surface, OcclusionQuery::pixelSeed(x, y, target_.frame.width));
   const Vec4* texel = surface.point.textured ? &surface.point.texel : nullptr;
-  out_.write(index, slot, packUnorm8(texel && !surface.point.texelIsBaseColor ? lit * *texel : lit));
+  write(index, slot, texel && !surface.point.texelIsBaseColor ? lit * *texel : lit);
 }
 
 }  // namespace illum

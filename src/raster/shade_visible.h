@@ -22,7 +22,7 @@ namespace illum {
 struct VisibleSamples {
   int count = 1;
   std::uint32_t* color;
-  const std::uint32_t* winners;
+  std::uint32_t* winners;
 
   // f(index, slot) once for each record that some sample of pixel `index` shows, in sample order.
   template <class F>
@@ -48,8 +48,22 @@ struct VisibleSamples {
     for (int s = 0; s < count; ++s)
       if (winners[at + std::size_t(s)] == slot) color[at + std::size_t(s)] = rgba;
   }
-  // The watched pixel reports what its first sample shows.
-  bool reported(int index, std::uint32_t slot) const { return winners[std::size_t(index) * std::size_t(count)] == slot; }
+  // A translucent record's colour over what each sample that shows it holds (blendOver); the
+  // samples then show no record.
+  void blend(int index, std::uint32_t slot, const Color4& c) const {
+    const std::size_t at = std::size_t(index) * std::size_t(count);
+    for (int s = 0; s < count; ++s)
+      if (winners[at + std::size_t(s)] == slot) {
+        blendOver(reinterpret_cast<std::uint8_t*>(color + at + std::size_t(s)), c);
+        winners[at + std::size_t(s)] = kNoWinner;
+      }
+  }
+  bool shows(int index, std::uint32_t slot) const {
+    const std::size_t at = std::size_t(index) * std::size_t(count);
+    for (int s = 0; s < count; ++s)
+      if (winners[at + std::size_t(s)] == slot) return true;
+    return false;
+  }
 };
 
 // What the lanes of one record see, the same in every lane: where its per-vertex values sit
@@ -115,10 +129,14 @@ class VisibleShader {
       : target_(target), records_(records), rect_(rect), b_(batch), out_(out) {}
   // Every record of the tile that some pixel shows, in submission order.
   void shadeAll(ShownLists& lists);
+  // A translucent record's pixels just found (its slot in their samples' winners), blended over
+  // what they hold.
+  void blendRecord(std::uint32_t slot, ShownLists& lists);
 
  private:
   void shade(std::uint32_t slot, const std::uint32_t* pixels, std::size_t count);
   void flush();
+  void write(int index, std::uint32_t slot, const Color4& c) const;
   void shadeMapped(const Object& object, int index, std::uint32_t slot, const DrawRecord& r);
   const DrawTarget& target_;
   std::span<const DrawRecord* const> records_;
@@ -127,6 +145,7 @@ class VisibleShader {
   const VisibleSamples& out_;
   std::uint32_t object_ = 0;
   VisibleLayout layout_;
+  bool blending_ = false;
 };
 
 }  // namespace illum
