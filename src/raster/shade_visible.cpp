@@ -8,6 +8,7 @@
 
 #include "image/texture_lanes-inl.h"
 #include "raster/interpolate-inl.h"
+#include "shading/lane_math-inl.h"
 #include "raster/shade_visible.h"
 
 #include <algorithm>
@@ -17,41 +18,73 @@ HWY_BEFORE_NAMESPACE();
 namespace illum::HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
-// The record's texel at each lane's pixel: its uv, and how uv changes one pixel right and one up
-// (texturePoint), trilinearly filtered for that footprint (sampleAt).
+// Where each lane's pixel falls on the textures (texturePoint): its uv, and how uv changes one
+// pixel right (dx) and one up (dy), from the barycentrics moved by the record's steps.
+template <class V>
+struct UvLanes {
+  V uv[2], dx[2], dy[2];
+};
 template <class D, class V = hn::VFromD<D>>
-HWY_INLINE void TexelLanes(D d, const VisibleLayout& layout, const ShownRecord& rec, const V (&l)[3], const V (&invW)[3],
-                           const V (&p)[3], V (&texel)[4]) {
+HWY_INLINE UvLanes<V> UvAt(D d, const VisibleLayout& layout, const ShownRecord& rec, const V (&l)[3], const V (&invW)[3],
+                           const V (&p)[3]) {
   const auto uvAt = [&](const V (&w)[3], V (&out)[2]) {
     for (int c = 0; c < 2; ++c)
       out[c] = Blend(w, hn::Set(d, rec.vertex[0][layout.uv + c]), hn::Set(d, rec.vertex[1][layout.uv + c]),
                      hn::Set(d, rec.vertex[2][layout.uv + c]));
   };
-  V at[2];
-  uvAt(p, at);
-  V length[2];
-  const V size[2] = {hn::Set(d, Real(layout.texture->width())), hn::Set(d, Real(layout.texture->height()))};
+  UvLanes<V> u;
+  uvAt(p, u.uv);
   for (int axis = 0; axis < 2; ++axis) {
     const Real(&step)[3] = axis == 0 ? rec.stepX : rec.stepY;
     V w[3], moved[2];
     PerspectiveWeights(l[0] + hn::Set(d, step[0]), l[1] + hn::Set(d, step[1]), l[2] + hn::Set(d, step[2]), invW[0],
                        invW[1], invW[2], w);
     uvAt(w, moved);
-    const V x = (moved[0] - at[0]) * size[0], y = (moved[1] - at[1]) * size[1];
-    length[axis] = hn::Sqrt(x * x + y * y);
+    V(&delta)[2] = axis == 0 ? u.dx : u.dy;
+    for (int c = 0; c < 2; ++c) delta[c] = moved[c] - u.uv[c];
   }
-  const V footprint = hn::IfThenElse(length[0] < length[1], length[1], length[0]);  // std::max's choice
+  return u;
+}
+
+// A texture's texel at each lane's point, trilinearly filtered for its footprint there (sampleAt).
+template <class D, class V = hn::VFromD<D>>
+HWY_INLINE void TexelLanes(D d, const Texture& texture, const UvLanes<V>& at, V (&texel)[4]) {
+  const V width = hn::Set(d, Real(texture.width())), height = hn::Set(d, Real(texture.height()));
+  const V x0 = at.dx[0] * width, y0 = at.dx[1] * height, x1 = at.dy[0] * width, y1 = at.dy[1] * height;
+  const V right = hn::Sqrt(x0 * x0 + y0 * y0), up = hn::Sqrt(x1 * x1 + y1 * y1);
+  const V footprint = hn::IfThenElse(right < up, up, right);  // std::max's choice
 #if !ILLUM_USE_DOUBLE
-  SampleTextureLanes(d, *layout.texture, at[0], at[1], footprint, texel);
+  SampleTextureLanes(d, texture, at.uv[0], at.uv[1], footprint, texel);
 #else
   HWY_ALIGN Real u[hn::MaxLanes(d)], v[hn::MaxLanes(d)], f[hn::MaxLanes(d)], out[4][hn::MaxLanes(d)];
-  hn::Store(at[0], d, u), hn::Store(at[1], d, v), hn::Store(footprint, d, f);
+  hn::Store(at.uv[0], d, u), hn::Store(at.uv[1], d, v), hn::Store(footprint, d, f);
   for (std::size_t k = 0; k < hn::Lanes(d); ++k) {
-    const Vec4 t = layout.texture->sample(Vec2(u[k], v[k]), f[k]);
+    const Vec4 t = texture.sample(Vec2(u[k], v[k]), f[k]);
     for (int c = 0; c < 4; ++c) out[c][k] = t[c];
   }
   for (int c = 0; c < 4; ++c) texel[c] = hn::Load(d, out[c]);
 #endif
+}
+
+// normalFromMap over lanes: the tangent-space normal of the map's texel in the frame of the unit
+// (front) normal N, the record's ∂P/∂u made orthogonal to it, and the bitangent N × T on the side
+// ∂P/∂v points to; N where that frame or the normal is degenerate.
+template <class D, class V = hn::VFromD<D>>
+HWY_INLINE Vec3L<V> NormalFromMapLanes(D d, const Vec3L<V>& N, const ShownRecord& rec, const V (&texel)[4], Real scale) {
+  const Vec3L<V> dPdu = Broadcast(d, rec.dPdu), dPdv = Broadcast(d, rec.dPdv);
+  const Vec3L<V> t = dPdu - Dot(dPdu, N) * N;
+  const V tLen = Length(t);
+  const auto framed = tLen > hn::Zero(d);
+  const Vec3L<V> T = t / hn::IfThenElse(framed, tLen, hn::Set(d, Real(1)));
+  const Vec3L<V> c{N.y * T.z - T.y * N.z, N.z * T.x - T.z * N.x, N.x * T.y - T.x * N.y};  // glm::cross(N, T)
+  const Vec3L<V> B = Select(Dot(c, dPdv) < hn::Zero(d), -c, c);
+  const V two = hn::Set(d, Real(2)), one = hn::Set(d, Real(1)), s = hn::Set(d, scale);
+  const V nx = (two * texel[0] - one) * s, ny = (two * texel[1] - one) * s, nz = two * texel[2] - one;
+  const Vec3L<V> perturbed = (nx * T + ny * B) + nz * N;
+  const V len = Length(perturbed);
+  const auto unit = len > hn::Zero(d);
+  const Vec3L<V> mapped = perturbed / hn::IfThenElse(unit, len, one);
+  return Select(hn::And(framed, unit), mapped, N);
 }
 
 // gatherShown, its pixels in the widest Real lanes. Their edge values are exact integers, the
@@ -138,14 +171,39 @@ HWY_INLINE void GatherShownIn(const VisibleLayout& layout, const ShownRecord& re
       for (int c = 0; c < 3; ++c) keep(unit[c], b.normal[c]);
       for (int c = 0; c < 4; ++c) color[c] = layout.color >= 0 ? blend(p, layout.color + c) : one;
     }
+    UvLanes<VR> uv;
+    if (layout.uv >= 0) uv = UvAt(dr, layout, rec, l, invW, p);
     if (layout.texture) {
       VR texel[4];
-      TexelLanes(dr, layout, rec, l, invW, p, texel);
+      TexelLanes(dr, *layout.texture, uv, texel);
       for (int c = 0; c < 4; ++c) keep(texel[c], b.texel[c]);
       // A base colour texture tints the material's (or the vertex's) colour before lighting.
       if (layout.baseTexel)
         for (int c = 0; c < 4; ++c)
           color[c] = (layout.color >= 0 ? color[c] : hn::Set(dr, layout.baseColor[c])) * texel[c];
+    }
+    // glTF's maps (withMapTexels, normalFromMap): the material and the normal at each pixel.
+    if (const MaterialMaps* maps = layout.maps) {
+      VR texel[4];
+      if (maps->metallicRoughness && layout.physical) {
+        TexelLanes(dr, *maps->metallicRoughness, uv, texel);
+        keep(hn::Set(dr, layout.metallic) * texel[2], b.metallic);
+        keep(hn::Set(dr, layout.roughness) * texel[1], b.roughness);
+      }
+      if (maps->emissive) {
+        TexelLanes(dr, *maps->emissive, uv, texel);
+        for (int c = 0; c < 3; ++c) keep(hn::Set(dr, layout.emission[c]) * texel[c], b.emission[c]);
+      }
+      if (maps->normal) {
+        TexelLanes(dr, *maps->normal, uv, texel);
+        // The map bends the front side's normal; two-sided lighting's back faces take its opposite.
+        VR n[3], front[3];
+        for (int c = 0; c < 3; ++c) n[c] = blend(p, layout.normal + c);
+        UnitNormal(n, hn::FirstN(dr, 0), front);
+        const Vec3L<VR> bent = NormalFromMapLanes(dr, Vec3L<VR>{front[0], front[1], front[2]}, rec, texel, maps->normalScale);
+        const VR out[3] = {bent.x, bent.y, bent.z};
+        for (int c = 0; c < 3; ++c) keep(rec.negate ? hn::Neg(out[c]) : out[c], b.normal[c]);
+      }
     }
     for (int c = 0; c < 4; ++c) keep(color[c], b.color[c]);
     hn::StoreU(index, du, b.pixel + at);
@@ -238,7 +296,14 @@ VisibleLayout layoutOf(const FrameContext& frame, const Object& object) {
     if (!object.mesh->colors.empty()) v.color = take(4);
   }
   v.texture = drawnTexture(object);
-  if (v.texture) v.uv = take(2);
+  if (mapsDrawn(object, frame.litPerPixel())) {
+    const Material& m = object.material;
+    v.maps = &object.maps;
+    v.physical = m.physicallyBased;
+    v.metallic = m.physical.metallic, v.roughness = m.physical.roughness;
+    v.emission = Color3(m.emission);
+  }
+  if (v.texture || v.maps) v.uv = take(2);
   v.baseTexel = texelIsBaseColor(object, frame.model, frame.litPerPixel());
   const Material& m = object.material;
   v.baseColor = Color4(physicalOf(m).baseColor, m.diffuse.a);
@@ -281,10 +346,6 @@ void VisibleShader::shade(std::uint32_t slot, const std::uint32_t* pixels, std::
   const DrawRecord& r = *records_[slot];
   const Object& object = target_.scene.objects[r.object];
   const TriangleSetup& t = r.setup;
-  if (mapsDrawn(object, target_.frame.litPerPixel())) {
-    for (std::size_t k = 0; k < count; ++k) shadeMapped(object, int(pixels[k]), slot, r);
-    return;
-  }
   if (b_.count > 0 && r.object != object_) flush();
   if (b_.count == 0) {
     object_ = r.object;
@@ -306,7 +367,13 @@ void VisibleShader::shade(std::uint32_t slot, const std::uint32_t* pixels, std::
   }
   rec.flat = r.flat;
   rec.negate = target_.frame.lightModel.twoSided && !t.frontFacing;
-  if (layout_.texture) {
+  if (layout_.maps && layout_.maps->normal) {
+    const VertexValues v[3] = {{r.vertex(0, a), a}, {r.vertex(1, a), a}, {r.vertex(2, a), a}};
+    const TangentFrame f =
+        triangleTangents({v[0].position(), v[1].position(), v[2].position()}, {v[0].uv(), v[1].uv(), v[2].uv()});
+    rec.dPdu = f.dPdu, rec.dPdv = f.dPdv;
+  }
+  if (layout_.uv >= 0) {
     // Screen-space barycentrics are linear: one pixel right adds a·256/area, one up adds b·256/area.
     const Real step = Real(kSubpixelOne) / Real(t.area2);
     for (int i = 0; i < 3; ++i)
@@ -332,6 +399,10 @@ void VisibleShader::flush() {
     for (int c = 0; c < 3; ++c) points.position[c] = b_.position[c], points.normal[c] = b_.normal[c];
     if (layout_.color >= 0 || layout_.baseTexel)
       for (int c = 0; c < 4; ++c) points.color[c] = b_.color[c];
+    if (layout_.maps && layout_.maps->metallicRoughness && layout_.physical)
+      points.metallic = b_.metallic, points.roughness = b_.roughness;
+    if (layout_.maps && layout_.maps->emissive)
+      for (int c = 0; c < 3; ++c) points.emission[c] = b_.emission[c];
     if (const OcclusionQuery* occlusion = target_.frame.occlusion) {
       // The ambient's open share at each pixel's point, seeded by the pixel.
       for (std::size_t k = 0; k < b_.count; ++k)
@@ -362,11 +433,6 @@ void VisibleShader::flush() {
   b_.count = 0;
 }
 
-void VisibleShader::write(int index, std::uint32_t slot, const Color4& c) const {
-  if (blending_) out_.blend(index, slot, c);
-  else out_.write(index, slot, packUnorm8(c));
-}
-
 void VisibleShader::blendRecord(std::uint32_t slot, ShownLists& lists) {
   const TriangleSetup& t = records_[slot]->setup;
   const int minX = std::max(t.minX, rect_.minX), maxX = std::min(t.maxX, rect_.maxX);
@@ -386,16 +452,6 @@ void VisibleShader::blendRecord(std::uint32_t slot, ShownLists& lists) {
   shade(slot, lists.pixels.data(), count);
   flush();
   blending_ = false;
-}
-
-// A pixel whose material or normal comes from glTF's maps: lit on its own (fragment.h).
-void VisibleShader::shadeMapped(const Object& object, int index, std::uint32_t slot, const DrawRecord& r) {
-  const int x = rect_.minX + index % kTileSize, y = rect_.minY + index / kTileSize;
-  const auto [l0, l1, l2] = centreBarycentrics(r.setup, x, y, target_.frame.sample);
-  const MappedSurface surface = mappedSurface(target_.frame, object, r, target_.layout(r), l0, l1, l2);
-  const Color4 lit = shadeMappedFragment(target_.frame, surface, OcclusionQuery::pixelSeed(x, y, target_.frame.width));
-  const Vec4* texel = surface.point.textured ? &surface.point.texel : nullptr;
-  write(index, slot, texel && !surface.point.texelIsBaseColor ? lit * *texel : lit);
 }
 
 }  // namespace illum

@@ -3,8 +3,9 @@
 // centres' barycentrics → perspective-correct weights → the draw's colour (flat, Gouraud's
 // interpolated one, or Phong's surface, lit by shadePoints a batch of the object's pixels at a
 // time) → the texel (texture_lanes-inl.h) → GL_MODULATE → RGBA8, written to every sample that
-// shows the record. The same bits as the one-pixel formulas of fragment.h; an object whose glTF
-// maps are drawn is lit pixel by pixel through them.
+// shows the record. glTF's maps are read in the lanes too (metallic, roughness, emission, the
+// normal map's bent normal), each pixel's material given to the lighting lane by lane. The same
+// bits as the one-pixel formulas of fragment.h.
 #pragma once
 
 #include "raster/draw.h"
@@ -74,6 +75,12 @@ struct VisibleLayout {
   const Texture* texture = nullptr;  // the object's drawn texture
   bool baseTexel = false;            // the texel tints the base colour before lighting
   Color4 baseColor{1};               // the material's base colour and alpha, for baseTexel without vertex colours
+  // glTF's maps, when drawn (mapsDrawn), and the material values they scale: a physically based
+  // material's metallic and roughness (`physical`), and the emission.
+  const MaterialMaps* maps = nullptr;
+  bool physical = false;
+  Real metallic = 0, roughness = 1;
+  Color3 emission{0};
 };
 
 struct ShownRecord {
@@ -84,6 +91,7 @@ struct ShownRecord {
   Color4 flat{0};           // flat shading: the provoking vertex's lit colour
   bool negate = false;      // a back face under two-sided lighting: lit with −N
   Real stepX[3], stepY[3];  // textured: how the barycentrics move one pixel right (a·256/area) and up (b·…)
+  Vec3 dPdu{0}, dPdv{0};    // a normal map's tangent frame (triangleTangents)
 };
 
 // The shown pixels of some records of one object, structure of arrays: their surface (Phong), the
@@ -98,6 +106,10 @@ struct VisibleBatch {
   alignas(64) Real color[4][kRoom];
   alignas(64) Real texel[4][kRoom];
   alignas(64) Real lit[4][kRoom];
+  // glTF's maps' values (the layout's): metallic, roughness and the emission.
+  alignas(64) Real metallic[kRoom];
+  alignas(64) Real roughness[kRoom];
+  alignas(64) Real emission[3][kRoom];
   alignas(64) std::uint32_t rgba[kRoom];
   alignas(64) std::uint32_t pixel[kRoom];  // index in the tile
   std::uint32_t slot[kRoom];
@@ -136,8 +148,6 @@ class VisibleShader {
  private:
   void shade(std::uint32_t slot, const std::uint32_t* pixels, std::size_t count);
   void flush();
-  void write(int index, std::uint32_t slot, const Color4& c) const;
-  void shadeMapped(const Object& object, int index, std::uint32_t slot, const DrawRecord& r);
   const DrawTarget& target_;
   std::span<const DrawRecord* const> records_;
   const PixelRect& rect_;

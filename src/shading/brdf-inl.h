@@ -58,9 +58,10 @@ inline Real Fd_Lambert() { return 1 / kPi; }
 
 // GGX / Trowbridge-Reitz normal distribution: α² / (π ((N·H)²(α² − 1) + 1)²).
 // B. Walter et al., "Microfacet Models for Refraction through Rough Surfaces", EGSR 2007, eq. 33.
+// (α per lane: glTF's metallic-roughness map varies it across a surface.)
 template <class D>
-HWY_INLINE hn::VFromD<D> D_GGX(D d, hn::VFromD<D> NoH, Real alpha) {
-  const auto a2 = hn::Set(d, alpha * alpha);
+HWY_INLINE hn::VFromD<D> D_GGX(D d, hn::VFromD<D> NoH, hn::VFromD<D> alpha) {
+  const auto a2 = alpha * alpha;
   const auto k = NoH * NoH * (a2 - hn::Set(d, Real(1))) + hn::Set(d, Real(1));
   return a2 / (hn::Set(d, kPi) * k * k);
 }
@@ -68,9 +69,9 @@ HWY_INLINE hn::VFromD<D> D_GGX(D d, hn::VFromD<D> NoH, Real alpha) {
 // Beckmann's distribution, Cook and Torrance's choice: exp(−tan²θ/α²) / (π α² cos⁴θ), θ = ∠(N, H).
 // Cook and Torrance 1982, eq. 5 (with m = α).
 template <class D>
-HWY_INLINE hn::VFromD<D> D_Beckmann(D d, hn::VFromD<D> NoH, Real alpha) {
+HWY_INLINE hn::VFromD<D> D_Beckmann(D d, hn::VFromD<D> NoH, hn::VFromD<D> alpha) {
   const auto c2 = NoH * NoH;
-  const auto a2 = hn::Set(d, alpha * alpha);
+  const auto a2 = alpha * alpha;
   const auto positive = c2 > hn::Zero(d);
   const auto safe = hn::IfThenElse(positive, c2, hn::Set(d, Real(1)));
   // −tan²θ/α² = (c² − 1)/(c² α²) ≤ 0.
@@ -83,8 +84,8 @@ HWY_INLINE hn::VFromD<D> D_Beckmann(D d, hn::VFromD<D> NoH, Real alpha) {
 // E. Heitz, "Understanding the Masking-Shadowing Function in Microfacet-Based BRDFs", JCGT 3(2),
 // 2014, eq. 99; the form of Filament's V_SmithGGXCorrelated.
 template <class D>
-HWY_INLINE hn::VFromD<D> V_SmithGGXCorrelated(D d, hn::VFromD<D> NoV, hn::VFromD<D> NoL, Real alpha) {
-  const auto a2 = hn::Set(d, alpha * alpha), one = hn::Set(d, Real(1));
+HWY_INLINE hn::VFromD<D> V_SmithGGXCorrelated(D d, hn::VFromD<D> NoV, hn::VFromD<D> NoL, hn::VFromD<D> alpha) {
+  const auto a2 = alpha * alpha, one = hn::Set(d, Real(1));
   const auto ggxV = NoL * hn::Sqrt(NoV * NoV * (one - a2) + a2);
   const auto ggxL = NoV * hn::Sqrt(NoL * NoL * (one - a2) + a2);
   return hn::Set(d, Real(0.5)) / (ggxV + ggxL);

@@ -34,11 +34,33 @@ inline Real MicrofacetAlpha(Real roughness) {
   return r * r;
 }
 
+// A physically based material over lanes: metallic and α per lane (glTF's metallic-roughness map
+// varies them across a surface), f0 and the distribution shared.
+template <class V>
+struct PhysicalL {
+  V metallic, alpha;
+  Vec3L<V> f0;
+  Microfacet distribution = Microfacet::GGX;
+};
+
+// The same material in every lane.
+template <class D, class V = hn::VFromD<D>>
+HWY_INLINE PhysicalL<V> UniformPhysical(D d, const PhysicalMaterial& m) {
+  return {hn::Set(d, m.metallic), hn::Set(d, MicrofacetAlpha(m.roughness)), Broadcast(d, m.f0), m.distribution};
+}
+
+// Each lane's metallic and perceptual roughness (α as MicrofacetAlpha makes it), the rest m's.
+template <class D, class V = hn::VFromD<D>>
+HWY_INLINE PhysicalL<V> LanePhysical(D d, const PhysicalMaterial& m, V metallic, V roughness) {
+  const V r = hn::Min(hn::Max(roughness, hn::Set(d, Real(0.045))), hn::Set(d, Real(1)));
+  return {metallic, r * r, Broadcast(d, m.f0), m.distribution};
+}
+
 // One light's terms for a physically based material; `base` and its ambient stand-in per lane
 // (vertex colours replace the base colour). N and V are unit vectors on the lit side.
 template <bool kRecord, class D, class V = hn::VFromD<D>>
 HWY_INLINE void AccumulateCookTorrance(D d, Vec3L<V>& ambientOut, Vec3L<V>& diffuseOut, Vec3L<V>& specularOut,
-                                       const EyeLight& light, const PhysicalMaterial& m, const Vec3L<V>& base,
+                                       const EyeLight& light, const PhysicalL<V>& m, const Vec3L<V>& base,
                                        const Vec3L<V>& P, const Vec3L<V>& N, const Vec3L<V>& toViewer,
                                        LightDetail* record) {
   // Where is the light.
@@ -56,7 +78,7 @@ HWY_INLINE void AccumulateCookTorrance(D d, Vec3L<V>& ambientOut, Vec3L<V>& diff
     return;  // no lane sees this light
   }
   // How the surface answers.
-  const Real alpha = MicrofacetAlpha(m.roughness);
+  const V alpha = m.alpha;
   const Vec3L<V> H = ls.L + toViewer;
   const V len = Length(H);
   const auto defined = len > hn::Set(d, Real(1e-6));
@@ -68,8 +90,8 @@ HWY_INLINE void AccumulateCookTorrance(D d, Vec3L<V>& ambientOut, Vec3L<V>& diff
   const V NoLlit = hn::ZeroIfNegative(NoL);
   const V Dist = m.distribution == Microfacet::GGX ? D_GGX(d, NoH, alpha) : D_Beckmann(d, NoH, alpha);
   const V Vis = V_SmithGGXCorrelated(d, NoV, NoLlit, alpha);
-  const V metallic = hn::Set(d, m.metallic), dielectric = one - metallic;
-  const Vec3L<V> f0 = dielectric * Broadcast(d, m.f0) + metallic * base;
+  const V metallic = m.metallic, dielectric = one - metallic;
+  const Vec3L<V> f0 = dielectric * m.f0 + metallic * base;
   const Vec3L<V> F = F_Schlick(d, VoH, f0);
   const Vec3L<V> ones{one, one, one};
   const V weight = hn::IfThenElseZero(lit, scale * NoLlit);

@@ -191,10 +191,11 @@ HWY_INLINE void AccumulateGlLight(D d, LightSumsL<V>& sums, const EyeLight& ligh
 
 // One light under the model: a GL material's answer added to `sums` (AddLightSums applies the
 // material's colours), or a physically based one's, whose colours vary with the light (Fresnel's
-// F), added to `terms` as it is (`physical` is physicalOf(material), computed once by the caller).
+// F), added to `terms` as it is (`physical` is physicalOf(material) over the lanes, made once by
+// the caller).
 template <bool kRecord, class D, class V = hn::VFromD<D>>
 HWY_INLINE void AccumulateLight(D d, TermsL<V>& terms, LightSumsL<V>& sums, const EyeLight& light,
-                                const Material& material, const PhysicalMaterial& physical,
+                                const Material& material, const PhysicalL<V>& physical,
                                 const MaterialColorsL<V>& colors, LightingModel model, const SurfaceL<V>& s,
                                 LightDetail* record) {
   if (model == LightingModel::CookTorrance)
@@ -214,13 +215,26 @@ HWY_INLINE void AddLightSums(D d, TermsL<V>& terms, const LightSumsL<V>& sums, c
   if (model != LightingModel::CookTorrance) AddReflected(d, terms, sums, material, colors);
 }
 
+// What glTF's maps make of the material at each lane (their texels applied as withMapTexels applies
+// them): a physically based material's metallic and roughness, and the emission; null: the
+// material's own.
+template <class V>
+struct MappedL {
+  const V* metallic = nullptr;  // with roughness
+  const V* roughness = nullptr;
+  const Vec3L<V>* emission = nullptr;
+};
+
 // The whole equation at each lane: emission, global ambient, then every light in order.
 template <class D, class V = hn::VFromD<D>>
 HWY_INLINE TermsL<V> ShadeEquation(D d, std::span<const EyeLight> lights, const LightModel& lightModel,
                                    const Material& material, const MaterialColorsL<V>& colors, LightingModel model,
-                                   const SurfaceL<V>& s) {
+                                   const SurfaceL<V>& s, const MappedL<V>& mapped = {}) {
   TermsL<V> terms = TermsWithoutLights(d, lightModel, material, colors, model);
-  const PhysicalMaterial physical = model == LightingModel::CookTorrance ? physicalOf(material) : PhysicalMaterial{};
+  if (mapped.emission) terms.emission = *mapped.emission;
+  const PhysicalMaterial physicalMaterial = model == LightingModel::CookTorrance ? physicalOf(material) : PhysicalMaterial{};
+  const PhysicalL<V> physical = mapped.metallic ? LanePhysical(d, physicalMaterial, *mapped.metallic, *mapped.roughness)
+                                                : UniformPhysical(d, physicalMaterial);
   LightSumsL<V> sums = NoLight(d);
   for (const EyeLight& light : lights)
     AccumulateLight<false>(d, terms, sums, light, material, physical, colors, model, s, nullptr);

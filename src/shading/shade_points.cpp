@@ -15,16 +15,35 @@ namespace illum::HWY_NAMESPACE {
 // The clamped colour at each lane of `s` (its toViewer filled in here), with each lane's own
 // colour for GL_COLOR_MATERIAL when `color` is given (four arrays read at the lanes), and the
 // ambient term scaled by each lane's open share when `open` is given (ambient occlusion).
+// glTF's maps' values read at the lanes (SurfacePoints' metallic, roughness and emission), from `i` on.
+template <class V>
+struct MapLanes {
+  V metallic, roughness;
+  Vec3L<V> emission;
+  MappedL<V> mapped;
+};
+template <class D, class V = hn::VFromD<D>>
+HWY_INLINE void LoadMaps(D d, const SurfacePoints& p, std::size_t i, MapLanes<V>& m) {
+  if (p.metallic) {
+    m.metallic = hn::LoadU(d, p.metallic + i), m.roughness = hn::LoadU(d, p.roughness + i);
+    m.mapped.metallic = &m.metallic, m.mapped.roughness = &m.roughness;
+  }
+  if (p.emission[0]) {
+    m.emission = {hn::LoadU(d, p.emission[0] + i), hn::LoadU(d, p.emission[1] + i), hn::LoadU(d, p.emission[2] + i)};
+    m.mapped.emission = &m.emission;
+  }
+}
+
 template <class D, class V = hn::VFromD<D>>
 HWY_INLINE void LitColor(D d, const ShadeSetup& setup, SurfaceL<V>& s, const Real* const* color, const Real* open,
-                         V& r, V& g, V& b, V& a) {
+                         V& r, V& g, V& b, V& a, const MappedL<V>& mapped = {}) {
   s.toViewer = ToViewer(d, s.P, setup.lightModel.localViewer);
   MaterialColorsL<V> colors = UniformColors(d, setup.material, setup.model);
   if (color) {
     const Vec3L<V> c{hn::LoadU(d, color[0]), hn::LoadU(d, color[1]), hn::LoadU(d, color[2])};
     colors = {c, c, hn::LoadU(d, color[3])};
   }
-  TermsL<V> terms = ShadeEquation(d, setup.lights, setup.lightModel, setup.material, colors, setup.model, s);
+  TermsL<V> terms = ShadeEquation(d, setup.lights, setup.lightModel, setup.material, colors, setup.model, s, mapped);
   if (open) terms.ambient = hn::LoadU(d, open) * terms.ambient;
   ClampedColor(d, terms, colors.alpha, r, g, b, a);
 }
@@ -32,13 +51,14 @@ HWY_INLINE void LitColor(D d, const ShadeSetup& setup, SurfaceL<V>& s, const Rea
 // Points [first, first + lanes) of `p`, read from and written to arrays offset by `first`.
 template <class D>
 HWY_INLINE void ShadeLanes(D d, const ShadeSetup& setup, const Real* const position[3], const Real* const normal[3],
-                           const Real* const color[4], const Real* open, Real* const out[4]) {
+                           const Real* const color[4], const Real* open, Real* const out[4],
+                           const MappedL<hn::VFromD<D>>& mapped = {}) {
   using V = hn::VFromD<D>;
   SurfaceL<V> s;
   s.P = {hn::LoadU(d, position[0]), hn::LoadU(d, position[1]), hn::LoadU(d, position[2])};
   s.N = {hn::LoadU(d, normal[0]), hn::LoadU(d, normal[1]), hn::LoadU(d, normal[2])};
   V r, g, b, a;
-  LitColor(d, setup, s, color[0] ? color : nullptr, open, r, g, b, a);
+  LitColor(d, setup, s, color[0] ? color : nullptr, open, r, g, b, a, mapped);
   hn::StoreU(r, d, out[0]);
   hn::StoreU(g, d, out[1]);
   hn::StoreU(b, d, out[2]);
@@ -56,27 +76,35 @@ void ShadePoints(const ShadeSetup& setup, const SurfacePoints& p, Real* const ou
     const Real* color[4] = {};
     if (colored) color[0] = p.color[0] + i, color[1] = p.color[1] + i, color[2] = p.color[2] + i, color[3] = p.color[3] + i;
     Real* const dst[4] = {out[0] + i, out[1] + i, out[2] + i, out[3] + i};
-    ShadeLanes(d, setup, position, normal, color, p.ambientOpen ? p.ambientOpen + i : nullptr, dst);
+    MapLanes<hn::VFromD<decltype(d)>> maps;
+    LoadMaps(d, p, i, maps);
+    ShadeLanes(d, setup, position, normal, color, p.ambientOpen ? p.ambientOpen + i : nullptr, dst, maps.mapped);
   }
   if (i == p.count) return;
   // The last few points: copied into full vectors, the spare lanes repeating the last point.
   constexpr std::size_t kMax = hn::MaxLanes(d);
-  HWY_ALIGN Real in[11][kMax], result[4][kMax];
+  HWY_ALIGN Real in[16][kMax], result[4][kMax];
   const Real* const* sources[3] = {p.position, p.normal, p.color};
+  const Real* extra[6] = {p.ambientOpen, p.metallic, p.roughness, p.emission[0], p.emission[1], p.emission[2]};
   for (std::size_t k = 0; k < lanes; ++k) {
     const std::size_t from = std::min(i + k, p.count - 1);
     for (int a = 0; a < 10; ++a) {
       const Real* src = sources[a < 3 ? 0 : a < 6 ? 1 : 2][a < 3 ? a : a < 6 ? a - 3 : a - 6];
       in[a][k] = src ? src[from] : Real(0);
     }
-    in[10][k] = p.ambientOpen ? p.ambientOpen[from] : Real(1);
+    for (int a = 0; a < 6; ++a) in[10 + a][k] = extra[a] ? extra[a][from] : Real(1);
   }
+  SurfacePoints tail;  // the maps' values of the spare lanes, as LoadMaps reads them
+  if (p.metallic) tail.metallic = in[11], tail.roughness = in[12];
+  if (p.emission[0]) tail.emission[0] = in[13], tail.emission[1] = in[14], tail.emission[2] = in[15];
+  MapLanes<hn::VFromD<decltype(d)>> maps;
+  LoadMaps(d, tail, 0, maps);
   const Real* position[3] = {in[0], in[1], in[2]};
   const Real* normal[3] = {in[3], in[4], in[5]};
   const Real* color[4] = {};
   if (colored) color[0] = in[6], color[1] = in[7], color[2] = in[8], color[3] = in[9];
   Real* const dst[4] = {result[0], result[1], result[2], result[3]};
-  ShadeLanes(d, setup, position, normal, color, p.ambientOpen ? in[10] : nullptr, dst);
+  ShadeLanes(d, setup, position, normal, color, p.ambientOpen ? in[10] : nullptr, dst, maps.mapped);
   for (std::size_t k = 0; i + k < p.count; ++k)
     for (int c = 0; c < 4; ++c) out[c][i + k] = result[c][k];
 }
@@ -239,7 +267,8 @@ void accumulateLight(LightingTerms& terms, const EyeLight& light, const Material
                      const SurfaceGeometry& surface, LightDetail* detail) {
   auto t = HWY_NAMESPACE::NoTerms(one::d);
   auto sums = HWY_NAMESPACE::NoLight(one::d);
-  const PhysicalMaterial physical = model == LightingModel::CookTorrance ? physicalOf(material) : PhysicalMaterial{};
+  const auto physical = HWY_NAMESPACE::UniformPhysical(
+      one::d, model == LightingModel::CookTorrance ? physicalOf(material) : PhysicalMaterial{});
   const auto colors = one::colors(material, model);
   if (detail) {
     *detail = LightDetail{};
@@ -291,12 +320,14 @@ LightSampleAt sampleLight(const EyeLight& light, const Vec3& P, const Vec3& N) {
   return {HWY_NAMESPACE::Lane0(s.L), hn::GetLane(s.distance), hn::GetLane(s.attenuation), hn::GetLane(s.spot)};
 }
 Real Fd_Lambert() { return HWY_NAMESPACE::Fd_Lambert(); }
-Real D_GGX(Real NoH, Real alpha) { return hn::GetLane(HWY_NAMESPACE::D_GGX(one::d, one::lane(NoH), alpha)); }
+Real D_GGX(Real NoH, Real alpha) {
+  return hn::GetLane(HWY_NAMESPACE::D_GGX(one::d, one::lane(NoH), one::lane(alpha)));
+}
 Real D_Beckmann(Real NoH, Real alpha) {
-  return hn::GetLane(HWY_NAMESPACE::D_Beckmann(one::d, one::lane(NoH), alpha));
+  return hn::GetLane(HWY_NAMESPACE::D_Beckmann(one::d, one::lane(NoH), one::lane(alpha)));
 }
 Real V_SmithGGXCorrelated(Real NoV, Real NoL, Real alpha) {
-  return hn::GetLane(HWY_NAMESPACE::V_SmithGGXCorrelated(one::d, one::lane(NoV), one::lane(NoL), alpha));
+  return hn::GetLane(HWY_NAMESPACE::V_SmithGGXCorrelated(one::d, one::lane(NoV), one::lane(NoL), one::lane(alpha)));
 }
 Color3 F_Schlick(Real VoH, const Color3& f0) {
   return HWY_NAMESPACE::Lane0(HWY_NAMESPACE::F_Schlick(one::d, one::lane(VoH), one::lanes(f0)));

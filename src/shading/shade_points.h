@@ -28,6 +28,11 @@ struct SurfacePoints {
   // Ambient occlusion: the open share of each point's hemisphere, which scales its ambient term
   // (the light arriving from everywhere); null: all open.
   const Real* ambientOpen = nullptr;
+  // glTF's maps at each point (withMapTexels's result): a physically based material's metallic
+  // and roughness (both or neither), and the emission colour; null: the material's own.
+  const Real* metallic = nullptr;
+  const Real* roughness = nullptr;
+  const Real* emission[3] = {};
 };
 
 // out[c][i] = channel c of point i's clamped colour (what clampedColor(evaluateTerms(...)) gives).
