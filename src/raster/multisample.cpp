@@ -60,19 +60,4 @@ std::uint32_t resolvePixel(const std::uint32_t* samples, int n) {
   return out;
 }
 
-std::size_t resolvePixels(const std::uint32_t* src, int samples, int srcRowPixels, std::uint8_t* dst,
-                          std::ptrdiff_t dstStride, int count, int rows, std::uint32_t background) {
-  std::size_t unlike = 0;
-  for (int r = 0; r < rows; ++r) {
-    const std::uint32_t* from = src + std::size_t(r) * std::size_t(srcRowPixels) * std::size_t(samples);
-    std::uint8_t* to = dst + r * dstStride;
-    for (int x = 0; x < count; ++x, from += samples, to += 4) {
-      const std::uint32_t word = resolvePixel(from, samples);
-      std::memcpy(to, &word, 4);
-      unlike += word != background;
-    }
-  }
-  return unlike;
-}
-
 }  // namespace illum

@@ -12,6 +12,7 @@
 #include "raster/shade_visible.h"
 
 #include <algorithm>
+#include <cstring>
 #include <type_traits>
 
 HWY_BEFORE_NAMESPACE();
@@ -236,6 +237,77 @@ void GatherShown(const VisibleLayout& layout, const ShownRecord& rec, const Pixe
   GatherShownIn<false>(layout, rec, rect, pixels, count, b);
 }
 
+// The (pixel, record) pairs of a tile, pixel by pixel, each record a pixel's samples show once (in
+// sample order, as VisibleSamples::forEachShown gives them): whole vectors of winners at a time,
+// the empty ones passed over and a pixel whose samples agree taken at once. Returns how many.
+std::size_t ShownPairs(const std::uint32_t* winners, int samples, std::uint32_t* pixel, std::uint32_t* slot) {
+  const hn::ScalableTag<std::uint32_t> du;
+  const int lanes = int(hn::Lanes(du)), words = kTileSize * kTileSize * samples;
+  const auto none = hn::Set(du, kNoWinner);
+  std::size_t n = 0;
+  const VisibleSamples shown{samples, nullptr, const_cast<std::uint32_t*>(winners)};
+  const auto one = [&](int index, std::uint32_t s) { pixel[n] = std::uint32_t(index), slot[n] = s, ++n; };
+  if (samples == 1) {
+    for (int i = 0; i < words; i += lanes) {
+      const auto w = hn::LoadU(du, winners + i);
+      const auto some = hn::Ne(w, none);
+      if (hn::AllFalse(du, some)) continue;
+      hn::StoreU(hn::Compress(hn::Iota(du, std::uint32_t(i)), some), du, pixel + n);
+      hn::StoreU(hn::Compress(w, some), du, slot + n);
+      n += hn::CountTrue(du, some);
+    }
+    return n;
+  }
+  if (samples > lanes || lanes > 64) {
+    for (int i = 0; i < kTileSize * kTileSize; ++i) shown.forEachShown(i, one);
+    return n;
+  }
+  // Lane k compared with its pixel's first sample.
+  HWY_ALIGN std::uint32_t firstOf[hn::MaxLanes(du)];
+  for (int k = 0; k < lanes; ++k) firstOf[k] = std::uint32_t(k & ~(samples - 1));
+  const auto first = hn::SetTableIndices(du, firstOf);
+  const std::uint64_t group = samples >= 64 ? ~std::uint64_t(0) : (std::uint64_t(1) << samples) - 1;
+  for (int i = 0; i < words; i += lanes) {
+    const auto w = hn::LoadU(du, winners + i);
+    if (hn::AllTrue(du, hn::Eq(w, none))) continue;
+    std::uint8_t bytes[8] = {};
+    hn::StoreMaskBits(du, hn::Eq(w, hn::TableLookupLanes(w, first)), bytes);
+    std::uint64_t same = 0;
+    std::memcpy(&same, bytes, sizeof same);
+    for (int g = 0; g < lanes; g += samples) {
+      const int index = (i + g) / samples;
+      const std::uint32_t w0 = winners[i + g];
+      if ((same >> g & group) == group) {
+        if (w0 != kNoWinner) one(index, w0);
+      } else {
+        shown.forEachShown(index, one);
+      }
+    }
+  }
+  return n;
+}
+
+// Each pair's RGBA8 word to the samples of its pixel that show its record (VisibleSamples::write),
+// a pixel's samples compared and stored as one vector.
+void WriteShown(const VisibleBatch& b, std::uint32_t* color, const std::uint32_t* winners, int samples) {
+  if (samples == 1) {
+    for (std::size_t k = 0; k < b.count; ++k) color[b.pixel[k]] = b.rgba[k];
+    return;
+  }
+  const hn::CappedTag<std::uint32_t, 16> du;
+  if (std::size_t(samples) > hn::Lanes(du)) {
+    const VisibleSamples out{samples, color, const_cast<std::uint32_t*>(winners)};
+    for (std::size_t k = 0; k < b.count; ++k) out.write(int(b.pixel[k]), b.slot[k], b.rgba[k]);
+    return;
+  }
+  const auto mine = hn::FirstN(du, std::size_t(samples));
+  for (std::size_t k = 0; k < b.count; ++k) {
+    const std::size_t at = std::size_t(b.pixel[k]) * std::size_t(samples);
+    const auto shows = hn::And(mine, hn::Eq(hn::LoadU(du, winners + at), hn::Set(du, b.slot[k])));
+    hn::BlendedStore(hn::Set(du, b.rgba[k]), shows, du, color + at);
+  }
+}
+
 void FinishVisible(const VisibleLayout& layout, VisibleBatch& b) {
   const hn::ScalableTag<Real> d;
   using V = hn::VFromD<decltype(d)>;
@@ -268,6 +340,8 @@ namespace illum {
 
 HWY_EXPORT(GatherShown);
 HWY_EXPORT(FinishVisible);
+HWY_EXPORT(ShownPairs);
+HWY_EXPORT(WriteShown);
 
 void gatherShown(const VisibleLayout& layout, const ShownRecord& record, const PixelRect& rect,
                  const std::uint32_t* pixels, std::size_t count, VisibleBatch& batch) {
@@ -313,27 +387,18 @@ VisibleLayout layoutOf(const FrameContext& frame, const Object& object) {
 }  // namespace
 
 void VisibleShader::shadeAll(ShownLists& lists) {
-  // Count each record's pixels, then lay them out record by record.
-  const std::size_t n = records_.size();
+  // The pairs, then each record's pixels laid out record by record (a counting sort).
+  const std::size_t n = records_.size(), room = kTileBlock * std::size_t(out_.count) + 16;
+  if (lists.pairPixel.size() < room) lists.pairPixel.resize(room), lists.pairSlot.resize(room);
+  const std::size_t pairs =
+      HWY_DYNAMIC_DISPATCH(ShownPairs)(out_.winners, out_.count, lists.pairPixel.data(), lists.pairSlot.data());
+  if (pairs == 0) return;
   lists.start.assign(n + 1, 0);
-  const int pixels = kTileSize * kTileSize;
-  if (out_.count == 1) {
-    for (int i = 0; i < pixels; ++i)
-      if (out_.winners[i] != kNoWinner) ++lists.start[out_.winners[i] + 1];
-  } else {
-    for (int i = 0; i < pixels; ++i) out_.forEachShown(i, [&](int, std::uint32_t slot) { ++lists.start[slot + 1]; });
-  }
+  for (std::size_t k = 0; k < pairs; ++k) ++lists.start[lists.pairSlot[k] + 1];
   for (std::size_t r = 0; r < n; ++r) lists.start[r + 1] += lists.start[r];
-  if (lists.start[n] == 0) return;
-  lists.pixels.resize(lists.start[n] + 16);  // room for a vector read past the last
+  lists.pixels.resize(pairs + 16);  // room for a vector read past the last
   std::vector<std::uint32_t>& next = lists.start;  // moved to each record's end, then back
-  if (out_.count == 1) {
-    for (int i = 0; i < pixels; ++i)
-      if (out_.winners[i] != kNoWinner) lists.pixels[next[out_.winners[i]]++] = std::uint32_t(i);
-  } else {
-    for (int i = 0; i < pixels; ++i)
-      out_.forEachShown(i, [&](int index, std::uint32_t slot) { lists.pixels[next[slot]++] = std::uint32_t(index); });
-  }
+  for (std::size_t k = 0; k < pairs; ++k) lists.pixels[next[lists.pairSlot[k]]++] = lists.pairPixel[k];
   for (std::size_t r = n; r > 0; --r) next[r] = next[r - 1];
   next[0] = 0;
   for (std::size_t r = 0; r < n; ++r)
@@ -428,7 +493,7 @@ void VisibleShader::flush() {
     }
   } else {
     finishVisible(layout_, b_);
-    for (std::size_t k = 0; k < b_.count; ++k) out_.write(int(b_.pixel[k]), b_.slot[k], b_.rgba[k]);
+    HWY_DYNAMIC_DISPATCH(WriteShown)(b_, out_.color, out_.winners, out_.count);
   }
   b_.count = 0;
 }

@@ -129,6 +129,7 @@ void finishVisible(const VisibleLayout& layout, VisibleBatch& batch);
 // The pixels each record shows in a tile, record by record (a counting sort of the pixels by the
 // records their samples show), reused from tile to tile.
 struct ShownLists {
+  std::vector<std::uint32_t> pairPixel, pairSlot;  // the pairs, pixel by pixel
   std::vector<std::uint32_t> start;   // per record slot, its first pixel in `pixels`; then the end
   std::vector<std::uint32_t> pixels;  // tile indices
 };
