@@ -42,7 +42,7 @@ TEST(Texture, MipmapRowsPairFromTheBottom) {
   column.rgba = {255, 0, 0, 255, /**/ 0, 0, 255, 255, /**/ 0, 0, 200, 255};  // top red, then blue
   const Texture t(column);
   EXPECT_EQ(t.levelCount(), 2);
-  EXPECT_EQ(t.sampleLevel({0.5, 0.5}, 1), Vec4(0, 0, 228 / 255.0f, 1));  // (255 + 200 + 2) / 4 twice over
+  EXPECT_EQ(t.sampleLevel({0.5, 0.5}, 1), Vec4(0, 0, Real(228) / Real(255), 1));  // (255 + 200 + 2) / 4 twice over
 }
 
 TEST(Texture, MipmapsAverageAndTrilinearPicksByFootprint) {

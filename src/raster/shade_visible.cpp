@@ -114,10 +114,13 @@ HWY_INLINE void GatherShownIn(const VisibleLayout& layout, const ShownRecord& re
   }
   // Edge value i at the lanes' pixels dx, dy from the first one, as Real.
   const auto edgeAt = [&](int i, VI dx, VI dy) -> VR {
+#if !ILLUM_USE_DOUBLE
     if constexpr (kSplit) {
       const VR offset = hn::ConvertTo(dr, dx) * hn::Set(dr, A[i]) + hn::ConvertTo(dr, dy) * hn::Set(dr, B[i]);
       return (hn::Set(dr, high[i]) + offset) + hn::Set(dr, low[i]);  // a multiple of 256 plus the rest
-    } else {
+    } else
+#endif
+    {
       const auto exact = [&](auto dd, auto x, auto y) {  // in double lanes
         return hn::Set(dd, high[i]) + (hn::PromoteTo(dd, x) * hn::Set(dd, A[i]) + hn::PromoteTo(dd, y) * hn::Set(dd, B[i]));
       };
@@ -217,8 +220,8 @@ HWY_INLINE void GatherShownIn(const VisibleLayout& layout, const ShownRecord& re
 void GatherShown(const VisibleLayout& layout, const ShownRecord& rec, const PixelRect& rect, const std::uint32_t* pixels,
                  std::size_t count, VisibleBatch& b) {
   if (count == 0) return;
-#if HWY_TARGET != HWY_SCALAR
-  if (sizeof(Real) == 4) {
+#if HWY_TARGET != HWY_SCALAR && !ILLUM_USE_DOUBLE
+  {
     // Every edge value over the record's pixels in the tile, and the parts it is summed from,
     // below 2^31.
     const TriangleSetup& t = *rec.setup;

@@ -715,8 +715,8 @@ HWY_INLINE std::size_t SamplesPass(const TriangleSetup& t, const PixelRect& tile
   if (std::max(t.minX, tile.minX) > std::min(t.maxX, tile.maxX) || std::max(t.minY, tile.minY) > std::min(t.maxY, tile.maxY))
     return 0;
 #if HWY_TARGET != HWY_SCALAR
-  if (sizeof(Real) == 4 && SamplesSplitExact(t, tile, planes))
-    return SamplesPassIn<true>(hn::ScalableTag<float>(), t, tile, planes, write);
+  if constexpr (sizeof(Real) == 4)
+    if (SamplesSplitExact(t, tile, planes)) return SamplesPassIn<true>(hn::ScalableTag<float>(), t, tile, planes, write);
 #endif
   return SamplesPassIn<false>(DD(), t, tile, planes, write);
 }

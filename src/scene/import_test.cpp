@@ -38,7 +38,7 @@ TEST(FileMaterial, GltfMetallicRoughness) {
   // Physically based, drawn with cook-torrance by default.
   EXPECT_TRUE(dielectric.physicallyBased);
   EXPECT_EQ(dielectric.model, LightingModel::CookTorrance);
-  EXPECT_EQ(dielectric.physical.baseColor, Color3(0.8f, 0.2f, 0.1f));
+  EXPECT_EQ(dielectric.physical.baseColor, Color3(Real(0.8), Real(0.2), Real(0.1)));
   EXPECT_EQ(dielectric.physical.roughness, 0.5f);
   EXPECT_EQ(dielectric.physical.metallic, 0);
   EXPECT_NEAR(dielectric.physical.f0.r, 0.04, 1e-6);  // glTF's dielectric: ior 1.5

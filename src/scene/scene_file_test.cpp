@@ -252,11 +252,11 @@ TEST(SceneFile, ReadsTheRayTracingKeys) {
   EXPECT_FALSE(s.rayTracing.shadows);
   EXPECT_EQ(s.rayTracing.samples, 16);
   const SurfaceOptics& o = s.objects[0].optics;
-  EXPECT_EQ(o.reflective, Color3(0.1f, 0.2f, 0.3f));
-  EXPECT_EQ(o.transmissive, Color3(0.9f, 0.8f, 0.7f));
+  EXPECT_EQ(o.reflective, Color3(Real(0.1), Real(0.2), Real(0.3)));
+  EXPECT_EQ(o.transmissive, Color3(Real(0.9), Real(0.8), Real(0.7)));
   EXPECT_FLOAT_EQ(o.ior, 1.33f);
   EXPECT_EQ(o.transmissionShininess, 12);
-  EXPECT_EQ(o.filter, Color3(0.5f, 0.6f, 0.7f));
+  EXPECT_EQ(o.filter, Color3(Real(0.5), Real(0.6), Real(0.7)));
   EXPECT_EQ(parse(R"({"renderer": "whitted"})").renderer, RendererKind::Whitted);
 }
 

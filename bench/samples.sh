@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# What multisampling costs: each scene or model (default: ../shared/bench/*.json) drawn by
+# `illum bench` at 1, 4 and 8 samples per pixel, the three alternated R rounds of F frames; the
+# table shows the median frame times, their ratios to one sample, and the peak memory at 1 and 8.
+#   bench/samples.sh [--threads N] [--rounds R] [--frames F] [SCENE|MODEL ...]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+threads=$(nproc 2>/dev/null || echo 2)
+rounds=3
+frames=10
+inputs=()
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --threads) threads=$2; shift 2 ;;
+    --rounds) rounds=$2; shift 2 ;;
+    --frames) frames=$2; shift 2 ;;
+    *) inputs+=("$1"); shift ;;
+  esac
+done
+if [ ${#inputs[@]} -eq 0 ]; then
+  for s in ../shared/bench/*.json; do inputs+=("$s"); done
+fi
+illum=build/apps/illum/illum
+[ -x "$illum" ] || { echo "samples: $illum is missing: build first (scripts/dev.sh run)" >&2; exit 2; }
+field() { sed -n "s/.*\"$1\": \([0-9.]*\).*/\1/p"; }
+median() { printf '%s\n' "$@" | sort -g | awk '{a[NR]=$1} END {print (NR%2 ? a[(NR+1)/2] : (a[NR/2]+a[NR/2+1])/2)}'; }
+echo "# $(lscpu | sed -n 's/^Model name: *//p'), $(nproc) cores; --threads $threads; median of $rounds alternated rounds of $frames frames"
+printf '| %-28s | %8s | %8s | %8s | %6s | %6s | %9s | %9s |\n' input "1 ms" "4 ms" "8 ms" "4×/1×" "8×/1×" "MiB at 1" "MiB at 8"
+printf '|%s|%s|%s|%s|%s|%s|%s|%s|\n' ------------------------------ ---------- ---------- ---------- -------- -------- ----------- -----------
+for input in "${inputs[@]}"; do
+  declare -A ms=() mib=()
+  for ((r = 0; r < rounds; ++r)); do
+    for s in 1 4 8; do
+      out=$("$illum" bench "$input" --samples "$s" --frames "$frames" --threads "$threads")
+      ms[$s]+=" $(field ms_per_frame <<<"$out")"
+      mib[$s]=$(field peak_mib <<<"$out")
+    done
+  done
+  a=$(median ${ms[1]}) b=$(median ${ms[4]}) c=$(median ${ms[8]})
+  printf '| %-28s | %8.2f | %8.2f | %8.2f | %6.2f | %6.2f | %9s | %9s |\n' "$(basename "$input")" "$a" "$b" "$c" \
+    "$(awk -v x="$b" -v y="$a" 'BEGIN { print x / y }')" "$(awk -v x="$c" -v y="$a" 'BEGIN { print x / y }')" "${mib[1]}" "${mib[8]}"
+  unset ms mib
+done
