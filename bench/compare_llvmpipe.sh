@@ -11,31 +11,15 @@
 # run (or cmake --build build).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-threads=$(nproc 2>/dev/null || echo 2)
-rounds=3
-frames=10
-layouts=0
-scenes=()
-while [ $# -gt 0 ]; do
-  case "$1" in
-    --threads) threads=$2; shift 2 ;;
-    --rounds) rounds=$2; shift 2 ;;
-    --frames) frames=$2; shift 2 ;;
-    --layouts) layouts=1; shift ;;
-    *) scenes+=("$1"); shift ;;
-  esac
-done
-if [ ${#scenes[@]} -eq 0 ]; then
-  for s in ../shared/bench/*.json; do scenes+=("$s"); done
-fi
+. bench/lib.sh
+parse_bench_options "$@"
+scenes=("${inputs[@]}")
 illum=build/apps/illum/illum
 peer=build/bench/illum_llvmpipe_bench
 for b in "$illum" "$peer"; do
   [ -x "$b" ] || { echo "compare_llvmpipe: $b is missing: build first (scripts/dev.sh run)" >&2; exit 2; }
 done
 
-field() { sed -n "s/.*\"$1\": \([0-9.]*\).*/\1/p"; }
-median() { printf '%s\n' "$@" | sort -g | awk '{a[NR]=$1} END {print (NR%2 ? a[(NR+1)/2] : (a[NR/2]+a[NR/2+1])/2)}'; }
 
 echo "# $(lscpu | sed -n 's/^Model name: *//p'), $(nproc) cores; illum --threads $threads, LP_NUM_THREADS=$threads;" \
      "median of $rounds alternated rounds of $frames frames"

@@ -12,18 +12,9 @@
 # Build first: scripts/dev.sh run (or cmake --build build).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-threads=$(nproc 2>/dev/null || echo 2)
-rounds=3
-frames=10
-models=()
-while [ $# -gt 0 ]; do
-  case "$1" in
-    --threads) threads=$2; shift 2 ;;
-    --rounds) rounds=$2; shift 2 ;;
-    --frames) frames=$2; shift 2 ;;
-    *) models+=("$1"); shift ;;
-  esac
-done
+. bench/lib.sh
+parse_bench_options "$@"
+models=("${inputs[@]}")
 M=/usr/share/assimp/models
 if [ ${#models[@]} -eq 0 ]; then
   models=(
@@ -43,8 +34,6 @@ for b in "$illum" "$peer"; do
   [ -x "$b" ] || { echo "compare_models: $b is missing: build first (scripts/dev.sh run)" >&2; exit 2; }
 done
 
-field() { sed -n "s/.*\"$1\": \([0-9.]*\).*/\1/p"; }
-median() { printf '%s\n' "$@" | sort -g | awk '{a[NR]=$1} END {print (NR%2 ? a[(NR+1)/2] : (a[NR/2]+a[NR/2+1])/2)}'; }
 ratio() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.3f", a / b }'; }
 
 echo "# $(lscpu | sed -n 's/^Model name: *//p'), $(nproc) cores; illum --threads $threads, LP_NUM_THREADS=$threads;" \

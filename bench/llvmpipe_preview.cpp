@@ -1,5 +1,7 @@
 #include "llvmpipe_preview.h"
 
+#include "../tests/mesa_reference.h"
+
 #define GL_GLEXT_PROTOTYPES 1
 #include <GL/osmesa.h>
 #include <GL/gl.h>
@@ -141,27 +143,6 @@ void main() {
 }
 )";
 
-GLuint compile(GLenum type, const char* source) {
-  const GLuint s = glCreateShader(type);
-  glShaderSource(s, 1, &source, nullptr);
-  glCompileShader(s);
-  GLint ok = 0;
-  glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    char log[4096];
-    glGetShaderInfoLog(s, sizeof log, nullptr, log);
-    throw std::runtime_error(std::string("GLSL compile error: ") + log);
-  }
-  return s;
-}
-
-void loadMatrix(const Mat4& m) {
-  GLfloat f[16];
-  for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 4; ++r) f[c * 4 + r] = GLfloat(m[c][r]);
-  glLoadMatrixf(f);
-}
-
 bool translucent(const Object& o) {
   return o.material.diffuse.a < 1 || (o.diffuseTexture && o.diffuseTexture->hasTransparency()) ||
          std::any_of(o.mesh->colors.begin(), o.mesh->colors.end(), [](const Color4& c) { return c.a < 1; });
@@ -207,35 +188,17 @@ PreviewSession::PreviewSession(const Scene& scene, int samples)
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glMatrixMode(GL_PROJECTION);
-  loadMatrix(scene.camera.clipFromView(GLfloat(scene.width) / GLfloat(scene.height)));
+  test::loadMatrix(scene.camera.clipFromView(GLfloat(scene.width) / GLfloat(scene.height)));
   glMatrixMode(GL_MODELVIEW);
-  loadMatrix(scene.camera.viewFromWorld());
-  for (std::size_t i = 0; i < scene.lights.size(); ++i) {
-    const Light& l = scene.lights[i];
-    const GLenum id = GLenum(GL_LIGHT0 + i);
-    const GLfloat pos[4] = {GLfloat(l.position.x), GLfloat(l.position.y), GLfloat(l.position.z), GLfloat(l.position.w)};
-    const GLfloat amb[4] = {GLfloat(l.ambient.r), GLfloat(l.ambient.g), GLfloat(l.ambient.b), 1};
-    const GLfloat dif[4] = {GLfloat(l.diffuse.r), GLfloat(l.diffuse.g), GLfloat(l.diffuse.b), 1};
-    const GLfloat spe[4] = {GLfloat(l.specular.r), GLfloat(l.specular.g), GLfloat(l.specular.b), 1};
-    const GLfloat dir[3] = {GLfloat(l.spotDirection.x), GLfloat(l.spotDirection.y), GLfloat(l.spotDirection.z)};
-    glLightfv(id, GL_POSITION, pos);
-    glLightfv(id, GL_AMBIENT, amb);
-    glLightfv(id, GL_DIFFUSE, dif);
-    glLightfv(id, GL_SPECULAR, spe);
-    glLightfv(id, GL_SPOT_DIRECTION, dir);
-    glLightf(id, GL_SPOT_EXPONENT, GLfloat(l.spotExponent));
-    glLightf(id, GL_SPOT_CUTOFF, GLfloat(l.spotCutoff));
-    glLightf(id, GL_CONSTANT_ATTENUATION, GLfloat(l.attenuation.x));
-    glLightf(id, GL_LINEAR_ATTENUATION, GLfloat(l.attenuation.y));
-    glLightf(id, GL_QUADRATIC_ATTENUATION, GLfloat(l.attenuation.z));
-  }
+  test::loadMatrix(scene.camera.viewFromWorld());
+  for (std::size_t i = 0; i < scene.lights.size(); ++i) test::setLight(unsigned(GL_LIGHT0 + i), scene.lights[i]);
   const GLfloat ambient[4] = {GLfloat(scene.lightModel.ambient.r), GLfloat(scene.lightModel.ambient.g),
                               GLfloat(scene.lightModel.ambient.b), 1};
   glLightModelfv(GL_LIGHT_MODEL_AMBIENT, ambient);
 
   program_ = glCreateProgram();
-  glAttachShader(program_, compile(GL_VERTEX_SHADER, kVertex));
-  glAttachShader(program_, compile(GL_FRAGMENT_SHADER, kFragment));
+  glAttachShader(program_, test::compileShader(GL_VERTEX_SHADER, kVertex));
+  glAttachShader(program_, test::compileShader(GL_FRAGMENT_SHADER, kFragment));
   glLinkProgram(program_);
   GLint ok = 0;
   glGetProgramiv(program_, GL_LINK_STATUS, &ok);
@@ -323,7 +286,7 @@ void PreviewSession::draw() {
   for (const Draw& d : draws_) {
     const Object& object = scene_.objects[d.object];
     const Material& m = object.material;
-    loadMatrix(view * object.worldFromObject);
+    test::loadMatrix(view * object.worldFromObject);
     const LightingModel model = modelOf(m, scene_.model);
     glUniform1i(uniform("uModel"), model == LightingModel::CookTorrance ? 3
                                    : model == LightingModel::Phong      ? 1

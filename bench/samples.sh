@@ -5,25 +5,13 @@
 #   bench/samples.sh [--threads N] [--rounds R] [--frames F] [SCENE|MODEL ...]
 set -euo pipefail
 cd "$(dirname "$0")/.."
-threads=$(nproc 2>/dev/null || echo 2)
-rounds=3
-frames=10
-inputs=()
-while [ $# -gt 0 ]; do
-  case "$1" in
-    --threads) threads=$2; shift 2 ;;
-    --rounds) rounds=$2; shift 2 ;;
-    --frames) frames=$2; shift 2 ;;
-    *) inputs+=("$1"); shift ;;
-  esac
-done
+. bench/lib.sh
+parse_bench_options "$@"
 if [ ${#inputs[@]} -eq 0 ]; then
   for s in ../shared/bench/*.json; do inputs+=("$s"); done
 fi
 illum=build/apps/illum/illum
 [ -x "$illum" ] || { echo "samples: $illum is missing: build first (scripts/dev.sh run)" >&2; exit 2; }
-field() { sed -n "s/.*\"$1\": \([0-9.]*\).*/\1/p"; }
-median() { printf '%s\n' "$@" | sort -g | awk '{a[NR]=$1} END {print (NR%2 ? a[(NR+1)/2] : (a[NR/2]+a[NR/2+1])/2)}'; }
 echo "# $(lscpu | sed -n 's/^Model name: *//p'), $(nproc) cores; --threads $threads; median of $rounds alternated rounds of $frames frames"
 printf '| %-28s | %8s | %8s | %8s | %6s | %6s | %9s | %9s |\n' input "1 ms" "4 ms" "8 ms" "4×/1×" "8×/1×" "MiB at 1" "MiB at 8"
 printf '|%s|%s|%s|%s|%s|%s|%s|%s|\n' ------------------------------ ---------- ---------- ---------- -------- -------- ----------- -----------

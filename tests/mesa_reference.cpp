@@ -98,7 +98,9 @@ void main() {
 }
 )";
 
-GLuint compile(GLenum type, const std::string& source) {
+}  // namespace
+
+unsigned compileShader(unsigned type, const std::string& source) {
   const GLuint s = glCreateShader(type);
   const char* text = source.c_str();
   glShaderSource(s, 1, &text, nullptr);
@@ -113,25 +115,6 @@ GLuint compile(GLenum type, const std::string& source) {
   return s;
 }
 
-GLuint buildProgram(MesaPath path) {
-  const std::string header = "#version 120\n";
-  const bool perPixel = path == MesaPath::GlslPerPixel;
-  const GLuint program = glCreateProgram();
-  glAttachShader(program, compile(GL_VERTEX_SHADER, header + (perPixel ? "" : kLightingGlsl) +
-                                                        (perPixel ? kPerPixelVs : kPerVertexVs)));
-  glAttachShader(program, compile(GL_FRAGMENT_SHADER, header + (perPixel ? kLightingGlsl : "") +
-                                                          (perPixel ? kPerPixelFs : kPerVertexFs)));
-  glLinkProgram(program);
-  GLint ok = 0;
-  glGetProgramiv(program, GL_LINK_STATUS, &ok);
-  if (!ok) {
-    char log[4096];
-    glGetProgramInfoLog(program, sizeof log, nullptr, log);
-    throw std::runtime_error(std::string("GLSL link error: ") + log);
-  }
-  return program;
-}
-
 void loadMatrix(const Mat4& m) {
   GLfloat f[16];
   for (int c = 0; c < 4; ++c)
@@ -139,7 +122,7 @@ void loadMatrix(const Mat4& m) {
   glLoadMatrixf(f);
 }
 
-void setLight(GLenum id, const Light& l) {
+void setLight(unsigned id, const Light& l) {
   const GLfloat pos[4] = {GLfloat(l.position.x), GLfloat(l.position.y), GLfloat(l.position.z), GLfloat(l.position.w)};
   const GLfloat amb[4] = {GLfloat(l.ambient.r), GLfloat(l.ambient.g), GLfloat(l.ambient.b), 1};
   const GLfloat dif[4] = {GLfloat(l.diffuse.r), GLfloat(l.diffuse.g), GLfloat(l.diffuse.b), 1};
@@ -156,6 +139,27 @@ void setLight(GLenum id, const Light& l) {
   glLightf(id, GL_CONSTANT_ATTENUATION, GLfloat(l.attenuation.x));
   glLightf(id, GL_LINEAR_ATTENUATION, GLfloat(l.attenuation.y));
   glLightf(id, GL_QUADRATIC_ATTENUATION, GLfloat(l.attenuation.z));
+}
+
+namespace {
+
+GLuint buildProgram(MesaPath path) {
+  const std::string header = "#version 120\n";
+  const bool perPixel = path == MesaPath::GlslPerPixel;
+  const GLuint program = glCreateProgram();
+  glAttachShader(program, compileShader(GL_VERTEX_SHADER, header + (perPixel ? "" : kLightingGlsl) +
+                                                        (perPixel ? kPerPixelVs : kPerVertexVs)));
+  glAttachShader(program, compileShader(GL_FRAGMENT_SHADER, header + (perPixel ? kLightingGlsl : "") +
+                                                          (perPixel ? kPerPixelFs : kPerVertexFs)));
+  glLinkProgram(program);
+  GLint ok = 0;
+  glGetProgramiv(program, GL_LINK_STATUS, &ok);
+  if (!ok) {
+    char log[4096];
+    glGetProgramInfoLog(program, sizeof log, nullptr, log);
+    throw std::runtime_error(std::string("GLSL link error: ") + log);
+  }
+  return program;
 }
 
 void setMaterial(const Material& m) {

@@ -7,6 +7,7 @@
 #include <illum/scene.h>
 
 #include <cstdint>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -43,5 +44,12 @@ class MesaSession {
 
 // Renders with Mesa; row 0 at the top, like illum's images.
 Image renderWithMesa(const Scene& scene, MesaPath path);
+
+// What the GL peers share (the parity reference, and the benchmarks' preview peer), in the current
+// context: a shader compiled (GLenum type; throws std::runtime_error with GL's log), a matrix
+// loaded as glLoadMatrixf, and one light set as glLight (`id` is GL_LIGHT0 + i).
+unsigned compileShader(unsigned type, const std::string& source);
+void loadMatrix(const Mat4& m);
+void setLight(unsigned id, const Light& light);
 
 }  // namespace illum::test

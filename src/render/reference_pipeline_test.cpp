@@ -65,23 +65,28 @@ Scene denseScene(bool blend) {
   return scene;
 }
 
-TEST(BinnedPipeline, EqualsTheReferenceAndEveryThreadCount) {
+// The scenes both drivers draw: the built-in one and every scene file (a ray-traced example
+// rasterized); a big picture of `wide` pixels (it spans many tiles) with blending (which shows any
+// change of drawing order); dense meshes; ambient occlusion traced at the points the routes light.
+std::vector<std::pair<std::string, Scene>> testScenes(int wideWidth, int wideHeight) {
   std::vector<std::pair<std::string, Scene>> scenes = {{"built-in", defaultScene()}};
   for (const fs::path& f : sceneFiles()) scenes.push_back({f.filename().string(), loadSceneFile(f)});
-  for (auto& named : scenes) named.second.renderer = RendererKind::Raster;  // a ray-traced example, rasterized
-  // A big picture spans many tiles; blending shows any change of drawing order.
+  for (auto& named : scenes) named.second.renderer = RendererKind::Raster;
   Scene wide = defaultScene();
-  wide.width = 1000, wide.height = 700, wide.blend = true;
+  wide.width = wideWidth, wide.height = wideHeight, wide.blend = true;
   for (Object& o : wide.objects) o.material.diffuse.a = 0.6f;
-  scenes.push_back({"blended 1000x700", wide});
+  scenes.push_back({"blended " + std::to_string(wideWidth) + "x" + std::to_string(wideHeight), wide});
   scenes.push_back({"dense", denseScene(false)});
   scenes.push_back({"dense, blended", denseScene(true)});
-  // Ambient occlusion traced at the points the routes light (pixels, or vertices).
   Scene occluded = defaultScene();
   occluded.width = 240, occluded.height = 180;
   occluded.ambientOcclusion.enabled = true;
   scenes.push_back({"ambient occlusion", occluded});
-  for (auto& [name, scene] : scenes)
+  return scenes;
+}
+
+TEST(BinnedPipeline, EqualsTheReferenceAndEveryThreadCount) {
+  for (auto& [name, scene] : testScenes(1000, 700))
     for (Shading shading : {Shading::Flat, Shading::Gouraud, Shading::Phong}) {
       scene.shading = shading;
       scene.multisample = 1;
@@ -99,19 +104,7 @@ TEST(BinnedPipeline, EqualsTheReferenceAndEveryThreadCount) {
 // Multisampling in one pass (each tile keeping its samples) draws what one whole pass per sample
 // position draws, averaged: the reference's way.
 TEST(BinnedPipeline, MultisamplingInOnePassEqualsAPassPerSample) {
-  std::vector<std::pair<std::string, Scene>> scenes = {{"built-in", defaultScene()}};
-  for (const fs::path& f : sceneFiles()) scenes.push_back({f.filename().string(), loadSceneFile(f)});
-  for (auto& named : scenes) named.second.renderer = RendererKind::Raster;
-  Scene wide = defaultScene();
-  wide.width = 700, wide.height = 500, wide.blend = true;
-  for (Object& o : wide.objects) o.material.diffuse.a = 0.6f;
-  scenes.push_back({"blended 700x500", wide});
-  scenes.push_back({"dense", denseScene(false)});
-  scenes.push_back({"dense, blended", denseScene(true)});
-  Scene occluded = defaultScene();
-  occluded.width = 240, occluded.height = 180;
-  occluded.ambientOcclusion.enabled = true;
-  scenes.push_back({"ambient occlusion", occluded});
+  std::vector<std::pair<std::string, Scene>> scenes = testScenes(700, 500);
   // Big triangles whose edge values outgrow float lanes (the coverage kernel's double lanes).
   Scene big = defaultScene();
   big.width = 2400, big.height = 300;
