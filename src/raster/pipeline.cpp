@@ -6,13 +6,13 @@
 // any thread count, and the same as the reference driver (reference/).
 #include "raster/pipeline.h"
 
-#include "raster/bin.h"
-#include "raster/draw.h"
-#include "raster/multisample.h"
-#include "raster/overlay.h"
-#include "raster/points_lines.h"
+#include "raster/setup/bin.h"
+#include "raster/shade/draw.h"
+#include "raster/tile/multisample.h"
+#include "raster/lines/overlay.h"
+#include "raster/lines/points_lines.h"
 #include "raster/probe.h"
-#include "raster/shade_tile.h"
+#include "raster/shade/shade_tile.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>

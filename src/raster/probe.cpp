@@ -1,6 +1,6 @@
 #include "raster/probe.h"
 
-#include "raster/draw.h"
+#include "raster/shade/draw.h"
 
 #include <algorithm>
 

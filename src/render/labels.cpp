@@ -1,7 +1,7 @@
 #include "render/labels.h"
 
 #include "image/text.h"
-#include "raster/wide_segment.h"
+#include "raster/lines/wide_segment.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 #include "raster/reference/reference_pipeline.h"
 
-#include "raster/draw.h"
-#include "raster/multisample.h"
+#include "raster/shade/draw.h"
+#include "raster/tile/multisample.h"
 
 #include <cstring>
 

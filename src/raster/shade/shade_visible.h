@@ -1,0 +1,162 @@
+// The deferred draws' one shade hand-off: record by record, the pixels of the tile that show it
+// (whichever of their samples do), in SIMD lanes with the record's values broadcast: the pixel
+// centres' barycentrics → perspective-correct weights → the draw's colour (flat, Gouraud's
+// interpolated one, or Phong's surface, lit by shadePoints a batch of the object's pixels at a
+// time) → the texel (texture_lanes-inl.h) → GL_MODULATE → RGBA8, written to every sample that
+// shows the record. glTF's maps are read in the lanes too (metallic, roughness, emission, the
+// normal map's bent normal), each pixel's material given to the lighting lane by lane. The same
+// bits as the one-pixel formulas of fragment.h.
+#pragma once
+
+#include "raster/shade/draw.h"
+#include "raster/coverage/tile_raster.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace illum {
+
+// Where a tile's deferred colours go: its RGBA8 words and the record each sample shows, each
+// pixel's `count` samples side by side (framebuffer.h).
+struct VisibleSamples {
+  int count = 1;
+  std::uint32_t* color;
+  std::uint32_t* winners;
+
+  // f(index, slot) once for each record that some sample of pixel `index` shows, in sample order.
+  template <class F>
+  void forEachShown(int index, F&& f) const {
+    const std::uint32_t* shown = winners + std::size_t(index) * std::size_t(count);
+    // Most pixels show one record in every sample.
+    int same = 1;
+    while (same < count && shown[same] == shown[0]) ++same;
+    if (same == count) {
+      if (shown[0] != kNoWinner) f(index, shown[0]);
+      return;
+    }
+    for (int s = 0; s < count; ++s) {
+      const std::uint32_t slot = shown[s];
+      if (slot == kNoWinner) continue;
+      bool earlier = false;
+      for (int e = 0; e < s && !earlier; ++e) earlier = shown[e] == slot;
+      if (!earlier) f(index, slot);
+    }
+  }
+  void write(int index, std::uint32_t slot, std::uint32_t rgba) const {
+    const std::size_t at = std::size_t(index) * std::size_t(count);
+    for (int s = 0; s < count; ++s)
+      if (winners[at + std::size_t(s)] == slot) color[at + std::size_t(s)] = rgba;
+  }
+  // A translucent record's colour over what each sample that shows it holds (blendOver); the
+  // samples then show no record.
+  void blend(int index, std::uint32_t slot, const Color4& c) const {
+    const std::size_t at = std::size_t(index) * std::size_t(count);
+    for (int s = 0; s < count; ++s)
+      if (winners[at + std::size_t(s)] == slot) {
+        blendOver(reinterpret_cast<std::uint8_t*>(color + at + std::size_t(s)), c);
+        winners[at + std::size_t(s)] = kNoWinner;
+      }
+  }
+  bool shows(int index, std::uint32_t slot) const {
+    const std::size_t at = std::size_t(index) * std::size_t(count);
+    for (int s = 0; s < count; ++s)
+      if (winners[at + std::size_t(s)] == slot) return true;
+    return false;
+  }
+};
+
+// What the lanes of one record see, the same in every lane: where its per-vertex values sit
+// (VisibleLayout), its geometry, and the values.
+struct VisibleLayout {
+  Shading shading = Shading::Phong;
+  int lit = -1, position = -1, normal = -1, color = -1, uv = -1;  // in ShownRecord::vertex, −1: none
+  const Texture* texture = nullptr;  // the object's drawn texture
+  bool baseTexel = false;            // the texel tints the base colour before lighting
+  Color4 baseColor{1};               // the material's base colour and alpha, for baseTexel without vertex colours
+  // glTF's maps, when drawn (mapsDrawn), and the material values they scale: a physically based
+  // material's metallic and roughness (`physical`), and the emission.
+  const MaterialMaps* maps = nullptr;
+  bool physical = false;
+  Real metallic = 0, roughness = 1;
+  Color3 emission{0};
+};
+
+struct ShownRecord {
+  static constexpr int kValues = 12;  // per vertex, at most: position 3, normal 3, colour 4, uv 2
+  const TriangleSetup* setup = nullptr;
+  std::uint32_t slot = 0;
+  Real vertex[3][kValues];  // the values the layout names, vertex by vertex (counter-clockwise)
+  Color4 flat{0};           // flat shading: the provoking vertex's lit colour
+  bool negate = false;      // a back face under two-sided lighting: lit with −N
+  Real stepX[3], stepY[3];  // textured: how the barycentrics move one pixel right (a·256/area) and up (b·…)
+  Vec3 dPdu{0}, dPdv{0};    // a normal map's tangent frame (triangleTangents)
+};
+
+// The shown pixels of some records of one object, structure of arrays: their surface (Phong), the
+// colour (flat: the record's; Gouraud: interpolated; Phong: the vertex colour, or the base colour
+// tinted by the texel), the texel, then the lit colour and the RGBA8 word.
+struct VisibleBatch {
+  static constexpr std::size_t kSize = 1024;
+  static constexpr std::size_t kRoom = kSize + 16;  // a vector stored whole past the last pixel
+  std::size_t count = 0;
+  alignas(64) Real position[3][kRoom];
+  alignas(64) Real normal[3][kRoom];
+  alignas(64) Real color[4][kRoom];
+  alignas(64) Real texel[4][kRoom];
+  alignas(64) Real lit[4][kRoom];
+  // glTF's maps' values (the layout's): metallic, roughness and the emission.
+  alignas(64) Real metallic[kRoom];
+  alignas(64) Real roughness[kRoom];
+  alignas(64) Real emission[3][kRoom];
+  alignas(64) std::uint32_t rgba[kRoom];
+  alignas(64) std::uint32_t pixel[kRoom];  // index in the tile
+  std::uint32_t slot[kRoom];
+  // Ambient occlusion: each pixel's seed and its ambient's open share.
+  std::uint64_t seed[kRoom];
+  Real open[kRoom];
+};
+
+// The lanes' part (SIMD, dispatched). gatherShown appends the record's pixels `pixels` (tile
+// indices, `count` of them) of the tile `rect`: their centres' barycentrics exactly as the
+// rasterizer's, the perspective-correct weights, the layout's colour or surface and texel.
+// finishVisible: after lighting, GL_MODULATE and RGBA8.
+void gatherShown(const VisibleLayout& layout, const ShownRecord& record, const PixelRect& rect,
+                 const std::uint32_t* pixels, std::size_t count, VisibleBatch& batch);
+void finishVisible(const VisibleLayout& layout, VisibleBatch& batch);
+
+// The pixels each record shows in a tile, record by record (a counting sort of the pixels by the
+// records their samples show), reused from tile to tile.
+struct ShownLists {
+  std::vector<std::uint32_t> pairPixel, pairSlot;  // the pairs, pixel by pixel
+  std::vector<std::uint32_t> start;   // per record slot, its first pixel in `pixels`; then the end
+  std::vector<std::uint32_t> pixels;  // tile indices
+};
+
+// Colours the pixels the tile's Deferred records show (`out`), object by object in batches.
+class VisibleShader {
+ public:
+  VisibleShader(const DrawTarget& target, std::span<const DrawRecord* const> records, const PixelRect& rect,
+                VisibleBatch& batch, const VisibleSamples& out)
+      : target_(target), records_(records), rect_(rect), b_(batch), out_(out) {}
+  // Every record of the tile that some pixel shows, in submission order.
+  void shadeAll(ShownLists& lists);
+  // A translucent record's pixels just found (its slot in their samples' winners), blended over
+  // what they hold.
+  void blendRecord(std::uint32_t slot, ShownLists& lists);
+
+ private:
+  void shade(std::uint32_t slot, const std::uint32_t* pixels, std::size_t count);
+  void flush();
+  const DrawTarget& target_;
+  std::span<const DrawRecord* const> records_;
+  const PixelRect& rect_;
+  VisibleBatch& b_;
+  const VisibleSamples& out_;
+  std::uint32_t object_ = 0;
+  VisibleLayout layout_;
+  bool blending_ = false;
+};
+
+}  // namespace illum

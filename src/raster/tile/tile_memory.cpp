@@ -1,0 +1,139 @@
+// tile_memory.h, compiled once per SIMD target (Highway's foreach_target), dispatched at run time.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "raster/tile/tile_memory.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+
+#include <hwy/highway.h>
+
+#include "raster/tile/multisample.h"
+#include "raster/tile/tile_memory.h"
+
+#include <cstring>
+
+
+HWY_BEFORE_NAMESPACE();
+namespace illum::HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+void FillTile(Real* depth, std::uint32_t* color, std::size_t n, std::uint32_t clear) {
+  const hn::ScalableTag<Real> dr;
+  const hn::ScalableTag<std::uint32_t> du;
+  const auto one = hn::Set(dr, Real(1));
+  const auto word = hn::Set(du, clear);
+  std::size_t i = 0;
+  for (; i + hn::Lanes(dr) <= n; i += hn::Lanes(dr)) hn::StoreU(one, dr, depth + i);
+  for (; i < n; ++i) depth[i] = Real(1);
+  for (i = 0; i + hn::Lanes(du) <= n; i += hn::Lanes(du)) hn::StoreU(word, du, color + i);
+  for (; i < n; ++i) color[i] = clear;
+}
+
+// Pixels are moved as 32-bit words through unaligned loads and stores (an image's rows are only
+// 4-byte aligned, and Highway's unaligned accesses have no alignment needs beyond the lane's).
+std::size_t CopyPixels(const std::uint32_t* src, std::ptrdiff_t srcStride, std::uint8_t* dst, std::ptrdiff_t dstStride,
+                       int count, int rows, std::uint32_t background) {
+  const hn::ScalableTag<std::uint32_t> du;
+  const int lanes = int(hn::Lanes(du));
+  const auto back = hn::Set(du, background);
+  std::size_t unlike = 0;
+  for (int r = 0; r < rows; ++r) {
+    const auto* from = reinterpret_cast<const std::uint32_t*>(reinterpret_cast<const std::uint8_t*>(src) + r * srcStride);
+    auto* to = reinterpret_cast<std::uint32_t*>(dst + r * dstStride);
+    int i = 0;
+    for (; i + lanes <= count; i += lanes) {
+      const auto v = hn::LoadU(du, from + i);
+      hn::StoreU(v, du, to + i);
+      unlike += hn::CountTrue(du, hn::Ne(v, back));
+    }
+    if (i < count) {
+      const auto m = hn::FirstN(du, std::size_t(count - i));
+      const auto v = hn::MaskedLoad(m, du, from + i);
+      hn::BlendedStore(v, m, du, to + i);
+      unlike += hn::CountTrue(du, hn::And(m, hn::Ne(v, back)));
+    }
+  }
+  return unlike;
+}
+
+void FillPixels(std::uint8_t* dst, std::ptrdiff_t dstStride, int count, int rows, std::uint32_t value) {
+  const hn::ScalableTag<std::uint32_t> du;
+  const int lanes = int(hn::Lanes(du));
+  const auto word = hn::Set(du, value);
+  for (int r = 0; r < rows; ++r) {
+    auto* to = reinterpret_cast<std::uint32_t*>(dst + r * dstStride);
+    int i = 0;
+    for (; i + lanes <= count; i += lanes) hn::StoreU(word, du, to + i);
+    if (i < count) hn::BlendedStore(word, hn::FirstN(du, std::size_t(count - i)), du, to + i);
+  }
+}
+
+// resolvePixels (multisample.h), a vector of samples at a time: each pixel whose samples agree is
+// their word at once (compared with its first lane by lane), the others resolved one by one.
+std::size_t ResolvePixels(const std::uint32_t* src, int samples, int srcRowPixels, std::uint8_t* dst,
+                          std::ptrdiff_t dstStride, int count, int rows, std::uint32_t background) {
+  const hn::ScalableTag<std::uint32_t> du;
+  const int lanes = int(hn::Lanes(du));
+  std::size_t unlike = 0;
+  const auto put = [&](std::uint8_t* to, std::uint32_t word) {
+    std::memcpy(to, &word, 4);
+    unlike += word != background;
+  };
+  if (samples > lanes || lanes > 64) {
+    for (int r = 0; r < rows; ++r)
+      for (int x = 0; x < count; ++x)
+        put(dst + r * dstStride + 4 * x, resolvePixel(src + (std::size_t(r) * std::size_t(srcRowPixels) + std::size_t(x)) * std::size_t(samples), samples));
+    return unlike;
+  }
+  HWY_ALIGN std::uint32_t firstOf[hn::MaxLanes(du)];
+  for (int k = 0; k < lanes; ++k) firstOf[k] = std::uint32_t(k & ~(samples - 1));
+  const auto first = hn::SetTableIndices(du, firstOf);
+  const std::uint64_t group = samples >= 64 ? ~std::uint64_t(0) : (std::uint64_t(1) << samples) - 1;
+  const int perVector = lanes / samples;
+  for (int r = 0; r < rows; ++r) {
+    const std::uint32_t* row = src + std::size_t(r) * std::size_t(srcRowPixels) * std::size_t(samples);
+    std::uint8_t* to = dst + r * dstStride;
+    for (int x = 0; x < count; x += perVector) {
+      const auto w = hn::LoadU(du, row + std::size_t(x) * std::size_t(samples));
+      std::uint8_t bytes[8] = {};
+      hn::StoreMaskBits(du, hn::Eq(w, hn::TableLookupLanes(w, first)), bytes);
+      std::uint64_t same = 0;
+      std::memcpy(&same, bytes, sizeof same);
+      for (int g = 0; g < perVector && x + g < count; ++g) {
+        const std::uint32_t* pixel = row + std::size_t(x + g) * std::size_t(samples);
+        put(to + 4 * (x + g), (same >> (g * samples) & group) == group ? pixel[0] : resolvePixel(pixel, samples));
+      }
+    }
+  }
+  return unlike;
+}
+
+}  // namespace illum::HWY_NAMESPACE
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace illum {
+
+HWY_EXPORT(FillTile);
+HWY_EXPORT(CopyPixels);
+HWY_EXPORT(FillPixels);
+HWY_EXPORT(ResolvePixels);
+
+void fillTile(Real* depth, std::uint32_t* color, std::size_t n, std::uint32_t clear) {
+  HWY_DYNAMIC_DISPATCH(FillTile)(depth, color, n, clear);
+}
+
+std::size_t copyPixels(const std::uint32_t* src, std::ptrdiff_t srcStride, std::uint8_t* dst, std::ptrdiff_t dstStride,
+                       int count, int rows, std::uint32_t background) {
+  return HWY_DYNAMIC_DISPATCH(CopyPixels)(src, srcStride, dst, dstStride, count, rows, background);
+}
+
+void fillPixels(std::uint8_t* dst, std::ptrdiff_t dstStride, int count, int rows, std::uint32_t value) {
+  HWY_DYNAMIC_DISPATCH(FillPixels)(dst, dstStride, count, rows, value);
+}
+
+std::size_t resolvePixels(const std::uint32_t* src, int samples, int srcRowPixels, std::uint8_t* dst,
+                          std::ptrdiff_t dstStride, int count, int rows, std::uint32_t background) {
+  return HWY_DYNAMIC_DISPATCH(ResolvePixels)(src, samples, srcRowPixels, dst, dstStride, count, rows, background);
+}
+
+}  // namespace illum
+#endif
