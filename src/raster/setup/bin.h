@@ -11,7 +11,7 @@
 
 #include "raster/tile/framebuffer.h"
 #include "raster/coverage/rasterize.h"
-#include "raster/setup/tiny_fragment.h"
+#include "raster/coverage/tiny_fragment.h"
 
 #include <algorithm>
 #include <cstddef>

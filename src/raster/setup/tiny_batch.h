@@ -13,7 +13,7 @@
 #include "raster/setup/bin.h"
 #include "raster/setup/setup.h"
 #include "raster/coverage/tile_raster.h"
-#include "raster/setup/tiny_fragment.h"
+#include "raster/coverage/tiny_fragment.h"
 #include "raster/setup/vertex.h"
 
 #include <illum/lighting.h>

@@ -10,7 +10,7 @@
 #include "raster/shade/draw.h"
 #include "raster/shade/shade_visible.h"
 #include "raster/coverage/tile_raster.h"
-#include "raster/setup/tiny_fragment.h"
+#include "raster/coverage/tiny_fragment.h"
 
 #include <array>
 #include <cstdint>

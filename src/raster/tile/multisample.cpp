@@ -1,6 +1,5 @@
 #include "raster/tile/multisample.h"
 
-#include "raster/setup/setup.h"
 
 #include <algorithm>
 #include <array>
