@@ -299,7 +299,9 @@ TEST(Equation, MaterialColoursMultiplyTheLightsSums) {
       lightAmbient += l.ambient.r / (1 + Real(0.05) * d + Real(0.01) * d * d);
     }
     EXPECT_NEAR(sum.ambient.r, m.ambient.r * (Real(0.1) + lightAmbient), Real(1e-6));
-    if (model != LightingModel::Lambert) EXPECT_GT(sum.specular.g, 0);  // a highlight to compare
+    if (model != LightingModel::Lambert) {
+      EXPECT_GT(sum.specular.g, 0);  // a highlight to compare
+    }
   }
 }
 
