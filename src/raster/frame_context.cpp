@@ -1,6 +1,7 @@
 #include "raster/frame_context.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace illum {
 
@@ -17,6 +18,16 @@ FrameContext FrameContext::fromScene(const Scene& scene) {
   f.shading = scene.shading;
   f.blend = scene.blend;
   return f;
+}
+
+void FrameContext::setSamples(std::span<const SubpixelOffset> pattern) {
+  samples = pattern;
+  multisampled = pattern.size() > 1;
+  for (std::size_t k = 0; k < 32 && !pattern.empty(); ++k) {
+    const SubpixelOffset& o = pattern[k % pattern.size()];
+    if (o.x % 16 != 0 || o.y % 16 != 0) throw std::logic_error("sample offsets must lie on sixteenths of a pixel");
+    sampleLanes.x[k] = std::int32_t(o.x / 16), sampleLanes.y[k] = std::int32_t(o.y / 16);
+  }
 }
 
 FrameContext::SampleReach FrameContext::reach() const {

@@ -36,6 +36,12 @@ struct FrameContext {
   // centres, and each tile keeps coverage, depth and colour per sample of this pattern (more
   // than one offset), resolved in the tile. Empty otherwise (and in a pass of one sample).
   std::span<const SubpixelOffset> samples;
+  // The samples' offsets in sixteenths of a pixel (the standard patterns lie on them), repeated
+  // lane after lane (lane k: sample k mod count), as the coverage kernel's vectors take them.
+  struct SampleLanes {
+    std::int32_t x[32] = {}, y[32] = {};
+  } sampleLanes;
+  void setSamples(std::span<const SubpixelOffset> pattern);
   // Ambient occlusion, when the scene asks for it (traced from above: render/): it scales the
   // ambient term of every point lit, each pixel's under Phong shading, each vertex's otherwise.
   const OcclusionQuery* occlusion = nullptr;

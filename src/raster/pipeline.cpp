@@ -294,10 +294,7 @@ void RasterPipeline::draw(const Scene& scene, Image& image, RenderStats& stats, 
   // Multisampling in one pass: the triangles set up once at the pixel centres, each tile keeping
   // coverage, depth and colour per sample and resolving them (shade_tile.h); each pixel shaded at
   // its centre, once per triangle that it shows.
-  if (samples.size() > 1) {
-    frame.multisampled = true;
-    frame.samples = samples;
-  }
+  if (samples.size() > 1) frame.setSamples(samples);
   BinnedFrame pass(*state_, scene, frame);
   pass.drawObjects(scene, drawingOrder(scene, frame));
   if (hasPointsOrLines(scene) || !overlay.empty()) {

@@ -599,32 +599,39 @@ HWY_INLINE std::size_t SamplesPassIn(D d, const TriangleSetup& t, const PixelRec
   // A vector holds whole pixels (lanes ≥ samples) or a pixel spans whole vectors: the tables of
   // lane offsets cover one such group, `pixels` pixels in `vectors` vectors.
   const int group = std::max(lanes, samples), pixels = std::max(1, lanes / samples), vectors = group / lanes;
-  // Each sample's offset of each edge value, a·ox + b·oy, split (kSplit) into a multiple of 256
-  // and the rest; then the tables of a group's lanes: lane k is sample k mod samples of pixel
-  // k / samples.
-  T sampleHigh[3][kSamplesMax], sampleLow[3][kSamplesMax];
-  for (int i = 0; i < 3; ++i) {
-    const std::int64_t a = t.edge[i].a, b = t.edge[i].b;
-    for (int s = 0; s < samples; ++s) {
-      const std::int64_t offset = a * planes.offsets[s].x + b * planes.offsets[s].y;
-      const std::int64_t rest = kSplit ? (offset & (kSubpixelOne - 1)) : 0;
-      sampleHigh[i][s] = T(offset - rest);
-      sampleLow[i][s] = T(rest);
-    }
-  }
+  // The tables of a group's lanes (lane k: sample k mod samples of pixel k / samples): each edge
+  // value's offset from the pixel's first, k/samples·256a + a·ox + b·oy, split (kSplit) into a
+  // multiple of 256 and the rest. The samples lie on sixteenths of a pixel (ox = 16·x'), so
+  // t = a·x' + b·y' is an int32 (|a|, |b| < 2^24) and a·ox + b·oy = 16t, whose rest is 16·(t mod 16):
+  // whole vectors of integers, converted exactly.
   HWY_ALIGN T high[3][2 * kSamplesMax], low[3][2 * kSamplesMax], centre[3][2 * kSamplesMax];
   HWY_ALIGN Real pixelOf[2 * kSamplesMax];
-  for (int k = 0, pixel = 0; pixel * samples < group; ++pixel) {
-    for (int i = 0; i < 3; ++i) {
-      const T along = T(pixel * std::int64_t(t.edge[i].a) * kSubpixelOne);  // exact: a multiple of 256 below 2^32
-      for (int s = 0; s < samples; ++s) {
-        centre[i][k + s] = along;
-        high[i][k + s] = along + sampleHigh[i][s];
-        low[i][k + s] = sampleLow[i][s];
+  {
+    const hn::Rebind<std::int32_t, D> di;
+    const int shift = __builtin_ctz(unsigned(samples));  // samples is a power of two
+    const auto toT = [&](auto i) {
+      if constexpr (sizeof(T) == 4) return hn::ConvertTo(d, i);
+      else return hn::PromoteTo(d, i);
+    };
+    const auto sixteen = hn::Set(d, T(16));
+    for (int k = 0; k < group; k += lanes) {
+      const auto pixel = hn::ShiftRightSame(hn::Iota(di, k), shift);
+      const auto x = hn::LoadU(di, planes.laneX + k), y = hn::LoadU(di, planes.laneY + k);
+      hn::Store(hn::ConvertTo(dr, pixel), dr, pixelOf + k);
+      const auto pixelT = toT(pixel);
+      for (int i = 0; i < 3; ++i) {
+        const auto s = x * hn::Set(di, t.edge[i].a) + y * hn::Set(di, t.edge[i].b);
+        const auto along = pixelT * hn::Set(d, T(std::int64_t(t.edge[i].a) * kSubpixelOne));
+        hn::Store(along, d, centre[i] + k);
+        if constexpr (kSplit) {
+          hn::Store(toT(hn::And(s, hn::Set(di, ~15))) * sixteen + along, d, high[i] + k);
+          hn::Store(toT(hn::And(s, hn::Set(di, 15))) * sixteen, d, low[i] + k);
+        } else {
+          hn::Store(toT(s) * sixteen + along, d, high[i] + k);
+          hn::Store(hn::Zero(d), d, low[i] + k);
+        }
       }
     }
-    for (int s = 0; s < samples; ++s) pixelOf[k + s] = Real(pixel);
-    k += samples;
   }
   using V = hn::VFromD<D>;
   V bias[3];

@@ -64,6 +64,10 @@ void forEachTilePiece(const TriangleSetup& t, F&& f) {
 struct SamplePlanes {
   int count = 0;
   const SubpixelOffset* offsets = nullptr;
+  // The samples' offsets in sixteenths of a pixel, lane by lane: lane k holds sample k mod count
+  // (FrameContext::sampleLanes).
+  const std::int32_t* laneX = nullptr;
+  const std::int32_t* laneY = nullptr;
   Real* depth = nullptr;
   std::uint32_t* color = nullptr;
   std::uint32_t* winners = nullptr;

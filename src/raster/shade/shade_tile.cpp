@@ -105,7 +105,8 @@ void colorWinners(const DrawTarget& target, std::span<const DrawRecord* const> r
 std::size_t drawMultisampledTile(const DrawTarget& target, std::span<const DrawRecord* const> records,
                                  const PixelRect& rect, TileScratch& scratch, const SampleTiles& tiles) {
   std::uint32_t* winners = scratch.winners.data();
-  const SamplePlanes planes{tiles.count, target.frame.samples.data(), tiles.depth, tiles.color, winners};
+  const SamplePlanes planes{tiles.count, target.frame.samples.data(), target.frame.sampleLanes.x,
+                            target.frame.sampleLanes.y, tiles.depth, tiles.color, winners};
   std::size_t fragments = 0;
   bool anyWinner = false;
   VertexColors vertexColors;
@@ -131,7 +132,8 @@ std::size_t drawMultisampledTile(const DrawTarget& target, std::span<const DrawR
 std::size_t drawBlendedTile(const DrawTarget& target, std::span<const DrawRecord* const> records, const PixelRect& rect,
                             TileScratch& scratch, const SampleTiles& tiles) {
   std::uint32_t* winners = scratch.winners.data();
-  const SamplePlanes planes{tiles.count, target.frame.samples.data(), tiles.depth, tiles.color, winners};
+  const SamplePlanes planes{tiles.count, target.frame.samples.data(), target.frame.sampleLanes.x,
+                            target.frame.sampleLanes.y, tiles.depth, tiles.color, winners};
   const VisibleSamples out{tiles.count, tiles.color, winners};
   VisibleShader shader(target, records, rect, scratch.visible(), out);
   std::size_t fragments = 0;
