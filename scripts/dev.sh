@@ -12,8 +12,10 @@ PACKAGES=(
   g++ cmake make pkg-config
   libglm-dev nlohmann-json3-dev libcli11-dev libstb-dev libassimp-dev libdeflate-dev libtbb-dev libhwy-dev libembree-dev libopenexr-dev
   libgif-dev libwebp-dev
+  libsdl2-dev libimgui-dev
   slurmctld slurmd slurm-client munge
   libgtest-dev libbenchmark-dev libosmesa6-dev assimp-testmodels fonts-dejavu-core
+  xvfb xdotool x11-apps imagemagick
   clang libclang-rt-14-dev
 )
 

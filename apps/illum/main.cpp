@@ -2,6 +2,7 @@
 #include <illum/error.h>
 
 #include "commands.h"
+#include "view_command.h"
 
 #include <cstdio>
 #include <exception>
@@ -21,10 +22,11 @@ int main(int argc, char** argv) {
   const illum::cli::Command bench = illum::cli::addBenchCommand(app);
   const illum::cli::Command compare = illum::cli::addCompareCommand(app);
   const illum::cli::Command history = illum::cli::addHistoryCommand(app);
+  const illum::cli::Command view = illum::view::addViewCommand(app);
 
   // f3d's habit: `illum model.glb` means `illum render model.glb`.
   std::vector<std::string> args(argv + 1, argv + argc);
-  if (!args.empty() && args[0] != "eval" && args[0] != "render" && args[0] != "bench" && args[0] != "compare" && args[0] != "history" && !args[0].empty() && args[0][0] != '-')
+  if (!args.empty() && args[0] != "eval" && args[0] != "render" && args[0] != "bench" && args[0] != "compare" && args[0] != "history" && args[0] != "view" && !args[0].empty() && args[0][0] != '-')
     args.insert(args.begin(), "render");
   std::reverse(args.begin(), args.end());  // CLI11 takes the arguments last first
 
@@ -46,6 +48,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("bench")) return bench();
     if (app.got_subcommand("compare")) return compare();
     if (app.got_subcommand("history")) return history();
+    if (app.got_subcommand("view")) return view();
     return render();
   } catch (const illum::InputError& e) {
     std::cerr << "illum: error: " << e.what() << "\n";

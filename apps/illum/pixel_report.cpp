@@ -8,8 +8,8 @@
 namespace illum::cli {
 namespace {
 
-void row(const std::string& name, const Color3& c) {
-  std::printf("  %-22s %9.4f %9.4f %9.4f\n", name.c_str(), double(c.r), double(c.g), double(c.b));
+void row(std::FILE* out, const std::string& name, const Color3& c) {
+  std::fprintf(out, "  %-22s %9.4f %9.4f %9.4f\n", name.c_str(), double(c.r), double(c.g), double(c.b));
 }
 
 std::string vec(const Vec3& v) {
@@ -28,22 +28,22 @@ int byte(Real c) { return int(std::lround(double(glm::clamp(c, Real(0), Real(1))
 
 // The equation (OpenGL 2.1 §2.14.1) at one point, one light at a time, with each light's geometry;
 // computed by the same accumulateLight the renderer uses. Returns the clamped colour.
-Color4 printEquation(const Scene& scene, const Material& material, const Vec3& P, const Vec3& N) {
+Color4 printEquation(std::FILE* out, const Scene& scene, const Material& material, const Vec3& P, const Vec3& N) {
   const LightingModel model = modelOf(material, scene.model);
   const Vec3 V = viewerDirection(P, scene.lightModel.localViewer);
-  std::printf("  eye space: P = %s, N = %s, V = %s\n", vec(P).c_str(), vec(N).c_str(), vec(V).c_str());
+  std::fprintf(out, "  eye space: P = %s, N = %s, V = %s\n", vec(P).c_str(), vec(N).c_str(), vec(V).c_str());
   if (model == LightingModel::CookTorrance) {
     const PhysicalMaterial p = physicalOf(material);
-    std::printf("  cook-torrance (%s): base colour %s, metallic %.4f, roughness %.4f, f0 %s\n",
+    std::fprintf(out, "  cook-torrance (%s): base colour %s, metallic %.4f, roughness %.4f, f0 %s\n",
                 p.distribution == Microfacet::GGX ? "GGX" : "Beckmann", vec(p.baseColor).c_str(), double(p.metallic),
                 double(p.roughness), vec(p.f0).c_str());
   }
   const SurfaceGeometry surface{P, N, V};
   const Mat4 view = scene.camera.viewFromWorld();
-  std::printf("  %-22s %9s %9s %9s\n", "", "R", "G", "B");
+  std::fprintf(out, "  %-22s %9s %9s %9s\n", "", "R", "G", "B");
   const LightingTerms unlit = evaluateTerms({}, scene.lightModel, material, model, surface);
-  row("emission", unlit.emission);
-  row("global ambient", unlit.ambient);
+  row(out, "emission", unlit.emission);
+  row(out, "global ambient", unlit.ambient);
   std::vector<EyeLight> lights;
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {
     const EyeLight& light = lights.emplace_back(toEyeSpace(scene.lights[i], view));
@@ -51,106 +51,106 @@ Color4 printEquation(const Scene& scene, const Material& material, const Vec3& P
     LightDetail d;
     accumulateLight(share, light, material, model, surface, &d);
     const std::string name = "light " + std::to_string(i);
-    std::printf("  %s: %s, L = %s", name.c_str(), d.positional ? "positional" : "directional", vec(d.L).c_str());
-    if (d.positional) std::printf(", distance %.4f", double(d.distance));
-    std::printf(", attenuation %.4f, spot factor %.4f%s; N·L = %.4f", double(d.attenuation), double(d.spot),
+    std::fprintf(out, "  %s: %s, L = %s", name.c_str(), d.positional ? "positional" : "directional", vec(d.L).c_str());
+    if (d.positional) std::fprintf(out, ", distance %.4f", double(d.distance));
+    std::fprintf(out, ", attenuation %.4f, spot factor %.4f%s; N·L = %.4f", double(d.attenuation), double(d.spot),
                 light.isSpot() ? "" : " (no cone)", double(d.NoL));
     if (model == LightingModel::CookTorrance)
-      std::printf("; H = %s, N·H = %.4f, N·V = %.4f, V·H = %.4f; D = %.4f, V = G/(4 N·L N·V) = %.4f, F = %s",
+      std::fprintf(out, "; H = %s, N·H = %.4f, N·V = %.4f, V·H = %.4f; D = %.4f, V = G/(4 N·L N·V) = %.4f, F = %s",
                   vec(d.H).c_str(), double(d.NoH), double(d.NoV), double(d.VoH), double(d.D), double(d.visibility),
                   vec(d.F).c_str());
     else if (model == LightingModel::BlinnPhong)
-      std::printf("; H = %s, N·H = %.4f, (N·H)^%g = %.4f", vec(d.H).c_str(), double(d.NoH), double(material.shininess),
+      std::fprintf(out, "; H = %s, N·H = %.4f, (N·H)^%g = %.4f", vec(d.H).c_str(), double(d.NoH), double(material.shininess),
                   double(d.lobe));
     else if (model == LightingModel::Phong)
-      std::printf("; R = %s, R·V = %.4f, (R·V)^%g = %.4f", vec(d.R).c_str(), double(d.RoV), double(material.shininess),
+      std::fprintf(out, "; R = %s, R·V = %.4f, (R·V)^%g = %.4f", vec(d.R).c_str(), double(d.RoV), double(material.shininess),
                   double(d.lobe));
-    std::printf("\n");
-    row(name + " ambient", d.terms.ambient);
-    row(name + " diffuse", d.terms.diffuse);
+    std::fprintf(out, "\n");
+    row(out, name + " ambient", d.terms.ambient);
+    row(out, name + " diffuse", d.terms.diffuse);
     if (model == LightingModel::BlinnPhong || model == LightingModel::Phong || model == LightingModel::CookTorrance)
-      row(name + " specular", d.terms.specular);
+      row(out, name + " specular", d.terms.specular);
   }
   // The sum as the renderer forms it (the lights' shares above may differ from it in the last bit).
   const Color4 lit = clampedColor(evaluateTerms(lights, scene.lightModel, material, model, surface), material);
-  row("total (clamped)", Color3(lit));
+  row(out, "total (clamped)", Color3(lit));
   return lit;
 }
 
 // A ray tracer's pixel: the primary ray's hit, the equation there without shadows, what each
 // shadow ray found, and what the mirror, glass and see-through rays added.
-void printTracedReport(const Scene& scene, const PixelProbe& p, const std::uint8_t* b) {
-  std::printf("pixel (%d, %d): object %zu, triangle %zu, %s face; %s; ray traced (%s): lit where the ray through the "
+void printTracedReport(std::FILE* out, const Scene& scene, const PixelProbe& p, const std::uint8_t* b) {
+  std::fprintf(out, "pixel (%d, %d): object %zu, triangle %zu, %s face; %s; ray traced (%s): lit where the ray through the "
               "pixel's centre meets the surface, with the interpolated normal\n",
               p.x, p.y, p.object, p.triangle, p.frontFacing ? "front" : "back",
               std::string(toString(modelOf(p.material, scene.model))).c_str(), std::string(toString(scene.renderer)).c_str());
-  std::printf("  barycentric weights: %.4f %.4f %.4f\n", double(p.weights[0]), double(p.weights[1]),
+  std::fprintf(out, "  barycentric weights: %.4f %.4f %.4f\n", double(p.weights[0]), double(p.weights[1]),
               double(p.weights[2]));
-  std::printf(" the local equation, every light seen:\n");
-  printEquation(scene, p.material, p.eyePosition, p.eyeNormal);
+  std::fprintf(out, " the local equation, every light seen:\n");
+  printEquation(out, scene, p.material, p.eyePosition, p.eyeNormal);
   for (std::size_t i = 0; i < p.lightVisibility.size(); ++i) {
     const Color3& v = p.lightVisibility[i];
     const char* what = v == Color3(1) ? "seen" : v == Color3(0) ? "in shadow" : "seen through glass";
-    std::printf("  light %zu: %s (%.4f %.4f %.4f)%s\n", i, what, double(v.r), double(v.g), double(v.b),
+    std::fprintf(out, "  light %zu: %s (%.4f %.4f %.4f)%s\n", i, what, double(v.r), double(v.g), double(v.b),
                 scene.rayTracing.shadows ? "" : ", shadows off");
   }
-  std::printf("  local colour with shadows%s: %s\n", scene.renderer == RendererKind::Hall ? " (Hall's terms)" : "",
+  std::fprintf(out, "  local colour with shadows%s: %s\n", scene.renderer == RendererKind::Hall ? " (Hall's terms)" : "",
               rgba(p.lit).c_str());
   if (p.textured)
-    std::printf(p.texelIsBaseColor ? "  (the texel %s tinted the base colour before lighting)\n" : "  (× texel %s, GL_MODULATE)\n",
+    std::fprintf(out, p.texelIsBaseColor ? "  (the texel %s tinted the base colour before lighting)\n" : "  (× texel %s, GL_MODULATE)\n",
                 rgba(p.texel).c_str());
-  std::printf("  with the reflected, refracted and see-through rays: %s = bytes %d %d %d %d\n", rgba(p.written).c_str(),
+  std::fprintf(out, "  with the reflected, refracted and see-through rays: %s = bytes %d %d %d %d\n", rgba(p.written).c_str(),
               byte(p.written.r), byte(p.written.g), byte(p.written.b), byte(p.written.a));
-  std::printf("  in the file: bytes %d %d %d %d%s\n", b[0], b[1], b[2], b[3],
+  std::fprintf(out, "  in the file: bytes %d %d %d %d%s\n", b[0], b[1], b[2], b[3],
               samplesPerPixel(scene) > 1 ? " (the mean of every sample of the pixel)" : "");
 }
 
 }  // namespace
 
-void printPixelReport(const Scene& scene, const PixelProbe& p, const Image& image) {
+void printPixelReport(const Scene& scene, const PixelProbe& p, const Image& image, std::FILE* out) {
   const std::uint8_t* b = image.pixel(p.x, p.y);
   if (!p.hit) {
-    std::printf("pixel (%d, %d): background, no surface drawn here\n", p.x, p.y);
-    std::printf("  in the file: bytes %d %d %d %d\n", b[0], b[1], b[2], b[3]);
+    std::fprintf(out, "pixel (%d, %d): background, no surface drawn here\n", p.x, p.y);
+    std::fprintf(out, "  in the file: bytes %d %d %d %d\n", b[0], b[1], b[2], b[3]);
     return;
   }
   if (scene.renderer != RendererKind::Raster) {
-    printTracedReport(scene, p, b);
+    printTracedReport(out, scene, p, b);
     return;
   }
   const char* shading = scene.shading == Shading::Flat      ? "flat shading: lit once, at the triangle's last vertex"
                         : scene.shading == Shading::Gouraud ? "Gouraud shading: lit at the vertices, colours interpolated"
                                                             : "Phong shading: lit here, with the interpolated normal";
-  std::printf("pixel (%d, %d): object %zu, triangle %zu, %s face; %s; %s\n", p.x, p.y, p.object, p.triangle,
+  std::fprintf(out, "pixel (%d, %d): object %zu, triangle %zu, %s face; %s; %s\n", p.x, p.y, p.object, p.triangle,
               p.frontFacing ? "front" : "back", std::string(toString(modelOf(p.material, scene.model))).c_str(), shading);
   switch (scene.shading) {
     case Shading::Flat:
-      std::printf(" the provoking vertex:\n");
-      printEquation(scene, p.material, p.eyePosition, p.eyeNormal);
-      std::printf("  lit colour (the provoking vertex's, for the whole triangle): %s\n", rgba(p.lit).c_str());
+      std::fprintf(out, " the provoking vertex:\n");
+      printEquation(out, scene, p.material, p.eyePosition, p.eyeNormal);
+      std::fprintf(out, "  lit colour (the provoking vertex's, for the whole triangle): %s\n", rgba(p.lit).c_str());
       break;
     case Shading::Gouraud:
       for (std::size_t i = 0; i < 3; ++i) {
-        std::printf(" vertex %zu of the drawn triangle:\n", i);
-        printEquation(scene, p.vertexMaterials[i], p.vertexPositions[i], p.vertexNormals[i]);
-        std::printf("  vertex colour used: %s\n", rgba(p.vertexColors[i]).c_str());
+        std::fprintf(out, " vertex %zu of the drawn triangle:\n", i);
+        printEquation(out, scene, p.vertexMaterials[i], p.vertexPositions[i], p.vertexNormals[i]);
+        std::fprintf(out, "  vertex colour used: %s\n", rgba(p.vertexColors[i]).c_str());
       }
-      std::printf("  perspective-correct weights: %.4f %.4f %.4f\n", double(p.weights[0]), double(p.weights[1]),
+      std::fprintf(out, "  perspective-correct weights: %.4f %.4f %.4f\n", double(p.weights[0]), double(p.weights[1]),
                   double(p.weights[2]));
-      std::printf("  lit colour (interpolated): %s\n", rgba(p.lit).c_str());
+      std::fprintf(out, "  lit colour (interpolated): %s\n", rgba(p.lit).c_str());
       break;
     case Shading::Phong:
-      printEquation(scene, p.material, p.eyePosition, p.eyeNormal);
-      std::printf("  lit colour: %s\n", rgba(p.lit).c_str());
+      printEquation(out, scene, p.material, p.eyePosition, p.eyeNormal);
+      std::fprintf(out, "  lit colour: %s\n", rgba(p.lit).c_str());
       break;
   }
   if (p.textured && p.texelIsBaseColor)
-    std::printf("  (the texel %s tinted the base colour before lighting)\n", rgba(p.texel).c_str());
+    std::fprintf(out, "  (the texel %s tinted the base colour before lighting)\n", rgba(p.texel).c_str());
   else if (p.textured)
-    std::printf("  × texel %s (GL_MODULATE)\n", rgba(p.texel).c_str());
-  std::printf("  fragment: %s = bytes %d %d %d %d%s\n", rgba(p.written).c_str(), byte(p.written.r), byte(p.written.g),
+    std::fprintf(out, "  × texel %s (GL_MODULATE)\n", rgba(p.texel).c_str());
+  std::fprintf(out, "  fragment: %s = bytes %d %d %d %d%s\n", rgba(p.written).c_str(), byte(p.written.r), byte(p.written.g),
               byte(p.written.b), byte(p.written.a), p.blended ? ", blended over what was there (source over)" : "");
-  std::printf("  in the file: bytes %d %d %d %d\n", b[0], b[1], b[2], b[3]);
+  std::fprintf(out, "  in the file: bytes %d %d %d %d\n", b[0], b[1], b[2], b[3]);
 }
 
 }  // namespace illum::cli

@@ -6,9 +6,11 @@
 #include <illum/render.h>
 #include <illum/scene.h>
 
+#include <cstdio>
+
 namespace illum::cli {
 
-// `image` is the picture as written (after blending and labels).
-void printPixelReport(const Scene& scene, const PixelProbe& probe, const Image& image);
+// `image` is the picture as written (after blending and labels); the report goes to `out`.
+void printPixelReport(const Scene& scene, const PixelProbe& probe, const Image& image, std::FILE* out = stdout);
 
 }  // namespace illum::cli

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdint>
+#include <atomic>
 #include <functional>
 #include <memory>
 #include <vector>
@@ -78,12 +79,17 @@ class Renderer {
   // Called with the fraction of the picture done, from the rendering threads (the ray and path
   // tracers, tile by tile), so that a long render can show its progress.
   void onProgress(std::function<void(double)> progress) { progress_ = std::move(progress); }
+  // A flag read between tiles (and between a frame's batches of triangles): once it is set, the
+  // frame in flight stops early and render() returns a picture that is not to be used. A viewer
+  // sets it when a newer frame is wanted. Null: never.
+  void setCancel(const std::atomic<bool>* cancel) { cancel_ = cancel; }
 
   struct State;  // defined by render/renderer.cpp
 
  private:
   std::unique_ptr<State> state_;
   std::function<void(double)> progress_;
+  const std::atomic<bool>* cancel_ = nullptr;
 };
 
 // The picture at 16 bits per channel, for a 16-bit PNG: `linear` (the values render() gives) through

@@ -1,7 +1,8 @@
-// The one place stb's single-header libraries are compiled, with hidden visibility: illum uses
-// its own copy of stb_image (decoding textures) and stb_truetype (labels), never another
-// library's — assimp pulls in libdraco, which exports a copy of stb of its own, and a system
-// libstb may be a different version. Nothing else defines the *_IMPLEMENTATION macros.
+// The one place stb_image is compiled, with hidden visibility: illum uses its own copy (decoding
+// textures), never another library's — assimp pulls in libdraco, which exports a copy of stb of
+// its own, and a system libstb may be a different version. stb_truetype is compiled static in
+// text.cpp, its one user: Dear ImGui (the viewer) links the system's stb_truetype and stb_rect_pack,
+// whose structures a copy of illum's would not match.
 // The C library first, outside the pragma: its declarations must keep default visibility.
 #include <assert.h>
 #include <limits.h>
@@ -17,6 +18,4 @@
 #define STB_IMAGE_IMPLEMENTATION
 #define STBI_FAILURE_USERMSG
 #include <stb_image.h>
-#define STB_TRUETYPE_IMPLEMENTATION
-#include <stb_truetype.h>
 #pragma GCC visibility pop

@@ -1,5 +1,9 @@
 #include "image/text.h"
 
+// stb_truetype compiled here, its functions static to this file: no other library (Dear ImGui
+// links the system's copy) can bind to illum's.
+#define STBTT_STATIC
+#define STB_TRUETYPE_IMPLEMENTATION
 #include <stb_truetype.h>
 
 #include <cmath>

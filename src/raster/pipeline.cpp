@@ -83,8 +83,9 @@ namespace {
 // One frame through the pipeline, in the renderer's working memory.
 class BinnedFrame {
  public:
-  BinnedFrame(RasterPipeline::State& state, const Scene& scene, const FrameContext& frame)
-      : s_(state), frame_(frame), target_(frame, scene, state.fb, nullptr),
+  BinnedFrame(RasterPipeline::State& state, const Scene& scene, const FrameContext& frame,
+              const std::atomic<bool>* cancel)
+      : s_(state), frame_(frame), target_(frame, scene, state.fb, nullptr), cancel_(cancel),
         samples_(std::max<int>(1, int(frame.samples.size()))) {
     s_.fb.reset(scene.width, scene.height, scene.background, samples_);
     tiles_.reset(frame.width, frame.height);
@@ -166,7 +167,11 @@ class BinnedFrame {
     }
   }
 
+  // A newer frame is wanted: what is left of this one is not drawn.
+  bool cancelled() const { return cancel_ && cancel_->load(std::memory_order_relaxed); }
+
   void drawTile(int tile) {
+    if (cancelled()) return;
     auto& list = s_.tileLists.local();
     list.records.clear();
     list.fragments.clear();
@@ -236,7 +241,7 @@ class BinnedFrame {
     // own; a tile then draws its records chunk by chunk, in submission order.
     const std::size_t chunks = ranges.size();
     const std::size_t slice = std::max<std::size_t>(1, kBatchTiny / kTriangleChunk);
-    for (std::size_t c0 = 0; c0 < chunks; c0 += slice) {
+    for (std::size_t c0 = 0; c0 < chunks && !cancelled(); c0 += slice) {
       // A full batch is drawn when more is to come, not at once: the last one is left to
       // flushInto, which draws a tile no earlier batch touched in memory that stays in cache.
       if (batchedRecords_ >= kBatchRecords || batchedTiny_ >= kBatchTiny) flush();
@@ -273,6 +278,7 @@ class BinnedFrame {
   RasterPipeline::State& s_;
   const FrameContext& frame_;
   DrawTarget target_;
+  const std::atomic<bool>* cancel_;
   int samples_;     // per pixel, kept in the tile
   TileBins tiles_;  // only its tile rectangles: the records are binned per chunk
   std::size_t used_ = 0, batchedRecords_ = 0, batchedTiny_ = 0;
@@ -285,7 +291,7 @@ RasterPipeline::RasterPipeline() : state_(std::make_unique<State>()) {}
 RasterPipeline::~RasterPipeline() = default;
 
 void RasterPipeline::draw(const Scene& scene, Image& image, RenderStats& stats, PixelProbe* probe,
-                          const OcclusionQuery* occlusion) {
+                          const OcclusionQuery* occlusion, const std::atomic<bool>* cancel) {
   FrameContext frame = FrameContext::fromScene(scene);
   frame.occlusion = occlusion;
   const std::span<const SubpixelOffset> samples = multisamplePattern(scene.multisample);
@@ -295,7 +301,7 @@ void RasterPipeline::draw(const Scene& scene, Image& image, RenderStats& stats, 
   // coverage, depth and colour per sample and resolving them (shade_tile.h); each pixel shaded at
   // its centre, once per triangle that it shows.
   if (samples.size() > 1) frame.setSamples(samples);
-  BinnedFrame pass(*state_, scene, frame);
+  BinnedFrame pass(*state_, scene, frame, cancel);
   pass.drawObjects(scene, drawingOrder(scene, frame));
   if (hasPointsOrLines(scene) || !overlay.empty()) {
     pass.flush();

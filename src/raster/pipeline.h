@@ -9,6 +9,7 @@
 
 #include "shading/occlusion.h"
 
+#include <atomic>
 #include <memory>
 
 namespace illum {
@@ -26,8 +27,9 @@ class RasterPipeline {
   // Draws `scene` into `image` (its memory reused), row 0 at the top. `stats` is filled, its
   // pixelsDrawn with the pixels unlike the background; `probe`, if given, with the watched pixel's
   // last fragment. `occlusion`, if given, occludes the ambient term (the scene's ambient occlusion).
+  // `cancel`, if set, stops the frame between tiles and batches (Renderer::setCancel).
   void draw(const Scene& scene, Image& image, RenderStats& stats, PixelProbe* probe,
-            const OcclusionQuery* occlusion = nullptr);
+            const OcclusionQuery* occlusion = nullptr, const std::atomic<bool>* cancel = nullptr);
 
   struct State;
 

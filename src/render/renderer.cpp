@@ -24,10 +24,10 @@ void Renderer::render(const Scene& scene, Image& image, RenderStats* statsOut, P
     // Ambient occlusion is traced for the points the rasterizer lights (trace/ambient_occlusion.h).
     std::unique_ptr<TracedOcclusion> occlusion;
     if (scene.ambientOcclusion.enabled && !scene.objects.empty()) occlusion = std::make_unique<TracedOcclusion>(scene);
-    state_->raster.draw(scene, image, stats, probe, occlusion.get());
+    state_->raster.draw(scene, image, stats, probe, occlusion.get(), cancel_);
     finishRasterPicture(scene, stats, image, linear);
   } else {
-    traceScene(scene, image, stats, probe, linear, progress_);
+    traceScene(scene, image, stats, probe, linear, progress_, cancel_);
     finishTracedPicture(scene, stats, image);
   }
   if (statsOut) *statsOut = stats;

@@ -128,7 +128,7 @@ class TracedFrame {
 }  // namespace
 
 void traceScene(const Scene& scene, Image& image, RenderStats& stats, PixelProbe* probe, FloatImage* linear,
-                const std::function<void(double)>& progress) {
+                const std::function<void(double)>& progress, const std::atomic<bool>* cancel) {
   stats = RenderStats{};
   const auto start = Clock::now();
   const RayScene rays(scene);
@@ -145,6 +145,7 @@ void traceScene(const Scene& scene, Image& image, RenderStats& stats, PixelProbe
   tbb::parallel_for(tbb::blocked_range<int>(0, tiles), [&](const tbb::blocked_range<int>& r) {
     TileCounts& local = counts.local();
     for (int t = r.begin(); t < r.end(); ++t) {
+      if (cancel && cancel->load(std::memory_order_relaxed)) return;
       frame.tile(t % tilesX * kTile, t / tilesX * kTile, local);
       if (progress) progress(double(++done) / tiles);
     }

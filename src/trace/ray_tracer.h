@@ -7,6 +7,7 @@
 #include <illum/render.h>
 #include <illum/scene.h>
 
+#include <atomic>
 #include <functional>
 
 namespace illum {
@@ -15,7 +16,9 @@ namespace illum {
 // `linear`, if given, receives each pixel's mean before its 8-bit conversion.
 // `progress`, if set, hears the fraction of tiles done (from the worker threads). The picture is
 // finished (labels) by the caller, render/.
+// `cancel`, if set, stops the frame between tiles (Renderer::setCancel).
 void traceScene(const Scene& scene, Image& image, RenderStats& stats, PixelProbe* probe = nullptr,
-                FloatImage* linear = nullptr, const std::function<void(double)>& progress = {});
+                FloatImage* linear = nullptr, const std::function<void(double)>& progress = {},
+                const std::atomic<bool>* cancel = nullptr);
 
 }  // namespace illum

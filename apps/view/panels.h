@@ -1,0 +1,25 @@
+// The viewer's panels, for what the seeds teach: the lighting model, shading frequency and
+// renderer; each light (kind, position or direction, colours, attenuation, spot) with its own
+// on/off; each material (GL colours and shininess, or base colour, metallic, roughness); samples,
+// ray depth, shadows, occlusion and overlays. Each control names the scene key or CLI option it
+// changes, and changes it in the ViewState's scene; then the watched pixel's report.
+#pragma once
+
+#include "render_worker.h"
+#include "view_state.h"
+
+#include <optional>
+#include <vector>
+
+namespace illum::view {
+
+// The lights the person switched off: each one's values, to put back when it is switched on.
+struct PanelState {
+  std::vector<std::optional<Light>> parked;
+  std::string message;  // the last error or notice, shown until the next
+};
+
+void drawPanels(ViewState& state, PanelState& panels, const Frame* frame, double fps);
+void drawHelp();
+
+}  // namespace illum::view

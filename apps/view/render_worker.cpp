@@ -1,0 +1,111 @@
+#include "render_worker.h"
+
+#include "pixel_report.h"
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+
+namespace illum::view {
+namespace {
+
+// The --debug-pixel report as text (pixel_report.h writes it to a stream).
+std::string reportOf(const Scene& scene, const PixelProbe& probe, const Image& image) {
+  char* text = nullptr;
+  std::size_t size = 0;
+  std::FILE* out = open_memstream(&text, &size);
+  if (!out) return "";
+  cli::printPixelReport(scene, probe, image, out);
+  std::fclose(out);
+  std::string report(text, size);
+  std::free(text);
+  return report;
+}
+
+}  // namespace
+
+RenderWorker::RenderWorker() : thread_([this] { run(); }) { renderer_.setCancel(&cancel_); }
+
+RenderWorker::~RenderWorker() {
+  {
+    const std::lock_guard lock(mutex_);
+    quit_ = true;
+    cancel_ = true;
+  }
+  wake_.notify_all();
+  thread_.join();
+}
+
+void RenderWorker::request(std::shared_ptr<const Scene> scene, std::uint64_t version,
+                           std::optional<std::pair<int, int>> probe) {
+  {
+    const std::lock_guard lock(mutex_);
+    pending_ = Request{std::move(scene), version, probe};
+    cancel_ = true;  // whatever is in flight is out of date
+  }
+  wake_.notify_all();
+}
+
+bool RenderWorker::take(Frame& out) {
+  const std::lock_guard lock(mutex_);
+  if (!done_) return false;
+  out = std::move(*done_);
+  done_.reset();
+  return true;
+}
+
+void RenderWorker::run() {
+  for (;;) {
+    Request r;
+    {
+      std::unique_lock lock(mutex_);
+      wake_.wait(lock, [&] { return quit_ || pending_; });
+      if (quit_) return;
+      r = std::move(*pending_);
+      pending_.reset();
+      cancel_ = false;
+    }
+    busy_ = true;
+    draw(r);
+    busy_ = false;
+  }
+}
+
+void RenderWorker::draw(const Request& r) {
+  using Clock = std::chrono::steady_clock;
+  // The tracers refine: 1 sample, then 4, 16, ... up to the scene's own count, each a whole frame.
+  const bool traced = r.scene->renderer != RendererKind::Raster;
+  const int full = traced ? samplesPerPixel(*r.scene) : r.scene->multisample;
+  for (int samples = traced ? 1 : full;; samples = std::min(full, samples * 4)) {
+    std::shared_ptr<const Scene> scene = r.scene;
+    if (samples != full) {
+      auto coarse = std::make_shared<Scene>(*r.scene);
+      coarse->rayTracing.samples = samples;
+      scene = coarse;
+    }
+    Frame f;
+    std::optional<PixelProbe> probe;
+    if (r.probe) {
+      probe.emplace();
+      probe->x = r.probe->first, probe->y = r.probe->second;
+    }
+    const auto start = Clock::now();
+    renderer_.render(*scene, f.image, nullptr, probe ? &*probe : nullptr);
+    if (cancel_) return;  // a newer request came: this frame is not to be shown
+    f.ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+    f.version = r.version;
+    f.samples = samples;
+    f.final = samples == full;
+    if (probe) f.report = reportOf(*scene, *probe, f.image);
+    f.probe = probe;
+    f.scene = scene;
+    {
+      const std::lock_guard lock(mutex_);
+      if (pending_) return;
+      done_ = std::move(f);
+    }
+    if (samples == full) return;
+  }
+}
+
+}  // namespace illum::view

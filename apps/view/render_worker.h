@@ -1,0 +1,66 @@
+// The viewer's frames, drawn off the input thread: the window asks for the newest scene and keeps
+// handling input; a frame in flight for an older request is abandoned between tiles
+// (Renderer::setCancel), so that dragging never queues frames. The ray and path tracers refine
+// once the view stands still: one sample per pixel first, then more, up to the scene's own count,
+// whose frame is what `illum render` draws of the same scene.
+#pragma once
+
+#include <illum/image.h>
+#include <illum/render.h>
+#include <illum/scene.h>
+
+#include <atomic>
+#include <condition_variable>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+
+namespace illum::view {
+
+struct Frame {
+  Image image;
+  std::uint64_t version = 0;  // the ViewState version it shows
+  double ms = 0;              // how long it took
+  int samples = 1;            // per pixel (tracers: rays; the rasterizer: multisamples)
+  bool final = true;          // the scene's own sample count (a refining tracer's last frame)
+  std::optional<PixelProbe> probe;
+  std::string report;         // the --debug-pixel report of the watched pixel
+  std::shared_ptr<const Scene> scene;
+};
+
+class RenderWorker {
+ public:
+  RenderWorker();
+  ~RenderWorker();
+  RenderWorker(const RenderWorker&) = delete;
+  RenderWorker& operator=(const RenderWorker&) = delete;
+
+  // Draw `scene` (with the pixel (x, y), if any, watched): what is in flight is abandoned.
+  void request(std::shared_ptr<const Scene> scene, std::uint64_t version, std::optional<std::pair<int, int>> probe);
+  // The newest finished frame, when one came since the last call.
+  bool take(Frame& out);
+  // Whether a frame is being drawn (or refined) now.
+  bool busy() const { return busy_.load(); }
+
+ private:
+  struct Request {
+    std::shared_ptr<const Scene> scene;
+    std::uint64_t version = 0;
+    std::optional<std::pair<int, int>> probe;
+  };
+  void run();
+  void draw(const Request& r);
+
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  std::optional<Request> pending_;
+  std::optional<Frame> done_;
+  std::atomic<bool> cancel_{false}, quit_{false}, busy_{false};
+  Renderer renderer_;
+  std::thread thread_;
+};
+
+}  // namespace illum::view

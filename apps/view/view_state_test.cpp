@@ -1,0 +1,184 @@
+// The viewer's state without a window: the trackball's closed forms, f3d's keys, stepping
+// through files, a model preview's rig turning with the camera, and the frames the worker draws
+// equal what `illum render` draws of the same scene.
+#include "key_map.h"
+#include "render_worker.h"
+#include "trackball.h"
+#include "view_state.h"
+
+#include <illum/error.h>
+#include <illum/render.h>
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <thread>
+
+namespace illum::view {
+namespace {
+
+const char* kModels = "/usr/share/assimp/models";
+
+Camera lookingDown(Real distance) {
+  Camera c;
+  c.eye = {0, 0, distance};
+  c.center = {0, 0, 0};
+  c.up = {0, 1, 0};
+  return c;
+}
+
+TEST(Trackball, OrbitTurnsAboutTheFocalPointAtTheSameDistance) {
+  Trackball t(lookingDown(5), {{0, 0, 0}, 1}, {0, 1, 0});
+  // A drag across half the window's height (100 of 200 pixels): 100° about the view-up.
+  t.orbit(-100, 0, 200);
+  const Camera& c = t.camera();
+  EXPECT_NEAR(glm::length(c.eye - c.center), 5, 1e-4);
+  EXPECT_NEAR(glm::degrees(std::atan2(c.eye.x, c.eye.z)), 100, 1e-3);
+  EXPECT_NEAR(c.eye.y, 0, 1e-5);
+  // Upwards: elevation about the right axis, the view-up kept orthogonal to the view.
+  t.orbit(0, 20, 200);
+  EXPECT_NEAR(glm::length(t.camera().eye), 5, 1e-4);
+  EXPECT_NEAR(glm::dot(glm::normalize(t.camera().up), glm::normalize(t.camera().eye - t.camera().center)), 0, 1e-5);
+}
+
+TEST(Trackball, ZoomPanResetAndAxisViews) {
+  Trackball t(lookingDown(5), {{0, 0, 0}, 1}, {0, 1, 0});
+  t.zoom(2);
+  EXPECT_NEAR(t.camera().eye.z, 2.5, 1e-5);
+  EXPECT_LT(t.camera().near, Real(1.5));  // the bounds stay in front of the near plane
+  // A drag right moves the world right under the pointer: eye and focal point move left.
+  t.pan(10, 0, 100);
+  EXPECT_LT(t.camera().center.x, 0);
+  EXPECT_NEAR(t.camera().center.x - t.camera().eye.x, 0, 1e-5);
+  t.reset();
+  EXPECT_EQ(t.camera().eye, Vec3(0, 0, 5));
+  EXPECT_EQ(t.camera().center, Vec3(0, 0, 0));
+  // Key 7 (top) for a Y-up model: looking down −Y at the same distance.
+  t.look(AxisView::Top);
+  EXPECT_NEAR(t.camera().eye.y, 5, 1e-5);
+  t.look(AxisView::Right);
+  EXPECT_NEAR(t.camera().eye.x, 5, 1e-5);
+  // Z-up (an STL): the front looks along +Y from −Y.
+  Trackball z(lookingDown(5), {{0, 0, 0}, 1}, {0, 0, 1});
+  z.look(AxisView::Front);
+  EXPECT_NEAR(z.camera().eye.y, -5, 1e-5);
+}
+
+TEST(KeyMap, F3dsKeys) {
+  EXPECT_EQ(actionFor(SDLK_ESCAPE, 0), Action::Quit);
+  EXPECT_EQ(actionFor(SDLK_RETURN, 0), Action::Reset);
+  EXPECT_EQ(actionFor(SDLK_e, 0), Action::Edges);
+  EXPECT_EQ(actionFor(SDLK_x, 0), Action::Axes);
+  EXPECT_EQ(actionFor(SDLK_g, 0), Action::Grid);
+  EXPECT_EQ(actionFor(SDLK_z, 0), Action::FrameRate);
+  EXPECT_EQ(actionFor(SDLK_a, 0), Action::AntiAliasing);
+  EXPECT_EQ(actionFor(SDLK_q, 0), Action::Occlusion);
+  EXPECT_EQ(actionFor(SDLK_h, 0), Action::Help);
+  EXPECT_EQ(actionFor(SDLK_SLASH, KMOD_SHIFT), Action::Help);
+  EXPECT_EQ(actionFor(SDLK_1, 0), Action::Front);
+  EXPECT_EQ(actionFor(SDLK_1, KMOD_LCTRL), Action::Back);
+  EXPECT_EQ(actionFor(SDLK_7, KMOD_RCTRL), Action::Bottom);
+  EXPECT_EQ(actionFor(SDLK_PAGEDOWN, 0), Action::Next);
+  EXPECT_EQ(actionFor(SDLK_LEFT, 0), Action::Previous);
+  EXPECT_EQ(actionFor(SDLK_F12, 0), Action::Save);
+  EXPECT_EQ(actionFor(SDLK_s, KMOD_LCTRL), Action::Save);
+  EXPECT_FALSE(actionFor(SDLK_s, 0));
+  EXPECT_FALSE(keyHelp().empty());
+}
+
+cli::SceneOptions viewOptions(int width, int height) {
+  cli::SceneOptions o;
+  o.width = width, o.height = height;
+  return o;
+}
+
+TEST(ViewState, TogglesAndEveryChangeIsANewVersion) {
+  ViewState s({}, viewOptions(160, 120));
+  s.load();
+  EXPECT_EQ(s.scene().width, 160);
+  std::uint64_t v = s.version();
+  s.toggleEdges();
+  EXPECT_TRUE(s.scene().overlays.edges);
+  EXPECT_GT(s.version(), v);
+  s.toggleAntiAliasing();
+  EXPECT_EQ(s.scene().multisample, 8);
+  s.toggleAntiAliasing();
+  EXPECT_EQ(s.scene().multisample, 1);
+  v = s.version();
+  s.resize(200, 100);
+  EXPECT_EQ(s.scene().width, 200);
+  EXPECT_GT(s.version(), v);
+  s.watch(10, 20);
+  ASSERT_TRUE(s.probe());
+  EXPECT_EQ(s.probe()->first, 10);
+  s.watch(500, 20);  // outside the picture: no change of the watched pixel
+  EXPECT_EQ(s.probe()->first, 10);
+}
+
+TEST(ViewState, StepsThroughFilesAndKeepsToggles) {
+  const std::string duck = std::string(kModels) + "/Collada/duck.dae", spider = std::string(kModels) + "/STL/Spider_binary.stl";
+  ViewState s({duck, spider}, viewOptions(160, 120));
+  s.load();
+  EXPECT_TRUE(s.isModel());
+  s.toggleEdges();
+  EXPECT_TRUE(s.step(1));
+  EXPECT_EQ(s.current(), spider);
+  EXPECT_TRUE(s.scene().overlays.edges);  // the person's toggle outlives the file
+  EXPECT_TRUE(s.step(1));
+  EXPECT_EQ(s.current(), duck);  // wraps
+  // A file that cannot be drawn leaves the state as it was.
+  EXPECT_THROW(s.open("/nonexistent/model.ply"), InputError);
+  EXPECT_EQ(s.current(), duck);
+  EXPECT_EQ(s.files().size(), 2u);
+}
+
+TEST(ViewState, APreviewsRigTurnsWithTheCamera) {
+  ViewState s({std::string(kModels) + "/STL/Spider_binary.stl"}, viewOptions(160, 120));
+  s.load();
+  const Vec3 before(s.scene().lights[0].position);
+  const Vec3 toEye = glm::normalize(s.scene().camera.eye - s.scene().camera.center);
+  const Real along = glm::dot(before, toEye);
+  s.trackball().orbit(60, 0, 120);
+  s.cameraMoved();
+  const Vec3 after(s.scene().lights[0].position);
+  EXPECT_GT(glm::length(after - before), 0.1);
+  // The key light keeps its place relative to the viewer.
+  const Vec3 toEyeNow = glm::normalize(s.scene().camera.eye - s.scene().camera.center);
+  EXPECT_NEAR(glm::dot(after, toEyeNow), along, 1e-4);
+  // Placed by the person, the lights stay where they are.
+  s.setLightsFollow(false);
+  s.trackball().orbit(60, 0, 120);
+  s.cameraMoved();
+  EXPECT_EQ(Vec3(s.scene().lights[0].position), after);
+}
+
+// The worker's frame of a scene is what renderScene draws of it; the tracers refine up to it.
+TEST(RenderWorker, FramesAreTheRenderersPictures) {
+  ViewState s({}, viewOptions(96, 64));
+  s.load();
+  RenderWorker worker;
+  const auto waitFor = [&](Frame& f, bool final) {
+    for (int i = 0; i < 2000; ++i) {
+      if (worker.take(f) && (!final || f.final)) return true;
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    return false;
+  };
+  worker.request(std::make_shared<Scene>(s.scene()), s.version(), std::pair(40, 30));
+  Frame f;
+  ASSERT_TRUE(waitFor(f, true));
+  EXPECT_EQ(f.image.rgba, renderScene(s.scene()).rgba);
+  ASSERT_TRUE(f.probe);
+  EXPECT_NE(f.report.find("pixel (40, 30)"), std::string::npos) << f.report;
+  Scene traced = s.scene();
+  traced.renderer = RendererKind::Whitted;
+  traced.rayTracing.samples = 16;
+  worker.request(std::make_shared<Scene>(traced), s.version() + 1, std::nullopt);
+  ASSERT_TRUE(waitFor(f, true));
+  EXPECT_EQ(f.samples, 16);
+  EXPECT_EQ(f.image.rgba, renderScene(traced).rgba);
+}
+
+}  // namespace
+}  // namespace illum::view
