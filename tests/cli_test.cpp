@@ -155,6 +155,31 @@ TEST(CliRender, UnwritableOutputFailsCleanly) {
   EXPECT_EQ(dir.fileCount(), 0u);
 }
 
+// --save-scene: the scene drawn as a file that draws the same bytes, with what was changed on the
+// command line in it; it refuses batches and inputs.
+TEST(CliRender, SavedSceneDrawsTheSameBytes) {
+  TempDir dir;
+  const RunResult r = run("render --model phong --shading gouraud --samples 4 --edges -o " + (dir / "a.png").string() +
+                          " --save-scene " + (dir / "a.json").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const std::string text = slurp(dir / "a.json");
+  EXPECT_NE(text.find("\"model\": \"phong\""), std::string::npos) << text;
+  EXPECT_NE(text.find("\"multisample\": 4"), std::string::npos) << text;
+  const RunResult again = run("render " + (dir / "a.json").string() + " -o " + (dir / "b.png").string());
+  ASSERT_EQ(again.exitCode, 0) << again.err;
+  EXPECT_EQ(slurp(dir / "a.png"), slurp(dir / "b.png"));
+  // Never over an input, never for a batch.
+  const RunResult over = run("render " + (dir / "a.json").string() + " -o " + (dir / "c.png").string() +
+                             " --save-scene " + (dir / "a.json").string());
+  EXPECT_EQ(over.exitCode, 2);
+  EXPECT_EQ(slurp(dir / "a.json"), text);
+  const RunResult batch = run("render " + (dir / "a.json").string() + " " + (dir / "a.json").string() +
+                              " --output-dir " + dir.path().string() + " --save-scene " + (dir / "d.json").string());
+  EXPECT_EQ(batch.exitCode, 2);
+  EXPECT_NE(batch.err.find("--save-scene: writes the scene of one picture, not of a batch"), std::string::npos) << batch.err;
+  EXPECT_FALSE(fs::exists(dir / "d.json"));
+}
+
 TEST(CliRender, DebugPixelExplainsThePixel) {
   TempDir dir;
   const RunResult r = run("render --debug-pixel 180,200 -o " + (dir / "out.png").string());

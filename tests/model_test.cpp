@@ -14,6 +14,7 @@ namespace illum {
 namespace {
 
 using test::runIllum;
+using test::slurp;
 using test::TempDir;
 namespace fs = std::filesystem;
 
@@ -88,6 +89,20 @@ INSTANTIATE_TEST_SUITE_P(AssimpTestModels, GoodModel,
                              if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
                            return s;
                          });
+
+// A preview saved as a scene file (model file by path, its materials, the rig, the camera, sRGB)
+// draws the same bytes; with --color the file's own colours stay dropped.
+TEST(ModelScene, APreviewSavedAsASceneDrawsTheSameBytes) {
+  TempDir dir;
+  for (const std::string args : {"glTF2/BoxTextured-glTF-Binary/BoxTextured.glb", "OBJ/spider.obj --color 0.3,0.6,0.9 --normals flat"}) {
+    const auto r = runIllum("render " + (kModels / args).string() + " --resolution 320,200 -o " +
+                                 (dir / "a.png").string() + " --save-scene " + (dir / "a.json").string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto again = runIllum("render " + (dir / "a.json").string() + " -o " + (dir / "b.png").string());
+    ASSERT_EQ(again.exitCode, 0) << again.err;
+    EXPECT_EQ(slurp(dir / "a.png"), slurp(dir / "b.png")) << args;
+  }
+}
 
 TEST(ModelMaterials, FileColoursAppear) {
   // The engine's cylinder heads are blue in its glTF materials (as GL writes them: sRGB lifts

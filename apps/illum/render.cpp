@@ -73,6 +73,9 @@ int renderPicture(const RenderOptions& o) {
   double loadMs = 0;
   Scene scene = prepareScene(o.scene, &loadMs);
   if (o.output != "-") checkOutputsSpareScene(scene, {o.output});
+  if (!o.saveScene.empty()) checkOutputsSpareScene(scene, {o.saveScene});
+  // The scene as a file, made before anything is drawn: one that cannot be written stops the command.
+  const std::string sceneFile = o.saveScene.empty() ? std::string() : sceneJson(scene);
   const auto loaded = Clock::now();
   RenderStats stats;
   std::optional<PixelProbe> probe;
@@ -122,6 +125,8 @@ int renderPicture(const RenderOptions& o) {
     encoded = Clock::now();
     writeOutputFile(o.output, bytes, OutputOptions{o.force});
   }
+  if (!o.saveScene.empty())
+    writeOutputFile(o.saveScene, std::vector<std::uint8_t>(sceneFile.begin(), sceneFile.end()), OutputOptions{o.force});
   const auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
   if (o.scene.verbose && scene.renderer != RendererKind::Raster) {
     std::fprintf(stderr,
@@ -153,7 +158,10 @@ int runRender(RenderOptions o) {
   if (!o.inputs.empty()) jobs = expandInputs(o.inputs);
   if (std::count_if(jobs.begin(), jobs.end(), [](const BatchJob& j) { return j.input == "-"; }) > 1)
     throw InputError("-: standard input can be read once");
-  if (isBatch(o)) return runBatch(o, jobs);
+  if (isBatch(o)) {
+    if (!o.saveScene.empty()) throw InputError("--save-scene: writes the scene of one picture, not of a batch");
+    return runBatch(o, jobs);
+  }
   if (o.output.empty()) o.output = "illum.png";
   o.scene.input = jobs.empty() ? "" : jobs[0].input;
   if (o.scene.input == "-") o.scene.stdinInput = std::make_shared<const StdinInput>(o.format, o.scene.limits);
@@ -193,6 +201,9 @@ Command addRenderCommand(CLI::App& app) {
   cmd->add_option("--bit-depth", o->bitDepth, "PNG bits per channel: 8, or 16 (the display encoding at full precision)")
       ->capture_default_str();
   cmd->add_flag("--force", o->force, "Replace a read-only output file (its permissions are kept)");
+  cmd->add_option("--save-scene", o->saveScene,
+                  "Also write the scene drawn as a scene file (.json) that `illum render` draws to the same bytes: "
+                  "a model preview becomes a scene to edit");
   cmd->add_option("--debug-pixel", o->debugPixel, "Print every term of the lighting equation at pixel x,y (0,0 top-left)");
   return [o] { return runRender(*o); };
 }

@@ -8,6 +8,7 @@
 #include "cli_values.h"
 #include "stdin_input.h"
 
+#include <nlohmann/json.hpp>
 #include <sys/resource.h>
 #include <tbb/info.h>
 
@@ -157,22 +158,9 @@ void overrideMaterials(const SceneOptions& o, std::vector<Object>& objects) {
   std::optional<Color3> colour;
   if (!o.color.empty()) colour = parseColor("--color", o.color, true);
   if (o.opacity && !(*o.opacity >= 0 && *o.opacity <= 1)) throw InputError("--opacity: expected a number in [0, 1]");
-  std::map<const Mesh*, std::shared_ptr<const Mesh>> colourless;
+  if (o.geometryOnly || colour) dropFileColours(objects);
   for (Object& obj : objects) {
-    if (o.geometryOnly || colour) {
-      if (o.geometryOnly) obj.material = defaultModelMaterial();
-      obj.diffuseTexture = nullptr;
-      obj.maps = {};
-      if (!obj.mesh->colors.empty()) {
-        auto& copy = colourless[obj.mesh.get()];
-        if (!copy) {
-          auto mesh = std::make_shared<Mesh>(*obj.mesh);
-          mesh->colors.clear();
-          copy = std::move(mesh);
-        }
-        obj.mesh = copy;
-      }
-    }
+    if (o.geometryOnly) obj.material = defaultModelMaterial();
     if (colour) {
       if (obj.material.physicallyBased) {
         PhysicalMaterial p = obj.material.physical;
@@ -183,20 +171,6 @@ void overrideMaterials(const SceneOptions& o, std::vector<Object>& objects) {
       }
     }
     if (o.opacity) obj.material.diffuse.a = Real(*o.opacity);
-  }
-}
-
-void decodeColourTextures(std::vector<Object>& objects) {
-  std::map<const Texture*, std::shared_ptr<const Texture>> decoded;
-  const auto srgb = [&](std::shared_ptr<const Texture>& t) {
-    if (!t || t->encoding() == TexelEncoding::Srgb) return;
-    auto [it, inserted] = decoded.try_emplace(t.get(), nullptr);
-    if (inserted) it->second = std::make_shared<const Texture>(t->baseImage(), TexelEncoding::Srgb);
-    t = it->second;
-  };
-  for (Object& o : objects) {
-    srgb(o.diffuseTexture);
-    srgb(o.maps.emissive);
   }
 }
 
@@ -216,7 +190,27 @@ ImportedModel importModelFor(const SceneOptions& o) {
   }
 }
 
-Scene modelScene(const SceneOptions& o, ImportedModel& model) {
+// What a scene file says to bring a preview's objects (Object::source, for sceneJson): the model
+// file by absolute path, its normals as the options make them, its colour textures as the preview
+// reads them, and its own colours dropped where --color or --geometry-only drop them.
+void setModelSources(const SceneOptions& o, bool srgbTextures, std::vector<Object>& objects) {
+  if (o.input == "-") return;  // standard input is gone once read: no scene file can name it
+  nlohmann::json mesh = {{"type", "file"}, {"path", std::filesystem::absolute(o.input).lexically_normal().string()}};
+  if (!o.normals.empty()) mesh["normals"] = o.normals;
+  if (o.creaseAngle) mesh["crease_angle"] = *o.creaseAngle;
+  if (srgbTextures) mesh["colour_textures"] = "srgb";
+  if (o.geometryOnly || !o.color.empty()) mesh["file_colours"] = false;
+  const auto text = std::make_shared<const std::string>(mesh.dump());
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    auto source = std::make_shared<ObjectSource>();
+    source->mesh = text;
+    source->part = int(i), source->parts = int(objects.size());
+    source->fileMaterial = objects[i].material;
+    objects[i].source = std::move(source);
+  }
+}
+
+Scene modelScene(const SceneOptions& o, ImportedModel& model, bool srgbTextures) {
   Scene s;
   s.width = o.width.value_or(1000);
   s.height = o.height.value_or(600);
@@ -242,6 +236,7 @@ Scene modelScene(const SceneOptions& o, ImportedModel& model) {
   // Glass and other translucent materials (MTL d, glTF alpha) show what is behind them.
   s.blend = true;
   s.objects = std::move(model.objects);
+  setModelSources(o, srgbTextures, s.objects);
   if (o.input != "-") s.files.push_back(o.input);
   s.files.insert(s.files.end(), model.files.begin(), model.files.end());
   overrideMaterials(o, s.objects);
@@ -454,7 +449,7 @@ Scene prepareScene(SceneOptions o, double* loadMs, ModelCache* cache, std::vecto
       std::fprintf(stderr, "illum: bounds [%g, %g, %g] .. [%g, %g, %g]\n", double(lo.x), double(lo.y), double(lo.z),
                    double(hi.x), double(hi.y), double(hi.z));
     }
-    scene = modelScene(o, *model);
+    scene = modelScene(o, *model, encoding.value_or(Encoding::Srgb) == Encoding::Srgb);
   }
   scene.maxFill = o.limits.maxFill;
   if (std::uint64_t(scene.width) * std::uint64_t(scene.height) > o.limits.maxPixels)

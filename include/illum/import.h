@@ -90,4 +90,11 @@ Material materialFromFile(const FileMaterialValues& values);
 // with a soft highlight.
 Material defaultModelMaterial();
 
+// What previews do to a model's colour textures (diffuse and emissive), and a scene file's
+// "colour_textures": "srgb": read as sRGB-encoded, decoded to the linear values the equation lights.
+void decodeColourTextures(std::vector<Object>& objects);
+// What --color and --geometry-only do, and a scene file's "file_colours": false: the objects'
+// textures, glTF maps and vertex colours dropped, so that the material's colours show.
+void dropFileColours(std::vector<Object>& objects);
+
 }  // namespace illum

@@ -71,6 +71,17 @@ struct MaterialMaps {
   bool any() const { return metallicRoughness || normal || emissive; }
 };
 
+// Where an object came from, in a scene file's terms, so that a scene can be written back as one
+// (sceneJson): the "mesh" value that made it (a model file's path absolute), the object's
+// "transform", and for a model file, which of the file's mesh instances it is and the material
+// the file gave that instance (an unchanged one is left for the file to give again).
+struct ObjectSource {
+  std::shared_ptr<const std::string> mesh;  // JSON
+  Mat4 transform{1};
+  int part = 0, parts = 1;
+  std::optional<Material> fileMaterial;  // a model file's instance only
+};
+
 struct Object {
   std::shared_ptr<const Mesh> mesh;
   Mat4 worldFromObject{1};
@@ -81,6 +92,8 @@ struct Object {
   // (GL_COLOR_MATERIAL with GL_AMBIENT_AND_DIFFUSE).
   SurfaceOptics optics;  // mirror and glass, for the ray tracers
   MaterialMaps maps;     // glTF's metallic-roughness, normal and emissive textures
+  // What made it, when it came from a scene file, a model file or the built-in scene.
+  std::shared_ptr<const ObjectSource> source;
 };
 
 // Text drawn over the finished picture, centred on a point of the world or of the image, so that a
@@ -202,6 +215,12 @@ Scene loadSceneFile(const std::filesystem::path& path, const Limits& limits = {}
 // Parses scene JSON text. `name` is used in messages; `baseDir` resolves mesh file paths.
 Scene parseScene(const std::string& text, const std::string& name, const std::filesystem::path& baseDir,
                  const Limits& limits = {}, SceneModelCache* models = nullptr);
+
+// The scene as a scene file (version 1, docs/scene-format.md) that reads back to the same scene:
+// `illum render` of it draws the same picture, byte for byte. Model files are named by absolute
+// path, with the materials that differ from the file's own. Throws Error for an object that no
+// scene file made (Object::source unset).
+std::string sceneJson(const Scene& scene);
 
 // The built-in scene `illum render` draws with no arguments: GLUT's solids in several materials
 // under coloured lights, the seeds' story at a glance, labelled with what each part shows.

@@ -2,6 +2,8 @@
 // a positional key light with distance attenuation, a directional fill and a spot from behind.
 #include <illum/scene.h>
 
+#include "scene/mesh_json.h"
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <memory>
@@ -19,8 +21,17 @@ Material material(Color3 ambient, Color3 diffuse, Color3 specular, Real shinines
   return m;
 }
 
-Object object(Mesh mesh, Mat4 worldFromObject, Material m) {
-  return {std::make_shared<const Mesh>(std::move(mesh)), worldFromObject, m, nullptr, {}, {}};
+// An object whose mesh is a scene file's "mesh" value: the scene can be written out as a file.
+Object object(const std::string& mesh, Mat4 worldFromObject, Material m) {
+  Object o;
+  o.mesh = std::make_shared<const Mesh>(meshFromJson(mesh));
+  o.worldFromObject = worldFromObject;
+  o.material = m;
+  auto source = std::make_shared<ObjectSource>();
+  source->mesh = std::make_shared<const std::string>(mesh);
+  source->transform = worldFromObject;
+  o.source = std::move(source);
+  return o;
 }
 
 std::string describe(LightingModel model) {
@@ -93,10 +104,10 @@ Scene defaultScene(LightingModel model, Shading shading, RendererKind renderer) 
   const auto at = [](Real x, Real y, Real z) { return glm::translate(Mat4(1), Vec3(x, y, z)); };
   const auto upright = [](Mat4 m) { return glm::rotate(m, glm::radians(Real(-90)), Vec3(1, 0, 0)); };
   // Red plastic sphere: white Blinn-Phong highlight on a saturated diffuse colour.
-  s.objects.push_back(object(makeSphere(0.8f, 48, 32), at(-3.4f, 0.8f, 0),
+  s.objects.push_back(object(R"({"type": "sphere", "radius": 0.8, "slices": 48, "stacks": 32})", at(-3.4f, 0.8f, 0),
                              material({0.25, 0.03, 0.03}, {0.8, 0.1, 0.1}, {0.9, 0.9, 0.9}, 60)));
   // Polished gold torus: coloured specular, like a metal.
-  s.objects.push_back(object(makeTorus(0.22f, 0.62f, 32, 64),
+  s.objects.push_back(object(R"({"type": "torus", "inner_radius": 0.22, "outer_radius": 0.62, "sides": 32, "rings": 64})",
                              glm::rotate(at(-1.6f, 0.85f, 0), glm::radians(Real(-60)), Vec3(1, 0, 0)),
                              material({0.25, 0.2, 0.07}, {0.75, 0.6, 0.23}, {0.63, 0.56, 0.37}, 51)));
   // For the ray tracers: the metal mirrors its surroundings (a metal's high reflectance as a high
@@ -104,21 +115,19 @@ Scene defaultScene(LightingModel model, Shading shading, RendererKind renderer) 
   s.objects.back().optics.reflective = {0.6, 0.5, 0.3};
   s.objects.back().optics.ior = 10;
   // Porcelain teapot in the middle.
-  s.objects.push_back(object(makeTeapot(0.9f), at(0.3f, 0.7f, 0.3f),
+  s.objects.push_back(object(R"({"type": "teapot", "size": 0.9})", at(0.3f, 0.7f, 0.3f),
                              material({0.1, 0.14, 0.2}, {0.45, 0.6, 0.85}, {0.8, 0.8, 0.8}, 90)));
   // Matte green cone: Lambert only, no specular colour.
-  s.objects.push_back(object(makeCone(0.7f, 1.7f, 40, 10), upright(at(2.2f, 0, 0)),
+  s.objects.push_back(object(R"({"type": "cone", "base": 0.7, "height": 1.7, "slices": 40, "stacks": 10})", upright(at(2.2f, 0, 0)),
                              material({0.05, 0.2, 0.05}, {0.2, 0.65, 0.25}, {0, 0, 0}, 0)));
   // Violet cube with a broad, dull highlight.
-  s.objects.push_back(object(makeCube(1.1f),
+  s.objects.push_back(object(R"({"type": "cube", "size": 1.1})",
                              glm::rotate(at(3.7f, 0.55f, -0.3f), glm::radians(Real(35)), Vec3(0, 1, 0)),
                              material({0.12, 0.06, 0.18}, {0.5, 0.3, 0.7}, {0.4, 0.4, 0.4}, 8)));
   // A floor makes the light's distance falloff and the spot visible.
-  Mesh floor;
-  floor.positions = {{-8, 0, -6}, {8, 0, -6}, {8, 0, 6}, {-8, 0, 6}};
-  floor.normals.assign(4, Vec3(0, 1, 0));
-  floor.indices = {0, 3, 2, 0, 2, 1};
-  s.objects.push_back(object(std::move(floor), Mat4(1),
+  s.objects.push_back(object(R"({"type": "triangles", "positions": [-8, 0, -6, 8, 0, -6, 8, 0, 6, -8, 0, 6],
+                                 "normals": [0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0], "indices": [0, 3, 2, 0, 2, 1]})",
+                             Mat4(1),
                              material({0.12, 0.12, 0.13}, {0.42, 0.42, 0.45}, {0.25, 0.25, 0.25}, 30)));
   s.objects.back().optics.reflective = Color3(0.3f);  // a polished floor, for the ray tracers
 

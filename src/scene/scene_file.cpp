@@ -7,6 +7,7 @@
 #include <illum/import.h>
 #include "core/input_file.h"
 #include "scene/json_reader.h"
+#include "scene/mesh_json.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -156,10 +157,20 @@ Mat4 readTransform(const JsonReader& j) {
   const std::size_t n = j.arraySize();
   for (std::size_t i = 0; i < n; ++i) {
     const JsonReader step = j.item(i);
-    step.expectObject({"translate", "rotate", "scale"});
-    if (step.value().size() != 1) step.fail("expected exactly one of translate, rotate or scale");
+    step.expectObject({"translate", "rotate", "scale", "matrix"});
+    if (step.value().size() != 1) step.fail("expected exactly one of translate, rotate, scale or matrix");
     // Each step multiplies on the right, like glTranslate/glRotate/glScale after the view matrix.
-    if (step.has("translate")) {
+    if (step.has("matrix")) {
+      // Row by row, as a matrix is written; a first step is the matrix itself (I·M = M, and
+      // exactly so: a scene written back (sceneJson) draws the same bytes).
+      const std::vector<Real> v = step.at("matrix").numbers(16);
+      Mat4 given;
+      for (int row = 0; row < 4; ++row)
+        for (int col = 0; col < 4; ++col) given[col][row] = v[std::size_t(row * 4 + col)];
+      if (glm::determinant(Mat3(given)) == 0)
+        step.at("matrix").fail("expected an invertible upper 3×3 (a flat object has no normals)");
+      m = i == 0 ? given : m * given;
+    } else if (step.has("translate")) {
       m = glm::translate(m, step.at("translate").vec3());
     } else if (step.has("rotate")) {
       const Vec4 r = step.at("rotate").vec4();
@@ -226,35 +237,78 @@ struct ReadContext {
   }
 };
 
-ImportedModel readModelFile(const JsonReader& j, ReadContext& context) {
-  const std::filesystem::path& baseDir = context.baseDir;
-  j.expectObject({"type", "path"});
+bool isModelFile(const JsonReader& j) {
+  return j.value().is_object() && j.has("type") && j.value()["type"] == "file";
+}
+
+// A model file mesh: its path, how its normals are made, and what becomes of its colours.
+struct ModelFileMesh {
+  std::filesystem::path path;  // as the scene file's folder resolves it
+  ImportOptions options;
+  bool srgbTextures = false, fileColours = true;
+};
+
+ModelFileMesh readModelFileMesh(const JsonReader& j, const ReadContext& context) {
+  j.expectObject({"type", "path", "normals", "crease_angle", "colour_textures", "file_colours"});
   if (!j.has("path")) j.fail("expected a \"path\" to a model file");
+  ModelFileMesh m;
   const std::filesystem::path rel = j.at("path").string();
-  const std::filesystem::path full = rel.is_absolute() ? rel : baseDir / rel;
+  m.path = rel.is_absolute() ? rel : context.baseDir / rel;
+  m.options.limits = context.limits;
+  if (j.has("normals")) {
+    const std::string n = j.at("normals").string();
+    if (n == "auto") m.options.normals = NormalMode::Auto;
+    else if (n == "flat") m.options.normals = NormalMode::Flat;
+    else if (n == "smooth") m.options.normals = NormalMode::Smooth;
+    else if (n == "file") m.options.normals = NormalMode::File;
+    else j.at("normals").fail("expected \"auto\", \"flat\", \"smooth\" or \"file\", got \"" + n + "\"");
+  }
+  if (j.has("crease_angle")) m.options.creaseAngle = j.at("crease_angle").number(0, 180);
+  if (j.has("colour_textures")) {
+    const std::string e = j.at("colour_textures").string();
+    if (e != "linear" && e != "srgb") j.at("colour_textures").fail("expected \"linear\" or \"srgb\", got \"" + e + "\"");
+    m.srgbTextures = e == "srgb";
+  }
+  if (j.has("file_colours")) m.fileColours = j.at("file_colours").boolean();
+  return m;
+}
+
+// The model file's objects, with their colours as the mesh says.
+std::vector<Object> readModelFile(const JsonReader& j, ReadContext& context) {
+  const ModelFileMesh mesh = readModelFileMesh(j, context);
   try {
     std::error_code ec;
-    const std::string key = std::filesystem::weakly_canonical(full, ec).string();
-    const std::string name = ec ? full.string() : key;
+    const std::string canonical = std::filesystem::weakly_canonical(mesh.path, ec).string();
+    // Imported once per file and normals options.
+    const std::string name = (ec ? mesh.path.string() : canonical) + "\n" +
+                             std::to_string(int(mesh.options.normals)) + " " + std::to_string(mesh.options.creaseAngle);
     std::shared_ptr<const ImportedModel> cached = context.models->find(name);
     if (!cached) {
-      ImportOptions options;
-      options.limits = context.limits;
-      cached = std::make_shared<const ImportedModel>(importModel(full, options));
+      cached = std::make_shared<const ImportedModel>(importModel(mesh.path, mesh.options));
       context.models->add(name, cached);
     }
     context.charge(j.at("path"), cached->triangleCount);
-    context.files->push_back(full);
+    context.files->push_back(mesh.path);
     context.files->insert(context.files->end(), cached->files.begin(), cached->files.end());
-    return *cached;
+    std::vector<Object> objects = cached->objects;
+    if (mesh.srgbTextures) decodeColourTextures(objects);
+    if (!mesh.fileColours) dropFileColours(objects);
+    return objects;
   } catch (const InputError& e) {
     j.at("path").fail(e.what());
   }
 }
 
-bool isModelFile(const JsonReader& j) {
-  return j.value().is_object() && j.has("type") && j.value()["type"] == "file";
+// The "mesh" value as a scene file would give it from anywhere: a model file's path absolute.
+std::shared_ptr<const std::string> meshSource(const JsonReader& j, const ReadContext& context) {
+  Json mesh = j.value();
+  if (isModelFile(j)) {
+    const std::filesystem::path rel = j.at("path").string();
+    mesh["path"] = std::filesystem::absolute(rel.is_absolute() ? rel : context.baseDir / rel).lexically_normal().string();
+  }
+  return std::make_shared<const std::string>(mesh.dump());
 }
+
 
 Mesh readMesh(const JsonReader& j, ReadContext& context) {
   if (!j.value().is_object()) j.fail("expected an object, got something else");
@@ -305,16 +359,36 @@ Mesh readMesh(const JsonReader& j, ReadContext& context) {
 // One object of the scene; a model file brings one object per mesh instance, each placed by its
 // node transforms after the object's transform, in the file's materials unless one is given.
 void readObject(const JsonReader& j, ReadContext& context, std::vector<Object>& out) {
-  j.expectObject({"mesh", "transform", "material"});
+  j.expectObject({"mesh", "transform", "material", "materials"});
   const Mat4 worldFromObject = j.has("transform") ? readTransform(j.at("transform")) : Mat4(1);
   std::optional<Material> material;
   SurfaceOptics optics;
   if (j.has("material")) material = readMaterial(j.at("material")), optics = readOptics(j.at("material"));
-  if (j.has("mesh") && isModelFile(j.at("mesh"))) {
-    for (Object& o : readModelFile(j.at("mesh"), context).objects) {
-      o.worldFromObject = worldFromObject * o.worldFromObject;
+  const bool modelFile = j.has("mesh") && isModelFile(j.at("mesh"));
+  if (j.has("materials") && (!modelFile || material))
+    j.at("materials").fail(modelFile ? "expected \"material\" or \"materials\", not both"
+                                     : "expected \"materials\" only for a model file mesh (one material per mesh of the file)");
+  auto source = std::make_shared<ObjectSource>();
+  source->mesh = j.has("mesh") ? meshSource(j.at("mesh"), context) : std::make_shared<const std::string>("{\"type\":\"sphere\"}");
+  source->transform = worldFromObject;
+  if (modelFile) {
+    std::vector<Object> parts = readModelFile(j.at("mesh"), context);
+    if (j.has("materials") && j.at("materials").arraySize() != parts.size())
+      j.at("materials").fail("expected " + std::to_string(parts.size()) + " materials or nulls, one per mesh of the file, got " +
+                             std::to_string(j.at("materials").arraySize()));
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+      Object& o = parts[i];
+      auto part = std::make_shared<ObjectSource>(*source);
+      part->part = int(i), part->parts = int(parts.size()), part->fileMaterial = o.material;
+      // Placed by the object's transform after the file's node transforms (none given: as the file places it).
+      if (j.has("transform")) o.worldFromObject = worldFromObject * o.worldFromObject;
       o.optics = optics;
       if (material) o.material = *material;
+      if (j.has("materials") && !j.at("materials").item(i).value().is_null()) {
+        const JsonReader m = j.at("materials").item(i);
+        o.material = readMaterial(m), o.optics = readOptics(m);
+      }
+      o.source = std::move(part);
       out.push_back(std::move(o));
     }
     return;
@@ -324,6 +398,7 @@ void readObject(const JsonReader& j, ReadContext& context, std::vector<Object>& 
   o.worldFromObject = worldFromObject;
   o.optics = optics;
   if (material) o.material = *material;
+  o.source = std::move(source);
   out.push_back(std::move(o));
 }
 
@@ -496,6 +571,14 @@ Scene parseScene(const std::string& text, const std::string& name, const std::fi
     for (std::size_t i = 0, n = labels.arraySize(); i < n; ++i) s.labels.push_back(readLabel(labels.item(i)));
   }
   return s;
+}
+
+Mesh meshFromJson(const std::string& json) {
+  const Json value = Json::parse(json);
+  const JsonReader j(value, "mesh");
+  if (isModelFile(j)) j.fail("expected a mesh made in place, not a model file");
+  ReadContext context{".", Limits{}, 0, nullptr, nullptr};
+  return readMesh(j, context);
 }
 
 Scene loadSceneFile(const std::filesystem::path& path, const Limits& limits, SceneModelCache* models) {

@@ -196,7 +196,7 @@ TEST(SceneRejects, InconsistentCameraAndGeometry) {
                 "scene.json: /objects/0/transform/0/scale: expected non-zero scale factors", 0),
             0u);
   EXPECT_EQ(errorOf(R"({"objects": [{"transform": [{"translate": [1, 0, 0], "scale": [1, 1, 1]}]}]})"),
-            "scene.json: /objects/0/transform/0: expected exactly one of translate, rotate or scale");
+            "scene.json: /objects/0/transform/0: expected exactly one of translate, rotate, scale or matrix");
   EXPECT_EQ(errorOf(R"({"lights": [{"spot_direction": [0, 0, 0]}]})"),
             "scene.json: /lights/0/spot_direction: expected a non-zero direction");
 }
