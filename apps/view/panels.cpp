@@ -102,8 +102,20 @@ void scenePanel(ViewState& state) {
   }
 }
 
+// Each term of the equation on or off, so that a student sees what it adds.
+void termsPanel(ViewState& state) {
+  Terms t = state.terms();
+  bool changed = ImGui::Checkbox("emission (materials' emission)", &t.emission);
+  changed |= ImGui::Checkbox("global ambient (light_model.ambient)", &t.globalAmbient);
+  changed |= ImGui::Checkbox("ambient (lights' ambient)", &t.ambient);
+  changed |= ImGui::Checkbox("diffuse (lights' diffuse)", &t.diffuse);
+  changed |= ImGui::Checkbox("specular (lights' specular)", &t.specular);
+  if (changed) state.setTerms(t);
+}
+
 void lightPanel(ViewState& state, PanelState& panels) {
   const Scene& s = state.scene();
+  ImGui::Checkbox("handles in the picture (drag to move)", &panels.handles);
   panels.parked.resize(s.lights.size());
   for (std::size_t i = 0; i < s.lights.size(); ++i) {
     ImGui::PushID(int(i));
@@ -187,13 +199,18 @@ void materialPanel(ViewState& state) {
 
 }  // namespace
 
-void drawPanels(ViewState& state, PanelState& panels, const Frame* frame, double fps) {
-  ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(380, 0), ImGuiCond_FirstUseEver);
-  ImGui::Begin("illum view");
+void drawPanels(ViewState& state, PanelState& panels, const Frame* frame, double fps, int left, int height) {
+  ImGui::SetNextWindowPos(ImVec2(float(left), 0));
+  ImGui::SetNextWindowSize(ImVec2(float(kPanelWidth), float(height)));
+  ImGui::Begin("illum view", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+  ImGui::PushItemWidth(float(kPanelWidth) * 0.42f);  // room for the labels, which name the keys and options
   scenePanel(state);
   if (ImGui::CollapsingHeader("lights")) lightPanel(state, panels);
   if (ImGui::CollapsingHeader("materials")) materialPanel(state);
+  if (ImGui::CollapsingHeader("terms of the equation")) termsPanel(state);
+  if (ImGui::Button("save picture and scene (F12)")) panels.save = true;
+  ImGui::SameLine();
+  ImGui::Checkbox("as OpenEXR", &panels.exr);
   if (frame && frame->probe) {
     if (ImGui::CollapsingHeader("watched pixel (--debug-pixel)", ImGuiTreeNodeFlags_DefaultOpen)) {
       ImGui::BeginChild("report", ImVec2(0, 260), true, ImGuiWindowFlags_HorizontalScrollbar);
@@ -207,6 +224,7 @@ void drawPanels(ViewState& state, PanelState& panels, const Frame* frame, double
     ImGui::Text("%.1f frames/s, last frame %.1f ms, %d sample%s", fps, frame->ms, frame->samples,
                 frame->samples == 1 ? "" : "s");
   if (!panels.message.empty()) ImGui::TextWrapped("%s", panels.message.c_str());
+  ImGui::PopItemWidth();
   ImGui::End();
 }
 

@@ -1,7 +1,7 @@
 // The viewer's panels, for what the seeds teach: the lighting model, shading frequency and
 // renderer; each light (kind, position or direction, colours, attenuation, spot) with its own
 // on/off; each material (GL colours and shininess, or base colour, metallic, roughness); samples,
-// ray depth, shadows, occlusion and overlays. Each control names the scene key or CLI option it
+// ray depth, shadows, occlusion and overlays; the terms of the equation; saving. Each control names the scene key or CLI option it
 // changes, and changes it in the ViewState's scene; then the watched pixel's report.
 #pragma once
 
@@ -17,9 +17,15 @@ namespace illum::view {
 struct PanelState {
   std::vector<std::optional<Light>> parked;
   std::string message;  // the last error or notice, shown until the next
+  bool handles = true;  // the lights' handles over the picture
+  bool exr = false;     // save OpenEXR's linear values instead of a PNG
+  bool save = false;    // the save button was pressed
 };
 
-void drawPanels(ViewState& state, PanelState& panels, const Frame* frame, double fps);
+// The panels' width: they stand beside the picture, never over it.
+constexpr int kPanelWidth = 460;
+// Draws them at x = `left`, the window's height tall.
+void drawPanels(ViewState& state, PanelState& panels, const Frame* frame, double fps, int left, int height);
 void drawHelp();
 
 }  // namespace illum::view

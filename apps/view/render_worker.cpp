@@ -24,7 +24,9 @@ std::string reportOf(const Scene& scene, const PixelProbe& probe, const Image& i
 
 }  // namespace
 
-RenderWorker::RenderWorker() : thread_([this] { run(); }) { renderer_.setCancel(&cancel_); }
+RenderWorker::RenderWorker(std::function<void()> onFrame) : onFrame_(std::move(onFrame)), thread_([this] { run(); }) {
+  renderer_.setCancel(&cancel_);
+}
 
 RenderWorker::~RenderWorker() {
   {
@@ -41,7 +43,10 @@ void RenderWorker::request(std::shared_ptr<const Scene> scene, std::uint64_t ver
   {
     const std::lock_guard lock(mutex_);
     pending_ = Request{std::move(scene), version, probe};
-    cancel_ = true;  // whatever is in flight is out of date
+    // A refinement in flight is out of date: abandoned between tiles. The first frame of a
+    // request is finished and shown, so that a drag, whose every step is a request, shows
+    // pictures rather than abandoning each one for the next.
+    if (refining_) cancel_ = true;
   }
   wake_.notify_all();
 }
@@ -64,6 +69,7 @@ void RenderWorker::run() {
       r = std::move(*pending_);
       pending_.reset();
       cancel_ = false;
+      refining_ = false;
     }
     busy_ = true;
     draw(r);
@@ -99,12 +105,15 @@ void RenderWorker::draw(const Request& r) {
     if (probe) f.report = reportOf(*scene, *probe, f.image);
     f.probe = probe;
     f.scene = scene;
+    bool last = false;
     {
       const std::lock_guard lock(mutex_);
-      if (pending_) return;
       done_ = std::move(f);
+      last = pending_ || samples == full;
+      refining_ = !last;
     }
-    if (samples == full) return;
+    if (onFrame_) onFrame_();
+    if (last) return;
   }
 }
 

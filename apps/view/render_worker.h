@@ -1,6 +1,7 @@
 // The viewer's frames, drawn off the input thread: the window asks for the newest scene and keeps
-// handling input; a frame in flight for an older request is abandoned between tiles
-// (Renderer::setCancel), so that dragging never queues frames. The ray and path tracers refine
+// handling input. Requests are not queued: the newest replaces any waiting one, and a refining
+// frame in flight for an older request is abandoned between tiles (Renderer::setCancel); the
+// first frame of a request is finished, so that a drag shows pictures as it goes. The ray and path tracers refine
 // once the view stands still: one sample per pixel first, then more, up to the scene's own count,
 // whose frame is what `illum render` draws of the same scene.
 #pragma once
@@ -12,6 +13,7 @@
 #include <atomic>
 #include <condition_variable>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -33,7 +35,9 @@ struct Frame {
 
 class RenderWorker {
  public:
-  RenderWorker();
+  // `onFrame` is called on the worker's thread each time a frame is ready to take (the window
+  // wakes its event loop with it).
+  explicit RenderWorker(std::function<void()> onFrame = {});
   ~RenderWorker();
   RenderWorker(const RenderWorker&) = delete;
   RenderWorker& operator=(const RenderWorker&) = delete;
@@ -59,7 +63,9 @@ class RenderWorker {
   std::optional<Request> pending_;
   std::optional<Frame> done_;
   std::atomic<bool> cancel_{false}, quit_{false}, busy_{false};
+  bool refining_ = false;  // beyond the first frame of a request (under mutex_)
   Renderer renderer_;
+  std::function<void()> onFrame_;
   std::thread thread_;
 };
 

@@ -4,6 +4,7 @@
 #include <illum/framing.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace illum::view {
 namespace {
@@ -18,13 +19,36 @@ struct CameraFrame {
   }
 };
 
+// Where a directional light's handle sits: on a sphere about the focal point, a third of the way
+// to the eye, in the light's direction.
+Vec3 handlePoint(const Light& l, const Camera& c) {
+  const Vec3 p(l.position);
+  if (l.position.w != 0) return p / l.position.w;
+  const Real len = glm::length(p);
+  return c.center + (len > 0 ? p / len : Vec3(0, 0, 1)) * (glm::length(c.eye - c.center) / 3);
+}
+
+Mat4 clipFromWorld(const Scene& s) {
+  return s.camera.clipFromView(Real(s.width) / Real(s.height)) * s.camera.viewFromWorld();
+}
+
 }  // namespace
 
-ViewState::ViewState(std::vector<std::string> files, cli::SceneOptions options)
-    : files_(std::move(files)), options_(std::move(options)) {
-  if (options_.width) width_ = *options_.width;
-  if (options_.height) height_ = *options_.height;
+Scene withTerms(Scene scene, const Terms& terms) {
+  if (terms.all()) return scene;
+  if (!terms.emission)
+    for (Object& o : scene.objects) o.material.emission = Color4(0, 0, 0, o.material.emission.a);
+  if (!terms.globalAmbient) scene.lightModel.ambient = Color3(0);
+  for (Light& l : scene.lights) {
+    if (!terms.ambient) l.ambient = Color3(0);
+    if (!terms.diffuse) l.diffuse = Color3(0);
+    if (!terms.specular) l.specular = Color3(0);
+  }
+  return scene;
 }
+
+ViewState::ViewState(std::vector<std::string> files, cli::SceneOptions options)
+    : files_(std::move(files)), options_(std::move(options)) {}
 
 const std::string& ViewState::current() const {
   static const std::string builtIn;
@@ -34,9 +58,14 @@ const std::string& ViewState::current() const {
 void ViewState::load() {
   cli::SceneOptions o = options_;
   o.input = current();
-  o.width = width_, o.height = height_;
-  o.resolution.clear();
+  if (width_ > 0) {
+    // The window's size, once there is a window; the first file sets it (its own size, or the
+    // options').
+    o.width = width_, o.height = height_;
+    o.resolution.clear();
+  }
   Scene next = cli::prepareScene(o, nullptr, &cache_);
+  width_ = next.width, height_ = next.height;
   // The person's toggles outlive the file.
   if (version_ > 1) {
     next.overlays = scene_.overlays;
@@ -144,6 +173,59 @@ void ViewState::toggleOcclusion() {
     scene_.lightModel.ambient = cameraRigAmbient(intensity, encoding, scene_.ambientOcclusion.enabled);
     rig();
   }
+  ++version_;
+}
+
+void ViewState::setTerms(const Terms& terms) {
+  terms_ = terms;
+  ++version_;
+}
+
+Handle ViewState::handle(std::size_t light) const {
+  Handle h;
+  if (light >= scene_.lights.size()) return h;
+  const Vec4 clip = clipFromWorld(scene_) * Vec4(handlePoint(scene_.lights[light], scene_.camera), 1);
+  if (!(clip.w > 0)) return h;
+  const Vec3 ndc = Vec3(clip) / clip.w;
+  const Vec2 size(Real(scene_.width), Real(scene_.height));
+  h.pixel = {(ndc.x + 1) / 2 * size.x, (1 - ndc.y) / 2 * size.y};
+  h.depth = ndc.z;
+  h.inFront = true;
+  h.inside = std::abs(ndc.x) <= 1 && std::abs(ndc.y) <= 1;
+  const Real margin = 12;
+  h.shown = glm::clamp(h.pixel, Vec2(margin), glm::max(size - margin, Vec2(margin)));
+  return h;
+}
+
+void ViewState::dragLight(std::size_t light, Real dx, Real dy) {
+  const Handle h = handle(light);
+  if (!h.inFront) return;
+  const Vec2 to = h.pixel + Vec2(dx, dy);
+  const Mat4 worldFromClip = glm::inverse(clipFromWorld(scene_));
+  const auto unproject = [&](Real depth) {
+    const Vec4 w = worldFromClip * Vec4(to.x / Real(scene_.width) * 2 - 1, 1 - to.y / Real(scene_.height) * 2, depth, 1);
+    return Vec3(w) / w.w;
+  };
+  Light& l = scene_.lights[light];
+  if (l.position.w != 0) {
+    const Vec3 p = unproject(h.depth);
+    if (!std::isfinite(p.x + p.y + p.z)) return;
+    l.position = Vec4(p, 1);
+  } else {
+    // The handle slides on its sphere under the pointer, on the side it was on; a pointer beyond
+    // the sphere's outline turns it to the outline.
+    const Vec3 c = scene_.camera.center, was = handlePoint(l, scene_.camera);
+    const Real r = glm::length(was - c);
+    const Vec3 o = unproject(-1), d = glm::normalize(unproject(1) - o);
+    if (!std::isfinite(o.x + o.y + o.z + d.x + d.y + d.z)) return;
+    const Real b = glm::dot(d, o - c), disc = b * b - (glm::dot(o - c, o - c) - r * r);
+    const bool front = glm::dot(was - c, scene_.camera.eye - c) >= 0;
+    const Real t = disc >= 0 ? (front ? -b - std::sqrt(disc) : -b + std::sqrt(disc)) : -b;
+    const Vec3 towards = o + t * d - c;
+    if (glm::length(towards) == 0) return;
+    l.position = Vec4(glm::normalize(towards), 0);
+  }
+  lightsFollow_ = false;  // the person placed it
   ++version_;
 }
 

@@ -23,6 +23,29 @@ struct Toggles {
   bool panels = true;      // the panels
 };
 
+// The terms of the lighting equation, each switched on or off so that a student sees what it adds.
+// Off is said in the scene's own keys (what a saved scene holds): emission, every material's
+// `emission`; global ambient, `light_model.ambient`; ambient, diffuse and specular, every light's
+// colour of that term. Every model reads them so, Cook-Torrance and the tracers included.
+struct Terms {
+  bool emission = true, globalAmbient = true, ambient = true, diffuse = true, specular = true;
+  bool all() const { return emission && globalAmbient && ambient && diffuse && specular; }
+};
+// `scene` with the terms that are off set to zero.
+Scene withTerms(Scene scene, const Terms& terms);
+
+// Where a light's handle is, over the picture (pixels from the top-left) and in depth (normalized
+// device depth), so that a drag moves the light across the view: a positional light at its
+// position, a directional one on a sphere about the focal point in its direction. A light beside
+// the picture has its handle drawn at the picture's edge, towards it.
+struct Handle {
+  Vec2 pixel{0};  // where the light projects, perhaps outside the picture
+  Vec2 shown{0};  // where the handle is drawn: `pixel`, or the nearest point a little inside the edge
+  Real depth = 0;
+  bool inFront = false;  // in front of the camera: otherwise it has no handle
+  bool inside = false;   // `pixel` is in the picture
+};
+
 class ViewState {
  public:
   // `files` to step through (none: the built-in scene); `options` as `illum render` takes them.
@@ -66,6 +89,17 @@ class ViewState {
   void toggleOcclusion();     // Q
   Toggles& toggles() { return toggles_; }
 
+  // The terms of the equation drawn (all by default).
+  const Terms& terms() const { return terms_; }
+  void setTerms(const Terms& terms);
+  // What the window shows and a saved scene holds: the scene with the terms that are off at zero.
+  Scene drawn() const { return withTerms(scene_, terms_); }
+
+  // Light i's handle, and the light moved by a drag of (dx, dy) pixels across the view at the
+  // same depth. A model preview's lights stop turning with the camera once one is placed.
+  Handle handle(std::size_t light) const;
+  void dragLight(std::size_t light, Real dx, Real dy);
+
   // The watched pixel (a click), in picture coordinates; its report is the --debug-pixel one.
   const std::optional<std::pair<int, int>>& probe() const { return probe_; }
   void watch(int x, int y);
@@ -86,9 +120,10 @@ class ViewState {
   std::vector<Vec3> rigDirections_;
   Trackball trackball_;
   Toggles toggles_;
+  Terms terms_;
   std::optional<std::pair<int, int>> probe_;
   std::uint64_t version_ = 1;
-  int width_ = 1000, height_ = 600;
+  int width_ = 0, height_ = 0;  // the picture's size: none until the first file is read
 };
 
 }  // namespace illum::view

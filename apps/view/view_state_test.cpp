@@ -153,6 +153,66 @@ TEST(ViewState, APreviewsRigTurnsWithTheCamera) {
   EXPECT_EQ(Vec3(s.scene().lights[0].position), after);
 }
 
+// A term switched off is zero in the scene's own keys; all on is the scene untouched.
+TEST(ViewState, TermsAreTheScenesKeysAtZero) {
+  ViewState s({}, viewOptions(160, 120));
+  s.load();
+  s.edit().objects[0].material.emission = {0.3f, 0.2f, 0.1f, 1};
+  const Scene all = s.drawn();
+  EXPECT_EQ(all.lights[0].diffuse, s.scene().lights[0].diffuse);
+  Terms t;
+  t.diffuse = false;
+  t.emission = false;
+  s.setTerms(t);
+  const Scene d = s.drawn();
+  for (const Light& l : d.lights) {
+    EXPECT_EQ(l.diffuse, Color3(0));
+    EXPECT_NE(l.specular, Color3(0));
+  }
+  EXPECT_EQ(Color3(d.objects[0].material.emission), Color3(0));
+  EXPECT_EQ(d.lightModel.ambient, s.scene().lightModel.ambient);
+  // The person's values are kept: switched on again, the scene is as it was.
+  s.setTerms(Terms{});
+  EXPECT_EQ(s.drawn().lights[0].diffuse, all.lights[0].diffuse);
+  EXPECT_EQ(s.drawn().objects[0].material.emission, all.objects[0].material.emission);
+  // Without diffuse and specular, what is left of a pixel is its emission and ambient terms.
+  t = Terms{};
+  t.diffuse = t.specular = false;
+  s.setTerms(t);
+  // (the built-in scene's lights have no ambient colour: e + a_global·k_a).
+  PixelProbe probe;
+  probe.x = 80, probe.y = 60;
+  Image picture;
+  Renderer().render(s.drawn(), picture, nullptr, &probe);
+  ASSERT_TRUE(probe.hit);
+  const Color3 expected = Color3(probe.material.emission) + s.scene().lightModel.ambient * Color3(probe.material.ambient);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(probe.lit[c], expected[c], 1e-6);
+}
+
+// A light's handle sits where the light projects (at the picture's edge when it is beside it);
+// dragged, the light follows the pointer at its depth.
+TEST(ViewState, LightHandlesFollowTheirLightsAndMoveThem) {
+  ViewState s({}, viewOptions(320, 180));
+  s.load();
+  const Handle key = s.handle(0);  // the built-in scene's positional key light, beside the camera
+  ASSERT_TRUE(key.inFront);
+  EXPECT_FALSE(key.inside);
+  EXPECT_TRUE(key.shown.x >= 12 && key.shown.x <= 308 && key.shown.y >= 12 && key.shown.y <= 168);
+  s.dragLight(0, 40, 10);
+  const Handle moved = s.handle(0);
+  EXPECT_NEAR(moved.pixel.x, key.pixel.x + 40, 0.05);
+  EXPECT_NEAR(moved.pixel.y, key.pixel.y + 10, 0.05);
+  EXPECT_NEAR(moved.depth, key.depth, 1e-4);
+  EXPECT_EQ(s.scene().lights[0].position.w, 1);
+  // A directional light keeps unit length and its handle follows too.
+  const Handle fill = s.handle(1);
+  ASSERT_TRUE(fill.inside);
+  s.dragLight(1, -30, 0);
+  EXPECT_EQ(s.scene().lights[1].position.w, 0);
+  EXPECT_NEAR(glm::length(Vec3(s.scene().lights[1].position)), 1, 1e-5);
+  EXPECT_NEAR(s.handle(1).pixel.x, fill.pixel.x - 30, 1);
+}
+
 // The worker's frame of a scene is what renderScene draws of it; the tracers refine up to it.
 TEST(RenderWorker, FramesAreTheRenderersPictures) {
   ViewState s({}, viewOptions(96, 64));

@@ -6,6 +6,7 @@
 #include "key_map.h"
 #include "panels.h"
 #include "render_worker.h"
+#include "save_view.h"
 #include "view_state.h"
 
 #include <SDL.h>
@@ -13,6 +14,7 @@
 #include <imgui_impl_sdl.h>
 #include <imgui_impl_sdlrenderer.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -20,6 +22,8 @@
 #include <cstring>
 #include <filesystem>
 #include <memory>
+#include <optional>
+#include <utility>
 
 namespace illum::view {
 namespace {
@@ -58,12 +62,64 @@ std::optional<fs::file_time_type> changedAt(const std::string& path) {
   return t;
 }
 
-// The first name illum_view_N.png that is free, in the working folder.
-fs::path pictureName() {
-  for (int n = 1;; ++n) {
-    const fs::path p = "illum_view_" + std::to_string(n) + ".png";
-    if (!fs::exists(p)) return p;
+// The light whose handle is within reach of pixel (x, y), if any: the nearest.
+std::optional<std::size_t> handleAt(const ViewState& state, int x, int y) {
+  std::optional<std::size_t> found;
+  Real best = 10;  // pixels
+  for (std::size_t i = 0; i < state.scene().lights.size(); ++i) {
+    const Handle h = state.handle(i);
+    const Real d = glm::length(h.shown - Vec2(Real(x), Real(y)));
+    if (h.inFront && d <= best) best = d, found = i;
   }
+  return found;
+}
+
+// The lights' handles: a disc in the light's diffuse colour, ringed, named as the panel names it.
+void drawHandles(const ViewState& state) {
+  ImDrawList* draw = ImGui::GetForegroundDrawList();
+  for (std::size_t i = 0; i < state.scene().lights.size(); ++i) {
+    const Handle h = state.handle(i);
+    if (!h.inFront) continue;
+    // The light's hue at full brightness: a dim light is still seen for what colour it is.
+    const Color3 d = state.scene().lights[i].diffuse;
+    const Real peak = std::max({d.r, d.g, d.b});
+    const Color3 c = peak > 0 ? d / peak : Color3(0.5f);
+    const ImVec2 at(float(h.shown.x), float(h.shown.y));
+    draw->AddCircleFilled(at, 7, IM_COL32(int(c.r * 255), int(c.g * 255), int(c.b * 255), 255), 16);
+    draw->AddCircle(at, 8, IM_COL32(255, 255, 255, 230), 16, 2);
+    if (!h.inside) {  // beside the picture: a line pointing towards it
+      const Vec2 towards = glm::normalize(h.pixel - h.shown) * Real(14);
+      draw->AddLine(at, ImVec2(at.x + float(towards.x), at.y + float(towards.y)), IM_COL32(255, 255, 255, 230), 2);
+    }
+    draw->AddText(ImVec2(at.x + 11, at.y - 7), IM_COL32(255, 255, 255, 230), ("light." + std::to_string(i)).c_str());
+  }
+}
+
+// How the frames came, for -v: how many were shown, how long drawing and presenting took.
+struct Pace {
+  int frames = 0;
+  double drawMs = 0, presentMs = 0;
+  Clock::time_point first, last;
+  void shown(double draw, double present) {
+    last = Clock::now();
+    if (frames++ == 0) first = last;
+    drawMs += draw, presentMs += present;
+  }
+  void report() const {
+    if (frames == 0) return;
+    const double seconds = std::chrono::duration<double>(last - first).count();
+    std::fprintf(stderr,
+                 "illum view: %d frames shown in %.2f s (%.1f frames/s); drawing a frame took %.2f ms, presenting it "
+                 "(texture, panels, window) %.2f ms on average\n",
+                 frames, seconds, frames > 1 && seconds > 0 ? (frames - 1) / seconds : 0.0, drawMs / frames,
+                 presentMs / frames);
+  }
+};
+
+// Notices go to the panel and to the terminal, where a script that drives the window reads them.
+void say(PanelState& panels, const std::string& message) {
+  panels.message = message;
+  std::fprintf(stderr, "illum view: %s\n", message.c_str());
 }
 
 }  // namespace
@@ -81,11 +137,14 @@ int runViewer(const std::vector<std::string>& files, const cli::SceneOptions& op
   ViewState state(files, options);
   state.load();  // the first file must draw: its error is the command's
   const Scene& first = state.scene();
-  w.window = SDL_CreateWindow("illum view", SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, first.width, first.height,
+  w.window = SDL_CreateWindow("illum view", SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, first.width + kPanelWidth, first.height,
                               SDL_WINDOW_RESIZABLE);
   if (!w.window) throw InputError(kNoDisplay);
-  w.renderer = SDL_CreateRenderer(w.window, -1, SDL_RENDERER_ACCELERATED | SDL_RENDERER_PRESENTVSYNC);
-  if (!w.renderer) w.renderer = SDL_CreateRenderer(w.window, -1, 0);
+  // The picture is drawn on the CPU: presenting it needs a copy, not a GPU. SDL's software
+  // renderer does that copy without an OpenGL stack (which a machine without a GPU only has
+  // through llvmpipe, costing the cores the picture needs); SDL_RENDER_DRIVER chooses another.
+  SDL_SetHint(SDL_HINT_RENDER_DRIVER, "software");
+  w.renderer = SDL_CreateRenderer(w.window, -1, 0);
   if (!w.renderer) throw Error(std::string("illum view: no renderer for the window: ") + SDL_GetError());
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
@@ -95,7 +154,14 @@ int runViewer(const std::vector<std::string>& files, const cli::SceneOptions& op
   ImGui_ImplSDLRenderer_Init(w.renderer);
   w.imgui = true;
 
-  RenderWorker worker;
+  // A finished frame wakes the event loop, which otherwise sleeps until there is input.
+  const Uint32 frameReady = SDL_RegisterEvents(1);
+  RenderWorker worker([frameReady] {
+    SDL_Event e{};
+    e.type = frameReady;
+    SDL_PushEvent(&e);
+  });
+  Pace pace;
   PanelState panels;
   Frame frame;
   bool haveFrame = false;
@@ -107,32 +173,42 @@ int runViewer(const std::vector<std::string>& files, const cli::SceneOptions& op
   // that did not move).
   int dragButton = 0, downX = 0, downY = 0, lastX = 0, lastY = 0;
   bool moved = false, panning = false;
+  std::optional<std::size_t> draggedLight;
+  // A save waits for the final frame of what is shown; a watched pixel's report is printed once
+  // its frame is drawn.
+  bool savePending = false, reportPending = false;
   const auto setTitle = [&] {
     const std::string title = "illum view — " + (state.current().empty() ? std::string("the built-in scene") : state.current());
     SDL_SetWindowTitle(w.window, title.c_str());
   };
   const auto tryTo = [&](auto&& action) {
+    panels.message.clear();
     try {
       action();
-      panels.message.clear();
     } catch (const std::exception& e) {
-      panels.message = e.what();  // the last good picture stays
+      say(panels, e.what());  // the last good picture stays
     }
+  };
+  // The picture fills the window beside the panels (or the whole window without them).
+  const auto layout = [&] {
+    int width = 0, height = 0;
+    SDL_GetWindowSize(w.window, &width, &height);
+    state.resize(width - (state.toggles().panels ? kPanelWidth : 0), height);
   };
   setTitle();
 
   for (bool running = true; running;) {
     // ---- Input ----
+    // ---- Input (or a frame ready, or a tenth of a second to look at the file) ----
     SDL_Event event;
-    const bool idle = !worker.busy() && requested == state.version();
-    if (SDL_WaitEventTimeout(&event, idle ? 50 : 1)) {
+    if (SDL_WaitEventTimeout(&event, 100)) {
       do {
         ImGui_ImplSDL2_ProcessEvent(&event);
         const ImGuiIO& io = ImGui::GetIO();
         switch (event.type) {
           case SDL_QUIT: running = false; break;
           case SDL_WINDOWEVENT:
-            if (event.window.event == SDL_WINDOWEVENT_SIZE_CHANGED) state.resize(event.window.data1, event.window.data2);
+            if (event.window.event == SDL_WINDOWEVENT_SIZE_CHANGED) layout();
             break;
           case SDL_DROPFILE: {
             const std::string path = event.drop.file;
@@ -145,6 +221,9 @@ int runViewer(const std::vector<std::string>& files, const cli::SceneOptions& op
           case SDL_MOUSEBUTTONDOWN:
             if (io.WantCaptureMouse) break;
             dragButton = event.button.button;
+            draggedLight.reset();
+            if (dragButton == SDL_BUTTON_LEFT && state.toggles().panels && panels.handles)
+              draggedLight = handleAt(state, event.button.x, event.button.y);
             panning = dragButton == SDL_BUTTON_MIDDLE || (dragButton == SDL_BUTTON_LEFT && (SDL_GetModState() & KMOD_SHIFT));
             downX = lastX = event.button.x, downY = lastY = event.button.y;
             moved = false;
@@ -155,6 +234,10 @@ int runViewer(const std::vector<std::string>& files, const cli::SceneOptions& op
             lastX = event.motion.x, lastY = event.motion.y;
             if (std::abs(lastX - downX) + std::abs(lastY - downY) > 2) moved = true;
             if (!moved) break;
+            if (draggedLight) {
+              state.dragLight(*draggedLight, Real(dx), Real(dy));
+              break;
+            }
             const int height = state.scene().height;
             if (panning) state.trackball().pan(Real(dx), Real(dy), height);
             else if (dragButton == SDL_BUTTON_LEFT) state.trackball().orbit(Real(dx), Real(dy), height);
@@ -163,8 +246,12 @@ int runViewer(const std::vector<std::string>& files, const cli::SceneOptions& op
             break;
           }
           case SDL_MOUSEBUTTONUP:
-            if (dragButton == SDL_BUTTON_LEFT && !moved && !panning) state.watch(event.button.x, event.button.y);
+            if (dragButton == SDL_BUTTON_LEFT && !moved && !panning && !draggedLight) {
+              state.watch(event.button.x, event.button.y);
+              reportPending = state.probe().has_value();
+            }
             dragButton = 0;
+            draggedLight.reset();
             break;
           case SDL_MOUSEWHEEL:
             if (io.WantCaptureMouse) break;
@@ -190,22 +277,22 @@ int runViewer(const std::vector<std::string>& files, const cli::SceneOptions& op
               case Action::FrameRate: state.toggles().frameRate = !state.toggles().frameRate; break;
               case Action::AntiAliasing: state.toggleAntiAliasing(); break;
               case Action::Occlusion: state.toggleOcclusion(); break;
-              case Action::Environment: panels.message = "F: illum has no environment lighting yet"; break;
+              case Action::Environment: say(panels, "F: illum has no environment lighting yet"); break;
               case Action::Help: state.toggles().help = !state.toggles().help; break;
-              case Action::Panels: state.toggles().panels = !state.toggles().panels; break;
+              case Action::Panels: {
+                // The window grows or shrinks by the panels: the picture keeps its size.
+                state.toggles().panels = !state.toggles().panels;
+                SDL_SetWindowSize(w.window, state.scene().width + (state.toggles().panels ? kPanelWidth : 0),
+                                  state.scene().height);
+                break;
+              }
               case Action::Next:
               case Action::Previous:
                 tryTo([&] { state.step(*action == Action::Next ? 1 : -1); });
                 watched = changedAt(state.current());
                 setTitle();
                 break;
-              case Action::Save:
-                if (haveFrame) {
-                  const fs::path name = pictureName();
-                  tryTo([&] { writePng(name, frame.image); });
-                  if (panels.message.empty()) panels.message = "saved " + name.string();
-                }
-                break;
+              case Action::Save: savePending = true; break;
               case Action::Unwatch: state.unwatch(); break;
             }
             break;
@@ -222,16 +309,19 @@ int runViewer(const std::vector<std::string>& files, const cli::SceneOptions& op
       if (now && watched && *now != *watched) {
         watched = now;
         tryTo([&] { state.load(); });
+        if (panels.message.empty()) say(panels, "reloaded " + state.current());
       }
     }
 
     // ---- The newest state to the worker; its newest frame to the texture ----
     if (requested != state.version()) {
       requested = state.version();
-      worker.request(std::make_shared<Scene>(state.scene()), requested, state.probe());
+      worker.request(std::make_shared<Scene>(state.drawn()), requested, state.probe());
     }
     Frame next;
-    if (worker.take(next)) {
+    const auto presenting = Clock::now();
+    const bool fresh = worker.take(next);
+    if (fresh) {
       const auto now = Clock::now();
       const double seconds = std::chrono::duration<double>(now - lastFrame).count();
       lastFrame = now;
@@ -246,12 +336,28 @@ int runViewer(const std::vector<std::string>& files, const cli::SceneOptions& op
       }
       SDL_UpdateTexture(w.texture, nullptr, frame.image.rgba.data(), frame.image.width * 4);
     }
+    const bool current = haveFrame && frame.final && frame.version == state.version();
+    if (current && reportPending && frame.probe) {
+      std::fputs(frame.report.c_str(), stdout);
+      std::fflush(stdout);
+      reportPending = false;
+    }
+    savePending |= std::exchange(panels.save, false);
+    if (current && savePending) {
+      savePending = false;
+      tryTo([&] {
+        const Saved saved = saveView(frame, panels.exr);
+        say(panels, "saved " + saved.picture.string() + " and " + saved.scene.string());
+      });
+    }
 
     // ---- The window: the picture, the panels over it ----
     ImGui_ImplSDLRenderer_NewFrame();
     ImGui_ImplSDL2_NewFrame();
     ImGui::NewFrame();
-    if (state.toggles().panels) drawPanels(state, panels, haveFrame ? &frame : nullptr, fps);
+    if (state.toggles().panels)
+      drawPanels(state, panels, haveFrame ? &frame : nullptr, fps, state.scene().width, state.scene().height);
+    if (state.toggles().panels && panels.handles) drawHandles(state);
     if (state.toggles().help) drawHelp();
     if (haveFrame && frame.probe && state.probe()) {
       // The watched pixel, marked.
@@ -267,7 +373,9 @@ int runViewer(const std::vector<std::string>& files, const cli::SceneOptions& op
     }
     ImGui_ImplSDLRenderer_RenderDrawData(ImGui::GetDrawData());
     SDL_RenderPresent(w.renderer);
+    if (fresh) pace.shown(frame.ms, std::chrono::duration<double, std::milli>(Clock::now() - presenting).count());
   }
+  if (options.verbose) pace.report();
   return 0;
 }
 
