@@ -2,6 +2,7 @@
 
 #include "pixel_report.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -77,21 +78,39 @@ void RenderWorker::run() {
   }
 }
 
+// A tracer's first, quick picture: half the pixels each way, one ray each (its captions halved
+// with it). Stretched over the window, it follows a drag; the refinements replace it.
+std::shared_ptr<const Scene> quickScene(const Scene& scene) {
+  auto quick = std::make_shared<Scene>(scene);
+  quick->width = std::max(1, scene.width / 2), quick->height = std::max(1, scene.height / 2);
+  quick->rayTracing.samples = 1;
+  for (Label& l : quick->labels) {
+    if (l.pixel) *l.pixel *= Real(0.5);
+    l.size = std::max(Real(4), l.size / 2);
+  }
+  return quick;
+}
+
 void RenderWorker::draw(const Request& r) {
   using Clock = std::chrono::steady_clock;
-  // The tracers refine: 1 sample, then 4, 16, ... up to the scene's own count, each a whole frame.
+  // The tracers refine: a quick picture at half resolution, then 1 sample, 4, 16, ... up to the
+  // scene's own count, each a whole frame. The rasterizer draws the scene as it is.
   const bool traced = r.scene->renderer != RendererKind::Raster;
   const int full = traced ? samplesPerPixel(*r.scene) : r.scene->multisample;
-  for (int samples = traced ? 1 : full;; samples = std::min(full, samples * 4)) {
+  const bool quick = traced && r.scene->width >= 64 && r.scene->height >= 64;
+  for (int step = 0, samples = traced ? 1 : full;; ++step) {
     std::shared_ptr<const Scene> scene = r.scene;
-    if (samples != full) {
-      auto coarse = std::make_shared<Scene>(*r.scene);
-      coarse->rayTracing.samples = samples;
-      scene = coarse;
+    const bool coarse = quick && step == 0;
+    if (coarse) {
+      scene = quickScene(*r.scene);
+    } else if (samples != full) {
+      auto fewer = std::make_shared<Scene>(*r.scene);
+      fewer->rayTracing.samples = samples;
+      scene = fewer;
     }
     Frame f;
     std::optional<PixelProbe> probe;
-    if (r.probe) {
+    if (r.probe && !coarse) {
       probe.emplace();
       probe->x = r.probe->first, probe->y = r.probe->second;
     }
@@ -100,8 +119,8 @@ void RenderWorker::draw(const Request& r) {
     if (cancel_) return;  // a newer request came: this frame is not to be shown
     f.ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
     f.version = r.version;
-    f.samples = samples;
-    f.final = samples == full;
+    f.samples = coarse ? 1 : samples;
+    f.final = !coarse && samples == full;
     if (probe) f.report = reportOf(*scene, *probe, f.image);
     f.probe = probe;
     f.scene = scene;
@@ -109,11 +128,12 @@ void RenderWorker::draw(const Request& r) {
     {
       const std::lock_guard lock(mutex_);
       done_ = std::move(f);
-      last = pending_ || samples == full;
+      last = pending_ || (!coarse && samples == full);
       refining_ = !last;
     }
     if (onFrame_) onFrame_();
     if (last) return;
+    if (!coarse) samples = std::min(full, samples * 4);
   }
 }
 

@@ -131,6 +131,13 @@ TEST(ViewState, StepsThroughFilesAndKeepsToggles) {
   EXPECT_THROW(s.open("/nonexistent/model.ply"), InputError);
   EXPECT_EQ(s.current(), duck);
   EXPECT_EQ(s.files().size(), 2u);
+  // A dropped file opens after the current one.
+  const std::string box = std::string(kModels) + "/glTF2/BoxTextured-glTF-Binary/BoxTextured.glb";
+  s.open(box);
+  EXPECT_EQ(s.current(), box);
+  EXPECT_EQ(s.index(), 1u);
+  EXPECT_EQ(s.files().size(), 3u);
+  EXPECT_EQ(s.files()[2], spider);
 }
 
 TEST(ViewState, APreviewsRigTurnsWithTheCamera) {
