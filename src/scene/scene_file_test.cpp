@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "scene/scene_test_support.h"
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -13,16 +15,8 @@
 namespace illum {
 namespace {
 
-Scene parse(const std::string& text) { return parseScene(text, "scene.json", "."); }
-
-std::string errorOf(const std::string& text) {
-  try {
-    parse(text);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
+using test::errorOf;
+using test::parse;
 
 TEST(SceneDefaults, EmptyObjectIsTheDocumentedScene) {
   const Scene s = parse("{}");

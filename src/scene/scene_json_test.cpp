@@ -7,19 +7,13 @@
 
 #include <gtest/gtest.h>
 
+#include "scene/scene_test_support.h"
+
 namespace illum {
 namespace {
 
-Scene parse(const std::string& text) { return parseScene(text, "scene.json", "."); }
-
-std::string errorOf(const std::string& text) {
-  try {
-    parse(text);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
+using test::errorOf;
+using test::parse;
 
 const char* kDuck = "/usr/share/assimp/models/Collada/duck.dae";    // one mesh, textured
 const char* kSpider = "/usr/share/assimp/models/OBJ/spider.obj";  // several meshes and materials
