@@ -49,7 +49,10 @@ struct Window {
     if (texture) SDL_DestroyTexture(texture);
     if (renderer) SDL_DestroyRenderer(renderer);
     if (window) SDL_DestroyWindow(window);
-    SDL_Quit();
+    // No SDL_Quit: the process ends here, and the window and renderer, which the X server holds
+    // for us, are gone. SDL_Quit would also unload the libraries SDL opened (X11's extensions,
+    // D-Bus), whose own leftovers the leak checker could then no longer name (tests/lsan.supp
+    // names those it can: libX11's and libdbus's).
   }
 };
 
@@ -168,7 +171,8 @@ int runViewer(const std::vector<std::string>& files, const cli::SceneOptions& op
   bool haveFrame = false;
   std::uint64_t requested = 0;
   auto watched = changedAt(state.current());
-  auto lastPoll = Clock::now(), lastFrame = Clock::now();
+  auto lastPoll = Clock::now(), lastFrame = Clock::now(), lastDrawn = Clock::now();
+  bool redraw = true;
   double fps = 0;
   // A drag: which button, where it started and where it was last (a click is a press and release
   // that did not move).
@@ -206,6 +210,10 @@ int runViewer(const std::vector<std::string>& files, const cli::SceneOptions& op
       do {
         ImGui_ImplSDL2_ProcessEvent(&event);
         const ImGuiIO& io = ImGui::GetIO();
+        // The window is drawn again for anything but a drag's step over the picture, whose
+        // result is the next frame (drawing the window at each step would take the cores the
+        // frame needs).
+        redraw |= !(event.type == SDL_MOUSEMOTION && dragButton && !io.WantCaptureMouse);
         switch (event.type) {
           case SDL_QUIT: running = false; break;
           case SDL_WINDOWEVENT:
@@ -352,7 +360,11 @@ int runViewer(const std::vector<std::string>& files, const cli::SceneOptions& op
       });
     }
 
-    // ---- The window: the picture, the panels over it ----
+    // ---- The window: the picture, the panels beside it ----
+    redraw |= fresh || Clock::now() - lastDrawn > std::chrono::milliseconds(250);
+    if (!redraw) continue;
+    redraw = false;
+    lastDrawn = Clock::now();
     ImGui_ImplSDLRenderer_NewFrame();
     ImGui_ImplSDL2_NewFrame();
     ImGui::NewFrame();
