@@ -13,6 +13,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 . bench/lib.sh
 parse_bench_options "$@"
+default_to_bench_scenes
 scenes=("${inputs[@]}")
 illum=build/apps/illum/illum
 peer=build/bench/illum_llvmpipe_bench

@@ -1,6 +1,7 @@
 # What the side-by-side scripts share (sourced, not run): their common options, a JSON field of a
 # bench line, and a median.
 #   parse_bench_options "$@"  sets threads, rounds, frames, layouts (for --layouts) and inputs
+#   default_to_bench_scenes   fills empty inputs with ../shared/bench/*.json
 threads=$(nproc 2>/dev/null || echo 2)
 rounds=3
 frames=10
@@ -16,6 +17,12 @@ parse_bench_options() {
       *) inputs+=("$1"); shift ;;
     esac
   done
+}
+# No inputs given: the shared benchmark scenes (../shared/bench/*.json).
+default_to_bench_scenes() {
+  if [ ${#inputs[@]} -eq 0 ]; then
+    for s in ../shared/bench/*.json; do inputs+=("$s"); done
+  fi
 }
 field() { sed -n "s/.*\"$1\": \([0-9.]*\).*/\1/p"; }
 median() { printf '%s\n' "$@" | sort -g | awk '{a[NR]=$1} END {print (NR%2 ? a[(NR+1)/2] : (a[NR/2]+a[NR/2+1])/2)}'; }

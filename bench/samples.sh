@@ -7,9 +7,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 . bench/lib.sh
 parse_bench_options "$@"
-if [ ${#inputs[@]} -eq 0 ]; then
-  for s in ../shared/bench/*.json; do inputs+=("$s"); done
-fi
+default_to_bench_scenes
 illum=build/apps/illum/illum
 [ -x "$illum" ] || { echo "samples: $illum is missing: build first (scripts/dev.sh run)" >&2; exit 2; }
 echo "# $(lscpu | sed -n 's/^Model name: *//p'), $(nproc) cores; --threads $threads; median of $rounds alternated rounds of $frames frames"
