@@ -2,6 +2,7 @@
 // through files, a model preview's rig turning with the camera, and the frames the worker draws
 // equal what `illum render` draws of the same scene.
 #include "key_map.h"
+#include "save_view.h"
 #include "render_worker.h"
 #include "trackball.h"
 #include "view_state.h"
@@ -12,8 +13,11 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <filesystem>
 #include <cmath>
 #include <thread>
+
+#include <unistd.h>
 
 namespace illum::view {
 namespace {
@@ -245,6 +249,35 @@ TEST(RenderWorker, FramesAreTheRenderersPictures) {
   ASSERT_TRUE(waitFor(f, true));
   EXPECT_EQ(f.samples, 16);
   EXPECT_EQ(f.image.rgba, renderScene(traced).rgba);
+}
+
+// Saving: a picture and a scene file under the first free names, never over a file; the scene
+// reads back to the scene shown; OpenEXR holds the linear values.
+TEST(SaveView, PictureAndSceneUnderFreeNames) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("illum_save_view_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  ViewState s({}, viewOptions(96, 64));
+  s.load();
+  Frame f;
+  f.scene = std::make_shared<Scene>(s.drawn());
+  f.image = renderScene(*f.scene);
+  const Saved png = saveView(f, false, dir);
+  EXPECT_EQ(png.picture, dir / "illum_view_1.png");
+  EXPECT_EQ(readPng(png.picture).rgba, f.image.rgba);
+  EXPECT_EQ(renderScene(loadSceneFile(png.scene)).rgba, f.image.rgba);
+  const Saved exr = saveView(f, true, dir);
+  EXPECT_EQ(exr.picture, dir / "illum_view_2.exr");
+  const FloatImage linear = readExr(exr.picture);
+  EXPECT_EQ(linear.width, 96);
+  // A scene no file made cannot be saved, and then nothing is written.
+  Scene made = *f.scene;
+  made.objects[0].source = nullptr;
+  f.scene = std::make_shared<Scene>(made);
+  EXPECT_THROW(saveView(f, false, dir), Error);
+  EXPECT_FALSE(fs::exists(dir / "illum_view_3.png"));
+  fs::remove_all(dir);
 }
 
 }  // namespace
