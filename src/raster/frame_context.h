@@ -18,6 +18,9 @@ struct SubpixelOffset {
   std::int64_t x = 0, y = 0;
 };
 
+// The most samples per pixel a frame takes (the standard patterns go up to 16).
+constexpr int kSamplesMax = 16;
+
 struct FrameContext {
   int width = 0, height = 0;
   Mat4 viewFromWorld{1};  // GL_MODELVIEW before any object transform

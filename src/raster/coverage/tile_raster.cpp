@@ -575,8 +575,6 @@ std::size_t RasterizeSurface(const TriangleSetup& t, const PixelRect& tile, Real
 
 // ---- Multisampling in one pass ----
 
-constexpr int kSamplesMax = 16;
-
 // The depth pass at every sample of the triangle's pixels in `tile`. A vector's lanes are a row's
 // samples in the tile's order (SamplePlanes: pixel by pixel, each pixel's samples side by side),
 // so whole vectors load and store; each row only over the pixels that may have a sample inside

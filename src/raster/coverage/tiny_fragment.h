@@ -12,10 +12,12 @@
 
 namespace illum {
 
-// Where a tiny triangle's pixel goes, its tag: its pixel in the tile and how many of the tile's
-// records come before it.
+// Where a tiny triangle's pixel goes, its tag: its pixel in the tile (multisampled: its sample,
+// pixel · samples + sample, the tile's sample planes' index) and how many of the tile's records
+// come before it (those of one setup chunk: at most 1024 triangles, each cut into at most 7
+// pieces by the clipper, well below 2^16).
 struct TinyTag {
-  static constexpr int kPixelBits = 12;  // a 64×64 tile's pixels
+  static constexpr int kPixelBits = 16;  // a 64×64 tile's samples, up to 16 per pixel
   static std::uint32_t of(std::uint32_t recordsBefore, std::uint32_t pixel) { return recordsBefore << kPixelBits | pixel; }
   static std::uint32_t pixel(std::uint32_t tag) { return tag & ((1u << kPixelBits) - 1); }
   static std::uint32_t recordsBefore(std::uint32_t tag) { return tag >> kPixelBits; }

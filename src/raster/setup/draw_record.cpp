@@ -75,8 +75,9 @@ std::size_t setupTriangles(const FrameContext& frame, const Object& object, std:
   // Tiny triangles' pixels: colours, or Phong's visible surface.
   std::optional<TinyBatch<TinyFragment>> batch;
   std::optional<TinyBatch<TinySurface>> surfaces;
+  const int samples = frame.samples.size() > 1 ? int(frame.samples.size()) : 1;
   if (tiny && frame.shading != Shading::Phong)
-    batch.emplace(binning->bins.fragments, frame.shading == Shading::Flat, binning->bins.tilesX());
+    batch.emplace(binning->bins.fragments, frame.shading == Shading::Flat, binning->bins.tilesX(), 0, samples);
   if (tiny && frame.shading == Shading::Phong)
     surfaces.emplace(binning->bins.surfaces, false, binning->bins.tilesX(), binning->shadeOwner);
   // While a group of triangles set up at once (below) holds the batch's lanes, a tiny triangle
@@ -102,7 +103,9 @@ std::size_t setupTriangles(const FrameContext& frame, const Object& object, std:
       // Counter-clockwise on screen: setup swapped the last two when the triangle came clockwise.
       const ShadedVertex* ordered[3] = {&v0, r.setup.swapped ? &v2 : &v1, r.setup.swapped ? &v1 : &v2};
 #if !ILLUM_USE_DOUBLE
-      if (tiny && isTiny(r.setup)) {
+      // Multisampled, only a group's tiny triangles are worked out at setup (inGroups, below):
+      // one alone is no cheaper than its record.
+      if (tiny && samples == 1 && isTiny(r.setup)) {
         TileBins& bins = binning->bins;
         const bool flat = frame.shading == Shading::Flat;
         SurfaceVertices s;
@@ -165,7 +168,8 @@ std::size_t setupTriangles(const FrameContext& frame, const Object& object, std:
     // the next groups go one by one instead. Either way the same pixels in the same order.
     const TinyGroupSource source{vertices.data(), nullptr, frame.width, frame.height, binning->bins.tilesX(),
                                  frame.lightModel.twoSided, frame.shading == Shading::Flat,
-                                 frame.shading == Shading::Phong, vertices.size()};
+                                 frame.shading == Shading::Phong, vertices.size(), reach, samples,
+                                 frame.samples.data()};
     const std::size_t group = std::size_t(tinyGroupCapacity());
     const auto recordsIn = [&](int tile) { return binning->bins.recordsIn(tile); };
     constexpr int kMostOneByOne = 5;  // at most 2^5 − 1 groups one by one between tries

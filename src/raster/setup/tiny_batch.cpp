@@ -35,6 +35,19 @@ HWY_INLINE auto MaskFromBits(D d, std::uint32_t bits) {
   return hn::LoadMaskBits(d, bytes);
 }
 
+// A box of pixels `w` wide as TinySampleSlot's fields: lane k at column k mod w, row k / w.
+struct TinySampleRows {
+  std::uint32_t offset[kTinyPixels + 1][kTinyPixels];
+};
+constexpr TinySampleRows makeTinySampleRows() {
+  TinySampleRows rows{};
+  for (int w = 1; w <= kTinyPixels; ++w)
+    for (int k = 0; k < kTinyPixels; ++k)
+      rows.offset[w][k] = std::uint32_t(16 * (k % w)) | std::uint32_t(16 * (k / w)) << TinySampleSlot::kRowShift;
+  return rows;
+}
+alignas(64) inline constexpr TinySampleRows kTinySampleRows = makeTinySampleRows();
+
 // The batch in groups of as many triangles as a float vector has lanes. A group's pixels are
 // laid out in slots, triangle after triangle (each its bounds' pixels, kTinyLanes' order), and
 // each vector of slots looks its triangles' values up in the group's rows (TableLookupLanes): the
@@ -43,9 +56,13 @@ HWY_INLINE auto MaskFromBits(D d, std::uint32_t bits) {
 // covered ones, compressed in the slots' order, emit(at, count, of, l0, l1, l2, z, tag) stores
 // a vector's `count` pixels from out[at] on (or its whole vector: the last one's rest lands in the
 // room past them); of(row) looks each lane's triangle's value up in a row of the batch's lanes.
-// Returns how many pixels are covered.
-template <class Emit>
-std::size_t CoverGroups(const TinyBatchLanes& b, std::uint32_t members, std::uint8_t* covered, const Emit& emit) {
+// Multisampled (kSamples), a slot is one sample of a pixel (TinySampleSlot): its coverage and
+// depth from the edge values at the sample, (c + x')·A + (r + y')·B with the sample's offset
+// (x', y') in sixteenths — each product and sum an integer of at most 2^24 (floatExact at every
+// sample of the bounds), so exact as rasterizeSamples' — and l0, l1, l2 the pixel centre's, for
+// the colour. Returns how many pixels (samples) are covered.
+template <bool kSamples, class Emit>
+std::size_t CoverGroups(const TinyBatchLanes& b, std::uint32_t members, std::uint16_t* covered, const Emit& emit) {
   const hn::ScalableTag<float> df;
   const hn::RebindToUnsigned<decltype(df)> du;
   const hn::RebindToSigned<decltype(df)> di;
@@ -54,37 +71,75 @@ std::size_t CoverGroups(const TinyBatchLanes& b, std::uint32_t members, std::uin
   constexpr int kGroupMax = std::min<int>(TinyBatchLanes::kCapacity, int(hn::MaxLanes(df)));
   static_assert(TinyBatchLanes::kCapacity % kGroupMax == 0);
   const int group = std::min<int>(kGroupMax, int(hn::Lanes(df)));
-  constexpr int kSlots = kGroupMax * kTinyPixels;
-  constexpr int kOffsetBits = 12, kTileShift = 6;  // a slot's offset: row << kTileShift | column
+  constexpr int kSlots = kGroupMax * kTinyPixels * (kSamples ? kSamplesMax : 1);
+  // A slot: its triangle in the group above kTriangleShift, below it the pixel's offset (row <<
+  // kTileShift | column) or, multisampled, TinySampleSlot's fields.
+  constexpr int kOffsetBits = kSamples ? TinySampleSlot::kBits : 12, kTileShift = 6;
   constexpr std::uint32_t kOffsetMask = (1u << kOffsetBits) - 1;
-  static_assert(kTileSize == 1 << kTileShift && (kTinyPixels - 1) * (kTileSize + 1) <= int(kOffsetMask));
+  static_assert(kTileSize == 1 << kTileShift && (kTinyPixels - 1) * (kTileSize + 1) < 1 << 12);
+  const int sampleShift = __builtin_ctz(unsigned(b.samples));
   const VF zero = hn::Zero(df);
   std::size_t n = 0;
   for (int g = 0; g < TinyBatchLanes::kCapacity; g += group) {
     const std::uint32_t inGroup = (members >> g) & ((1u << group) - 1);
     if (inGroup == 0) continue;
-    // Slot s: triangle slot[s] >> kOffsetBits of the group, pixel slot[s] & kOffsetMask of its
-    // bounds (its offset in the tile from their first pixel: row · kTileSize + column).
+    // Slot s: triangle slot[s] >> kOffsetBits of the group, pixel (or sample) slot[s] & kOffsetMask
+    // of its bounds.
     HWY_ALIGN std::uint32_t slot[kSlots + kGroupMax];
     int slots = 0;
+    [[maybe_unused]] int slotsOf[TinyBatchLanes::kCapacity];  // multisampled: each triangle's
     for (std::uint32_t m = inGroup; m != 0; m &= m - 1) {
       const int j = __builtin_ctz(m);
-      const std::uint32_t* offsets = kTinyLanes.offset[b.width[g + j]];
-      for (int k = 0; k < kTinyPixels; ++k)  // a whole row of the table: no branch per pixel
-        slot[slots + k] = std::uint32_t(j) << kOffsetBits | offsets[k];
-      slots += b.count[g + j];
+      if constexpr (kSamples) {
+        // Each sample's box of pixels, a whole row of the table at a time.
+        const int before = slots;
+        for (int s = 0; s < b.samples; ++s) {
+          const std::uint32_t base = std::uint32_t(j) << kOffsetBits | b.sampleBase[s][g + j];
+          const std::uint32_t* offsets = kTinySampleRows.offset[b.sampleWidth[s][g + j]];
+          for (int k = 0; k < kTinyPixels; ++k) slot[slots + k] = base + offsets[k];
+          slots += b.sampleCount[s][g + j];
+        }
+        slotsOf[j] = slots - before;
+      } else {
+        const std::uint32_t* offsets = kTinyLanes.offset[b.width[g + j]];
+        for (int k = 0; k < kTinyPixels; ++k)  // a whole row of the table: no branch per pixel
+          slot[slots + k] = std::uint32_t(j) << kOffsetBits | offsets[k];
+        slots += b.count[g + j];
+      }
     }
     for (int k = slots; k < slots + group; ++k) slot[k] = 0;  // the rest
     const auto triangleOf = [&](VU v) {
       return hn::IndicesFromVec(df, hn::BitCast(di, hn::ShiftRight<kOffsetBits>(v)));
     };
     const VU offsetMask = hn::Set(du, kOffsetMask), columnMask = hn::Set(du, kTileSize - 1);
-    // The edge values of a vector of slots: c·A + r·B from the first pixel's.
-    const auto edgeValues = [&](VU v, const auto& of, VF (&E)[3]) {
-      const VU offset = hn::And(v, offsetMask);
-      const VF c = hn::ConvertTo(df, hn::BitCast(di, hn::And(offset, columnMask)));
-      const VF r = hn::ConvertTo(df, hn::BitCast(di, hn::ShiftRight<kTileShift>(offset)));
+    // A slot's pixel column and row in its bounds; multisampled, also its sample's (in pixels).
+    const auto toFloat = [&](VU u) { return hn::ConvertTo(df, hn::BitCast(di, u)); };
+    const auto pixelOf = [&](VU v, VF& c, VF& r) {
+      if constexpr (kSamples) {
+        c = toFloat(hn::ShiftRight<TinySampleSlot::kSubShift>(hn::And(v, hn::Set(du, TinySampleSlot::kFieldMask))));
+        r = toFloat(hn::ShiftRight<TinySampleSlot::kSubShift>(
+            hn::And(hn::ShiftRight<TinySampleSlot::kRowShift>(v), hn::Set(du, TinySampleSlot::kFieldMask))));
+      } else {
+        const VU offset = hn::And(v, offsetMask);
+        c = toFloat(hn::And(offset, columnMask));
+        r = toFloat(hn::ShiftRight<kTileShift>(offset));
+      }
+    };
+    const auto sampleOf = [&](VU v, VF& c, VF& r) {
+      const VF sixteenth = hn::Set(df, 1.0f / 16);
+      c = toFloat(hn::And(v, hn::Set(du, TinySampleSlot::kFieldMask))) * sixteenth -
+          hn::Set(df, float(TinySampleSlot::kColumnBias) / 16);
+      r = toFloat(hn::And(hn::ShiftRight<TinySampleSlot::kRowShift>(v), hn::Set(du, TinySampleSlot::kFieldMask))) *
+              sixteenth -
+          hn::Set(df, float(TinySampleSlot::kRowBias) / 16);
+    };
+    // The edge values at (c, r) of the bounds: c·A + r·B from the first pixel's.
+    const auto edgeValues = [&](VF c, VF r, const auto& of, VF (&E)[3]) {
       for (int i = 0; i < 3; ++i) E[i] = of(b.edge[i]) + hn::MulAdd(c, of(b.stepX[i]), r * of(b.stepY[i]));
+    };
+    const auto coveredAt = [&](VU v, VF& c, VF& r) {
+      if constexpr (kSamples) sampleOf(v, c, r);
+      else pixelOf(v, c, r);
     };
     // First the coverage of every slot; the covered ones' slots are kept, in order, for the rest
     // (fewer than half of a dense mesh's slots are covered, and working their edge values out
@@ -98,8 +153,9 @@ std::size_t CoverGroups(const TinyBatchLanes& b, std::uint32_t members, std::uin
       const VU v = hn::Load(du, slot + s0);
       const auto lanesOf = triangleOf(v);
       const auto of = [&](const float* values) { return hn::TableLookupLanes(hn::LoadU(df, values + g), lanesOf); };
-      VF E[3];
-      edgeValues(v, of, E);
+      VF c, r, E[3];
+      coveredAt(v, c, r);
+      edgeValues(c, r, of, E);
       auto covers = hn::FirstN(df, std::size_t(slots - s0));
       for (int i = 0; i < 3; ++i) covers = hn::And(covers, E[i] + of(b.bias[i]) >= zero);
       hn::StoreU(hn::Compress(v, hn::RebindMask(du, covers)), du, keptSlot + kept);
@@ -119,12 +175,25 @@ std::size_t CoverGroups(const TinyBatchLanes& b, std::uint32_t members, std::uin
         if constexpr (std::is_same_v<std::remove_cv_t<std::remove_pointer_t<decltype(values)>>, float>) return value;
         else return hn::BitCast(du, value);  // the same lanes, as bits
       };
-      VF E[3];
-      edgeValues(v, of, E);
+      VF c, r, E[3];
+      coveredAt(v, c, r);
+      edgeValues(c, r, of, E);
       const VF invArea = of(b.invArea);
-      const VF l0 = E[0] * invArea, l1 = E[1] * invArea, l2 = E[2] * invArea;
+      VF l0 = E[0] * invArea, l1 = E[1] * invArea, l2 = E[2] * invArea;
       const VF z = l0 * of(b.z[0]) + l1 * of(b.z[1]) + l2 * of(b.z[2]);
-      const VU tag = hn::Add(of(b.firstTag), hn::And(v, offsetMask));
+      VU tag;
+      if constexpr (kSamples) {
+        // The pixel centre's weights, and the sample's place in the tile's sample planes.
+        pixelOf(v, c, r);
+        edgeValues(c, r, of, E);
+        l0 = E[0] * invArea, l1 = E[1] * invArea, l2 = E[2] * invArea;
+        const VU pixel = hn::Add(hn::ShiftLeft<kTileShift>(hn::BitCast(du, hn::ConvertTo(di, r))),
+                                 hn::BitCast(du, hn::ConvertTo(di, c)));
+        const VU sample = hn::And(hn::ShiftRight<TinySampleSlot::kSampleShift>(v), hn::Set(du, kSamplesMax - 1));
+        tag = hn::Add(of(b.firstTag), hn::Add(hn::ShiftLeftSame(pixel, sampleShift), sample));
+      } else {
+        tag = hn::Add(of(b.firstTag), hn::And(v, offsetMask));
+      }
       emit(n + std::size_t(k0), std::min(group, kept - k0), of, l0, l1, l2, z, tag);
     }
     n += std::size_t(kept);
@@ -135,9 +204,10 @@ std::size_t CoverGroups(const TinyBatchLanes& b, std::uint32_t members, std::uin
     int end = 0, before = 0;  // the members' slots, one after another from slot 0
     for (std::uint32_t m = inGroup; m != 0; m &= m - 1) {
       const int j = __builtin_ctz(m);
-      end += b.count[g + j];
+      if constexpr (kSamples) end += slotsOf[j];
+      else end += b.count[g + j];
       const int after = keptAt(end);
-      covered[g + j] = std::uint8_t(after - before);
+      covered[g + j] = std::uint16_t(after - before);
       before = after;
     }
   }
@@ -145,13 +215,12 @@ std::size_t CoverGroups(const TinyBatchLanes& b, std::uint32_t members, std::uin
 }
 
 std::size_t CoverTinyBatch(const TinyBatchLanes& b, std::uint32_t members, bool flat, TinyFragment* out,
-                           std::uint8_t* covered) {
+                           std::uint16_t* covered) {
   static_assert(sizeof(TinyFragment) == 3 * sizeof(std::uint32_t));
   const hn::ScalableTag<float> df;
   const hn::RebindToUnsigned<decltype(df)> du;
   using VF = hn::VFromD<decltype(df)>;
-  return CoverGroups(b, members, covered, [&](std::size_t at, int, const auto& of, VF l0, VF l1, VF l2, VF z,
-                                              auto tag) {
+  const auto emit = [&](std::size_t at, int, const auto& of, VF l0, VF l1, VF l2, VF z, auto tag) {
     hn::VFromD<decltype(du)> color;
     if (flat) {
       color = of(b.packed);
@@ -163,18 +232,19 @@ std::size_t CoverTinyBatch(const TinyBatchLanes& b, std::uint32_t members, bool 
       color = hn::BitCast(du, PackColors(df, true, channel));
     }
     hn::StoreInterleaved3(tag, hn::BitCast(du, z), color, du, reinterpret_cast<std::uint32_t*>(out + at));
-  });
+  };
+  return b.samples > 1 ? CoverGroups<true>(b, members, covered, emit) : CoverGroups<false>(b, members, covered, emit);
 }
 
 // The same covered pixels as Phong's visible surface (CoverTinySurface's values, SurfaceAt's
 // formulas), assembled lane by lane into their structs.
 std::size_t CoverTinySurfaceBatch(const TinyBatchLanes& b, std::uint32_t members, std::uint32_t owner,
-                                  TinySurface* out, std::uint8_t* covered) {
+                                  TinySurface* out, std::uint16_t* covered) {
   const hn::ScalableTag<float> df;
   const hn::RebindToUnsigned<decltype(df)> du;
   using VF = hn::VFromD<decltype(df)>;
   constexpr std::size_t kMax = hn::MaxLanes(df);
-  return CoverGroups(b, members, covered, [&](std::size_t at, int count, const auto& of, VF l0, VF l1, VF l2, VF z,
+  return CoverGroups<false>(b, members, covered, [&](std::size_t at, int count, const auto& of, VF l0, VF l1, VF l2, VF z,
                                               auto tag) {
     VF p[3];
     PerspectiveWeights(l0, l1, l2, of(b.invW[0]), of(b.invW[1]), of(b.invW[2]), p);
@@ -319,7 +389,13 @@ void SetupTinyGroup(const TinyGroupSource& src, int count, TinyBatchLanes& b, in
   const VD zero = hn::Zero(dd), one = hn::Set(dd, 1.0);
   const VD sub = hn::Set(dd, double(kSubpixelOne)), invSub = hn::Set(dd, 1.0 / double(kSubpixelOne));
   const VD tileSize = hn::Set(dd, double(kTileSize)), invTile = hn::Set(dd, 1.0 / double(kTileSize));
+  const VD reachMinX = hn::Set(dd, double(src.reach.minX)), reachMaxX = hn::Set(dd, double(src.reach.maxX));
+  const VD reachMinY = hn::Set(dd, double(src.reach.minY)), reachMaxY = hn::Set(dd, double(src.reach.maxY));
+  const VD reachSpanX = hn::Set(dd, double(2 * (src.reach.maxX - src.reach.minX)));
+  const VD reachSpanY = hn::Set(dd, double(2 * (src.reach.maxY - src.reach.minY)));
   HWY_ALIGN std::int32_t tile[kN], width[kN], pixels[kN], pixel[kN], crosses[kN];
+  const int samples = src.samples > 1 ? src.samples : 0;  // multisampled: each sample's box
+
   std::uint32_t fast = 0, empty = 0, clockwiseBits = 0, backBits = 0;
   for (int j0 = 0; j0 < count; j0 += lanes) {
     VD X[3], Y[3];
@@ -331,8 +407,11 @@ void SetupTinyGroup(const TinyGroupSource& src, int count, TinyBatchLanes& b, in
     const VD half = hn::Set(dd, double(kSubpixelOne / 2)), roundUp = hn::Set(dd, double(kSubpixelOne - 1));
     const auto firstCentre = [&](VD f) { return hn::Floor((f - half + roundUp) * invSub); };
     const auto lastCentre = [&](VD f) { return hn::Floor((f - half) * invSub); };
-    const VD minX = hn::Max(zero, firstCentre(minFx)), maxX = hn::Min(hn::Set(dd, src.width - 1.0), lastCentre(maxFx));
-    const VD minY = hn::Max(zero, firstCentre(minFy)), maxY = hn::Min(hn::Set(dd, src.height - 1.0), lastCentre(maxFy));
+    // Multisampled, every pixel whose samples (the reach from its centre) the triangle may cover.
+    const VD minX = hn::Max(zero, firstCentre(minFx - reachMaxX));
+    const VD maxX = hn::Min(hn::Set(dd, src.width - 1.0), lastCentre(maxFx - reachMinX));
+    const VD minY = hn::Max(zero, firstCentre(minFy - reachMaxY));
+    const VD maxY = hn::Min(hn::Set(dd, src.height - 1.0), lastCentre(maxFy - reachMinY));
     const MD in = hn::Load(dd, inside + j0) == one;
     const MD covers = hn::And(hn::And(area2 != zero, minX <= maxX), minY <= maxY);
     const MD swapped = area2 < zero;
@@ -341,7 +420,8 @@ void SetupTinyGroup(const TinyGroupSource& src, int count, TinyBatchLanes& b, in
     const VD PY[3] = {Y[0], hn::IfThenElse(swapped, Y[2], Y[1]), hn::IfThenElse(swapped, Y[1], Y[2])};
     const VD w = maxX - minX + one, h = maxY - minY + one;
     MD tiny = w * h <= hn::Set(dd, double(kTinyPixels));
-    const VD spanX = maxFx - minFx, spanY = maxFy - minFy;
+    // As setupTriangle's floatExact: multisampled, at every sample of the bounds' pixels.
+    const VD spanX = maxFx - minFx + reachSpanX, spanY = maxFy - minFy + reachSpanY;
     const VD fx = minX * sub + half, fy = minY * sub + half;
     for (int i = 0; i < 3; ++i) {  // edge i: from vertex i + 1 to vertex i + 2, opposite vertex i
       const VD px = PX[(i + 1) % 3], py = PY[(i + 1) % 3], qx = PX[(i + 2) % 3], qy = PY[(i + 2) % 3];
@@ -372,6 +452,23 @@ void SetupTinyGroup(const TinyGroupSource& src, int count, TinyBatchLanes& b, in
     hn::Store(hn::DemoteTo(di, (minY - tileY * tileSize) * tileSize + (minX - tileX * tileSize)), di, pixel + j0);
     hn::Store(hn::DemoteTo(di, hn::IfThenElseZero(isFast, w)), di, width + j0);
     hn::Store(hn::DemoteTo(di, hn::IfThenElseZero(isFast, w * h)), di, pixels + j0);
+    // Multisampled: each sample's box, the pixels whose sample lies in the triangle's box, as a
+    // pass at that sample bounds them (inside the bounds, which take them all in).
+    for (int smp = 0; smp < samples; ++smp) {
+      const SubpixelOffset o = src.sampleOffsets[smp];
+      const VD ox = hn::Set(dd, double(o.x)), oy = hn::Set(dd, double(o.y));
+      const VD x0 = hn::Max(minX, firstCentre(minFx - ox)), x1 = hn::Min(maxX, lastCentre(maxFx - ox));
+      const VD y0 = hn::Max(minY, firstCentre(minFy - oy)), y1 = hn::Min(maxY, lastCentre(maxFy - oy));
+      const MD some = hn::And(hn::And(isFast, x0 <= x1), y0 <= y1);
+      const VD sw = hn::IfThenElseZero(some, x1 - x0 + one);
+      const VD base = (x0 - minX) * hn::Set(dd, 16.0) +
+                      (y0 - minY) * hn::Set(dd, 16.0 * double(1 << TinySampleSlot::kRowShift)) +
+                      hn::Set(dd, double(TinySampleSlot::of(0, 0, o, smp)));
+      hn::Store(hn::DemoteTo(di, hn::IfThenElseZero(some, base)), di,
+                reinterpret_cast<std::int32_t*>(b.sampleBase[smp]) + j0);
+      hn::Store(hn::DemoteTo(di, sw), di, b.sampleWidth[smp] + j0);
+      hn::Store(hn::DemoteTo(di, sw * hn::IfThenElseZero(some, y1 - y0 + one)), di, b.sampleCount[smp] + j0);
+    }
   }
   // Depth, 1/w and the colours of the vertices in counter-clockwise order, the colours of the lit
   // side, in float lanes as they were gathered; a colour that is not opaque leaves the fast path.
@@ -400,7 +497,7 @@ void SetupTinyGroup(const TinyGroupSource& src, int count, TinyBatchLanes& b, in
   for (std::uint32_t m = fast; m != 0; m &= m - 1) {
     const int j = __builtin_ctz(m);
     tileOut[j] = tile[j];
-    b.firstTag[j] = std::uint32_t(pixel[j]);
+    b.firstTag[j] = std::uint32_t(pixel[j] * src.samples);
     b.width[j] = std::uint8_t(width[j]);
     b.count[j] = std::uint8_t(pixels[j]);
     b.crosses[j] = std::uint8_t(crosses[j]);
@@ -442,12 +539,12 @@ void setupTinyGroup(const TinyGroupSource& source, int count, TinyBatchLanes& la
 }
 
 std::size_t coverTinyBatch(const TinyBatchLanes& batch, std::uint32_t members, bool flat, TinyFragment* out,
-                           std::uint8_t* covered) {
+                           std::uint16_t* covered) {
   return HWY_DYNAMIC_DISPATCH(CoverTinyBatch)(batch, members, flat, out, covered);
 }
 
 std::size_t coverTinyBatch(const TinyBatchLanes& batch, std::uint32_t members, std::uint32_t owner, TinySurface* out,
-                           std::uint8_t* covered) {
+                           std::uint16_t* covered) {
   return HWY_DYNAMIC_DISPATCH(CoverTinySurfaceBatch)(batch, members, owner, out, covered);
 }
 
@@ -468,7 +565,8 @@ void setTinyLanes(TinyBatchLanes& b, int j, const TriangleSetup& t, const Color4
     for (int c = 0; c < 3; ++c)
       for (int k = 0; k < 3; ++k) b.lit[c][k][j] = lit[k][c];
   b.packed[j] = packed;
-  b.firstTag[j] = TinyTag::of(recordsBefore, std::uint32_t((t.minY % kTileSize) * kTileSize + t.minX % kTileSize));
+  b.firstTag[j] =
+      TinyTag::of(recordsBefore, std::uint32_t(((t.minY % kTileSize) * kTileSize + t.minX % kTileSize) * b.samples));
   b.width[j] = std::uint8_t(t.maxX - t.minX + 1);
   b.count[j] = std::uint8_t(b.width[j] * (t.maxY - t.minY + 1));
   b.crosses[j] = 0;
@@ -491,19 +589,28 @@ void TinyBatch<Pixel>::add(const TriangleSetup& t, const Color4* lit, std::uint3
 }
 
 template <class Pixel>
+TinyBatch<Pixel>::TinyBatch(TinyRuns<Pixel>& out, bool flat, int tilesX, std::uint32_t owner, int samples)
+    : out_(out), flat_(flat), tilesX_(tilesX), owner_(owner) {
+  lanes_.samples = samples;
+}
+
+template <class Pixel>
 void TinyBatch<Pixel>::commitAcrossTiles(int j, Pixel* pixels, std::size_t count) {
-  // Its tags are the bounds' first pixel in the first tile plus row · kTileSize + column.
-  const std::uint32_t first = lanes_.firstTag[j];
-  const std::uint32_t x0 = first % kTileSize, y0 = first / kTileSize;
-  std::uint8_t pieceOf[kTinyPixels];
+  // Its tags are the bounds' first pixel in the first tile plus row · kTileSize + column, times
+  // the samples, plus the sample.
+  const int shift = __builtin_ctz(unsigned(lanes_.samples));
+  const std::uint32_t first = lanes_.firstTag[j], firstPixel = first >> shift, sampleMask = (1u << shift) - 1;
+  const std::uint32_t x0 = firstPixel % kTileSize, y0 = firstPixel / kTileSize;
+  std::uint8_t pieceOf[kTinyPixels * kSamplesMax];
   std::uint32_t size[4] = {};
   for (std::size_t k = 0; k < count; ++k) {
-    const std::uint32_t offset = pixels[k].tag - first;
-    const std::uint32_t x = x0 + offset % kTileSize, y = y0 + offset / kTileSize;
+    const std::uint32_t offset = pixels[k].tag - first, pixel = offset >> shift;
+    const std::uint32_t x = x0 + pixel % kTileSize, y = y0 + pixel / kTileSize;
     const unsigned p = unsigned(x >= kTileSize) | unsigned(y >= kTileSize) << 1;
     pieceOf[k] = std::uint8_t(p);
     ++size[p];
-    pixels[k].tag = TinyTag::of(recordsBefore_[j][p], (y % kTileSize) * kTileSize + x % kTileSize);
+    pixels[k].tag = TinyTag::of(recordsBefore_[j][p],
+                                ((y % kTileSize) * kTileSize + x % kTileSize) << shift | (offset & sampleMask));
   }
   // Covered in one tile only (the bounds cross, the pixels need not): already in place.
   for (unsigned p = 0; p < 4; ++p)
@@ -512,7 +619,7 @@ void TinyBatch<Pixel>::commitAcrossTiles(int j, Pixel* pixels, std::size_t count
       return;
     }
   // Otherwise each piece's pixels after the previous piece's, each in the order it came.
-  Pixel sorted[kTinyPixels];
+  Pixel sorted[kTinyPixels * kSamplesMax];
   std::uint32_t at[4] = {0, size[0], size[0] + size[1], size[0] + size[1] + size[2]};
   for (std::size_t k = 0; k < count; ++k) sorted[at[pieceOf[k]]++] = pixels[k];
   for (std::size_t k = 0; k < count; ++k) pixels[k] = sorted[k];
@@ -522,8 +629,8 @@ void TinyBatch<Pixel>::commitAcrossTiles(int j, Pixel* pixels, std::size_t count
 template <class Pixel>
 void TinyBatch<Pixel>::flush() {
   if (members_ == 0) return;
-  std::uint8_t covered[TinyBatchLanes::kCapacity];
-  Pixel* pixels = out_.room(kTinyBatchRoom);
+  std::uint16_t covered[TinyBatchLanes::kCapacity];
+  Pixel* pixels = out_.room(kTinyBatchRoom * std::size_t(lanes_.samples));
   if constexpr (std::is_same_v<Pixel, TinySurface>) coverTinyBatch(lanes_, members_, owner_, pixels, covered);
   else coverTinyBatch(lanes_, members_, flat_, pixels, covered);
   for (std::uint32_t m = members_; m != 0; m &= m - 1) {

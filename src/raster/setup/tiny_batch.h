@@ -41,6 +41,31 @@ struct TinyBatchLanes {
   // triangle's firstTag is only its first pixel in its (bottom-left) tile: TinyBatch::flush sorts
   // its covered pixels into their tiles and tags them there.
   std::uint8_t crosses[kCapacity];
+  // Multisampling in one pass: the samples per pixel (4, 8 or 16). A pixel's samples are covered
+  // and their depths found each as a pass at that sample would (rasterizeSamples), its colour once
+  // at the centre; each covered sample is one TinyFragment, tagged with its sample's place
+  // (TinyTag), and firstTag holds the bounds' first pixel times the samples. The bounds take in
+  // every pixel with a sample in the triangle's box; sample s of triangle j is looked for only in
+  // the pixels whose sample s lies in that box, as a pass at that sample bounds them: a box
+  // `sampleWidth` pixels wide of `sampleCount` pixels (0: none), whose first slot is sampleBase
+  // (TinySampleSlot: its place in the bounds and the sample's offset).
+  int samples = 1;
+  alignas(64) std::uint32_t sampleBase[kSamplesMax][kCapacity];
+  alignas(64) std::int32_t sampleWidth[kSamplesMax][kCapacity], sampleCount[kSamplesMax][kCapacity];
+};
+
+// A multisampled tiny triangle's slot (tiny_batch.cpp): sample s of pixel (c, r) of its bounds,
+// the sample (x', y') sixteenths of a pixel from the centre (x' in [−8, 7], y' in [−7, 8]: the
+// standard patterns, y flipped): 16c + x' + kColumnBias in bits 0–8, 16r + y' + kRowBias in bits
+// 9–17 (each field's value >> kSubShift the pixel's), s in bits 18–21.
+struct TinySampleSlot {
+  static constexpr int kRowShift = 9, kSampleShift = 18, kBits = 22, kSubShift = 4;
+  static constexpr std::uint32_t kFieldMask = (1u << kRowShift) - 1;
+  static constexpr int kColumnBias = 8, kRowBias = 7;
+  static std::uint32_t of(int column, int row, SubpixelOffset sample, int s) {
+    return std::uint32_t(16 * column + int(sample.x / 16) + kColumnBias) |
+           std::uint32_t(16 * row + int(sample.y / 16) + kRowBias) << kRowShift | std::uint32_t(s) << kSampleShift;
+  }
 };
 
 // Lane j of `lanes` for the tiny triangle `t`, as the batch needs it: its three vertex colours
@@ -53,15 +78,16 @@ void setTinyLanes(TinyBatchLanes& lanes, int j, const TriangleSetup& t, const Co
 void setTinySurfaceLanes(TinyBatchLanes& lanes, int j, const SurfaceVertices& v);
 
 // Covers the batch's triangles named by the bits of `members` (bit j: triangle j): their covered
-// pixels go to `out` (room for kTinyBatchRoom), triangle after triangle, each triangle's in rows
-// from the bottom, as coverTinyFlat (`flat`) or coverTinyGouraud writes them; covered[j] is how
+// pixels go to `out` (room for kTinyBatchRoom times the samples), triangle after triangle, each
+// triangle's in rows from the bottom, as coverTinyFlat (`flat`) or coverTinyGouraud writes them
+// (multisampled: each covered sample, as rasterizeSamplesColored writes it); covered[j] is how
 // many triangle j has. Returns how many were written.
 constexpr std::size_t kTinyBatchRoom = TinyBatchLanes::kCapacity * (kTinyPixels + 1);
 std::size_t coverTinyBatch(const TinyBatchLanes& batch, std::uint32_t members, bool flat, TinyFragment* out,
-                           std::uint8_t* covered);
+                           std::uint16_t* covered);
 // The same for Phong: the visible surface there, as coverTinySurface writes it, named `owner`.
 std::size_t coverTinyBatch(const TinyBatchLanes& batch, std::uint32_t members, std::uint32_t owner, TinySurface* out,
-                           std::uint8_t* covered);
+                           std::uint16_t* covered);
 
 // A run of triangles of one object, for setting a group of them up at once.
 struct TinyGroupSource {
@@ -73,6 +99,12 @@ struct TinyGroupSource {
   // How many vertices `vertices` holds (0: not known). Up to 2^26 of them, each field of the
   // group's vertices is gathered into lanes at once; beyond, or not known, they are read one by one.
   std::size_t vertexCount = 0;
+  // Multisampling in one pass: the bounds take in every pixel whose samples, this far from its
+  // centre, the triangle may cover (setupTriangle's reach), and the first pixel's tag is times
+  // `samples`.
+  FrameContext::SampleReach reach;
+  int samples = 1;
+  const SubpixelOffset* sampleOffsets = nullptr;  // the frame's `samples` offsets
 };
 
 // How many triangles setupTinyGroup takes at a time on this CPU (at most kCapacity).
@@ -95,8 +127,9 @@ void setupTinyGroup(const TinyGroupSource& source, int count, TinyBatchLanes& la
 template <class Pixel>
 class TinyBatch {
  public:
-  TinyBatch(TinyRuns<Pixel>& out, bool flat, int tilesX, std::uint32_t owner = 0)
-      : out_(out), flat_(flat), tilesX_(tilesX), owner_(owner) {}
+  // Multisampled in one pass, `samples` is the frame's sample count (4, 8 or 16: the standard
+  // pattern, multisamplePattern).
+  TinyBatch(TinyRuns<Pixel>& out, bool flat, int tilesX, std::uint32_t owner = 0, int samples = 1);
   TinyBatch(const TinyBatch&) = delete;
   TinyBatch& operator=(const TinyBatch&) = delete;
 

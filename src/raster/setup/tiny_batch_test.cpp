@@ -194,7 +194,7 @@ TEST(TinyBatch, GroupSetupEqualsOneByOneSetupOnEveryTarget) {
             const int count = std::min(group, triangles - t0);
             const TinyGroupSource source{vertices.data(), indices.data() + 3 * t0, width, height,
                                          tilesX, twoSided, flat, false,
-                                         gathered ? vertices.size() : 0};
+                                         gathered ? vertices.size() : 0, {}, 1};
             TinyBatchLanes lanes, expected;
             int tile[TinyBatchLanes::kCapacity];
             std::uint32_t fast = 0, empty = 0;
@@ -313,7 +313,7 @@ TEST(TinyBatch, GroupAcrossTilesWritesWhatCoveringEachTilesPieceWrites) {
       TinyRuns<TinyFragment> single, batched;
       TinyBatch batch(batched, flat, tilesX);
       const TinyGroupSource source{vertices.data(), indices.data(), width, height, tilesX, false, flat, false,
-                                   vertices.size()};
+                                   vertices.size(), {}, 1};
       takeInGroups(batch, source, triangles, recordsIn, [&](const ShadedVertex& a, const ShadedVertex& b,
                                                             const ShadedVertex& c, bool fast) {
         if (!fast) return;
@@ -373,7 +373,7 @@ TEST(TinyBatch, SurfaceBatchWritesWhatCoveringEachPieceOneByOneWrites) {
       TinyRuns<TinySurface> single, batched;
       TinyBatch batch(batched, false, tilesX, owner);
       const TinyGroupSource source{vertices.data(), indices.data(), width, height, tilesX, twoSided, false, true,
-                                   vertices.size()};
+                                   vertices.size(), {}, 1};
       takeInGroups(batch, source, triangles, recordsIn, [&](const ShadedVertex& a, const ShadedVertex& b,
                                                             const ShadedVertex& c, bool fast) {
         TriangleSetup s;

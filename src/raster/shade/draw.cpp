@@ -32,10 +32,9 @@ DrawTarget::DrawTarget(const FrameContext& frame, const Scene& scene, Framebuffe
     setups.push_back({frame.lights, frame.lightModel, modelOf(o.material, frame.model), o.material});
     colored.push_back(!o.mesh->colors.empty());
     route.push_back(chooseRoute(frame, o, frame.blend && isTranslucent(o)));
-    // Tiny triangles are worked out at setup as the tile would draw them: coloured, or as visible
-    // surface (without vertex colours), in frames of one sample.
-    tiny.push_back(frame.samples.size() <= 1 &&
-                   (route.back() == Route::Colored || (route.back() == Route::Surface && colored.back() == 0)));
+    // Tiny triangles are worked out at setup as the tile would draw them: coloured (at every
+    // sample, multisampled), or as visible surface (without vertex colours).
+    tiny.push_back(route.back() == Route::Colored || (route.back() == Route::Surface && colored.back() == 0));
   }
   // Objects that share a material usually come together: each is compared with the last few
   // owners found, not with every object before it.

@@ -45,8 +45,9 @@ struct DrawTarget {
   // the owner its pixels name in the visible surface, so that a vector of pixels of several such
   // objects is lit in one pass (shadeOwnedPoints lights lanes of one owner at a time).
   std::vector<std::uint32_t> shadeOwner;
-  // Per object: its tiny triangles worked out at setup, without records (tile_raster.h), in frames
-  // of one sample: coloured (Colored), or as visible surface (Surface, without vertex colours).
+  // Per object: its tiny triangles worked out at setup, without records (tile_raster.h): coloured
+  // (Colored, at every sample when multisampled), or as visible surface (Surface, without vertex
+  // colours).
   std::vector<std::uint8_t> tiny;
 
   DrawTarget(const FrameContext& frame, const Scene& scene, Framebuffer& fb, PixelProbe* probe);

@@ -101,16 +101,24 @@ void colorWinners(const DrawTarget& target, std::span<const DrawRecord* const> r
 // Multisampling in one pass: each record's coverage and depth tested at every sample of its
 // pixels (rasterizeSamples: exactly as a pass at that sample would); Colored records coloured once
 // per pixel at its centre as they are found, Deferred ones kept per sample and each record a pixel
-// shows shaded once afterwards.
+// shows shaded once afterwards. Tiny triangles' samples, worked out at setup, are depth-tested
+// where their counts of records put them.
 std::size_t drawMultisampledTile(const DrawTarget& target, std::span<const DrawRecord* const> records,
-                                 const PixelRect& rect, TileScratch& scratch, const SampleTiles& tiles) {
+                                 const TinyPixels& tiny, const PixelRect& rect, TileScratch& scratch,
+                                 const SampleTiles& tiles) {
   std::uint32_t* winners = scratch.winners.data();
   const SamplePlanes planes{tiles.count, target.frame.samples.data(), target.frame.sampleLanes.x,
                             target.frame.sampleLanes.y, tiles.depth, tiles.color, winners};
   std::size_t fragments = 0;
   bool anyWinner = false;
+  const auto writeTiny = [&](std::uint32_t at, const TinyFragment& f) {
+    tiles.color[at] = f.color;
+    if (anyWinner) winners[at] = kNoWinner;
+  };
+  TinyDrawer<TinyFragment, decltype(writeTiny)> tinyFragments(tiny.fragments, tiles.depth, writeTiny);
   VertexColors vertexColors;
   for (std::size_t i = 0; i < records.size(); ++i) {
+    fragments += tinyFragments.drawUpTo(i);
     const DrawRecord& r = *records[i];
 #if !ILLUM_USE_DOUBLE
     if (target.route[r.object] == Route::Colored) {
@@ -121,6 +129,7 @@ std::size_t drawMultisampledTile(const DrawTarget& target, std::span<const DrawR
     fragments += rasterizeSamples(r.setup, rect, planes, std::uint32_t(i));
     anyWinner = true;
   }
+  fragments += tinyFragments.drawUpTo(records.size());
   if (!anyWinner) return fragments;
   colorWinners(target, records, rect, scratch, tiles);
   std::fill_n(winners, kTileBlock * std::size_t(tiles.count), kNoWinner);
@@ -154,7 +163,7 @@ std::size_t drawBlendedTile(const DrawTarget& target, std::span<const DrawRecord
 // record. A pixel holds one of the three: what wins it clears what the others kept there.
 std::size_t drawOpaqueTile(const DrawTarget& target, std::span<const DrawRecord* const> records, const TinyPixels& tiny,
                            const PixelRect& rect, TileScratch& scratch, const SampleTiles& tiles) {
-  if (tiles.count > 1) return drawMultisampledTile(target, records, rect, scratch, tiles);
+  if (tiles.count > 1) return drawMultisampledTile(target, records, tiny, rect, scratch, tiles);
   Real* depth = tiles.depth;
   std::uint32_t* color = tiles.color;
   std::uint32_t* winners = scratch.winners.data();
