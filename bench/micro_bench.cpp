@@ -7,9 +7,12 @@
 #include <illum/render.h>
 #include <illum/scene.h>
 
+#include "image/denoise.h"
+
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <stdexcept>
 #include <memory>
 
 #define STB_IMAGE_WRITE_STATIC
@@ -99,6 +102,29 @@ void BM_EncodePng(benchmark::State& state) {
   state.SetLabel(state.range(0) == 0 ? "libdeflate, sub filter (illum)" : "stb_image_write (before)");
 }
 BENCHMARK(BM_EncodePng)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The path tracer's denoiser on a 1000×600 picture (a noisy path-traced preview's size).
+void BM_Denoise(benchmark::State& state) {
+  Scene scene = defaultScene();
+  scene.width = 1000, scene.height = 600;
+  scene.renderer = RendererKind::Path;
+  scene.rayTracing.samples = 4;
+  scene.rayTracing.denoise = true;
+  FloatImage linear;
+  renderScene(scene, nullptr, nullptr, &linear);  // its layers: the denoiser's input
+  const auto layer = [&](const char* name) -> const std::vector<float>& {
+    for (const FloatLayer& l : linear.layers)
+      if (l.name == name) return l.values;
+    throw std::runtime_error(name);
+  };
+  const std::vector<float> variance(std::size_t(scene.width) * std::size_t(scene.height), 0.01f);
+  std::vector<float> out(linear.rgba.size());
+  for (auto _ : state) {
+    denoise({scene.width, scene.height, layer("beauty"), layer("albedo"), layer("normal"), variance}, out);
+    benchmark::DoNotOptimize(out.data());
+  }
+}
+BENCHMARK(BM_Denoise)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 

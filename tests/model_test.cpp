@@ -7,6 +7,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <iterator>
 #include <cstring>
 #include <numbers>
 
@@ -465,6 +467,34 @@ TEST(ModelAmbientOcclusion, DarkensTheCreviceOfAPreview) {
   EXPECT_GT(darker, 10000u);  // the fins' gaps and the casing's corners
   // The background is the same bytes.
   EXPECT_EQ(std::memcmp(plain.pixel(0, 0), occluded.pixel(0, 0), 4), 0);
+}
+
+// A path-traced preview is denoised by default; its OpenEXR keeps the picture before the filter
+// and the guides as layers; --no-denoise turns it off; the other renderers refuse --denoise.
+TEST(ModelDenoise, OnForPathTracedPreviewsWithItsLayersInTheExr) {
+  const fs::path duck = kModels / "Collada/duck.dae";
+  TempDir dir;
+  const auto render = [&](const std::string& name, const std::string& options) {
+    const auto r = runIllum("render " + duck.string() + " --renderer path --samples 4 --resolution 160,120 -o " +
+                            (dir / name).string() + " " + options);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+  };
+  render("default.png", ""), render("denoised.png", "--denoise"), render("raw.png", "--no-denoise");
+  render("denoised.exr", "");
+  EXPECT_EQ(readPng(dir / "default.png").rgba, readPng(dir / "denoised.png").rgba);
+  EXPECT_NE(readPng(dir / "default.png").rgba, readPng(dir / "raw.png").rgba);
+  std::ifstream exr(dir / "denoised.exr", std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(exr)), std::istreambuf_iterator<char>());
+  for (const char* channel : {"beauty.R", "beauty.A", "albedo.G", "normal.B"})
+    EXPECT_NE(bytes.find(channel), std::string::npos) << channel;
+  const auto raster = runIllum("render " + duck.string() + " --denoise -o " + (dir / "raster.png").string());
+  EXPECT_EQ(raster.exitCode, 2);
+  EXPECT_NE(raster.err.find("--denoise: the path tracer's"), std::string::npos) << raster.err;
+  EXPECT_FALSE(fs::exists(dir / "raster.png"));
+  const auto both = runIllum("render " + duck.string() + " --renderer path --denoise --no-denoise -o " +
+                             (dir / "both.png").string());
+  EXPECT_EQ(both.exitCode, 2);
+  EXPECT_NE(both.err.find("expected one of them"), std::string::npos) << both.err;
 }
 
 TEST(ModelDefaults, StlIsZUpUnlessToldOtherwise) {

@@ -331,6 +331,9 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o, std::vector<std::string>* i
       ->check(finiteRange(double(kMinPrimitiveSize), double(kMaxPrimitiveSize)));
   cmd.add_flag("--ambient-occlusion", o.ambientOcclusion, "Scale the ambient term by ray-traced occlusion (rasterizer)");
   cmd.add_flag("--no-ambient-occlusion", o.noAmbientOcclusion, "No ambient occlusion, even where the scene file asks for it");
+  cmd.add_flag("--denoise", o.denoise,
+               "Path tracer: filter the picture with the feature-guided denoiser [models: on; scenes: their \"denoise\"]");
+  cmd.add_flag("--no-denoise", o.noDenoise, "Path tracer: no denoiser, even where the scene file or a preview would use it");
   cmd.add_option("--up", o.up, "Model files: the up axis, +Y, -Y, +Z, -Z, +X or -X [the file's: +Z for STL and 3DS, FBX's metadata, else +Y]");
   cmd.add_option("--color", o.color, "Model files: draw every surface in this colour R,G,B or #rrggbb");
   cmd.add_option("--opacity", o.opacity, "Model files: every surface's opacity, 0 to 1");
@@ -522,6 +525,12 @@ Scene prepareScene(SceneOptions o, double* loadMs, ModelCache* cache, std::vecto
     scene.lights = cameraLightRig(scene.camera, intensity, rig, true);
     scene.lightModel.ambient = cameraRigAmbient(intensity, rig, true);
   }
+  if (o.denoise && o.noDenoise) throw InputError("--denoise and --no-denoise: expected one of them, not both");
+  if (model && scene.renderer == RendererKind::Path) scene.rayTracing.denoise = true;  // previews look clean
+  if (o.denoise || o.noDenoise) scene.rayTracing.denoise = o.denoise;
+  if (o.denoise && scene.renderer != RendererKind::Path)
+    throw InputError("--denoise: the path tracer's; the rasterizer and the Whitted and Hall tracers draw no noise "
+                     "to remove (use --renderer path)");
   if (model) scene.pointSize = 3;  // a point cloud's 1-pixel points are hard to see in a preview
   if (o.pointSize) scene.pointSize = Real(*o.pointSize);
   if (o.lineWidth) scene.lineWidth = Real(*o.lineWidth);

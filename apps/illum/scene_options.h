@@ -32,6 +32,7 @@ struct SceneOptions {
   bool noBackground = false;
   bool edges = false, grid = false, axes = false;
   bool ambientOcclusion = false, noAmbientOcclusion = false;
+  bool denoise = false, noDenoise = false;
   std::optional<double> pointSize, lineWidth;
   // Model files (f3d's names).
   std::string up, cameraPosition, cameraFocalPoint, cameraViewUp, color;

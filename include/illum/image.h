@@ -23,15 +23,27 @@ struct Image {
 
 // Linear values per pixel before their 8-bit conversion, RGBA floats, rows top to bottom: the
 // radiance the ray and path tracers computed, unclamped (the rasterizer's bytes / 255).
+// Further values of a FloatImage's pixels, under a name: `channels` (3: R, G, B; 4: and A) per
+// pixel, in the same order. OpenEXR output writes them as the layer's channels NAME.R, NAME.G, ...
+struct FloatLayer {
+  std::string name;
+  int channels = 3;
+  std::vector<float> values;
+};
+
 struct FloatImage {
   int width = 0;
   int height = 0;
   std::vector<float> rgba;
+  // The path tracer's, when it denoised `rgba`: "beauty" (its picture before), "albedo" and
+  // "normal" (the denoiser's guides).
+  std::vector<FloatLayer> layers;
   float* pixel(int x, int y) { return &rgba[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * 4]; }
   const float* pixel(int x, int y) const { return &rgba[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * 4]; }
 };
 
-// Encodes linear values as OpenEXR (32-bit float R, G, B, A, ZIP compression) in memory.
+// Encodes linear values as OpenEXR (32-bit float R, G, B, A and the layers' channels, ZIP
+// compression) in memory.
 std::vector<std::uint8_t> encodeExr(const FloatImage& image);
 // Reads an OpenEXR file's R, G, B, A channels (missing ones read as 0). Throws InputError.
 FloatImage readExr(const std::filesystem::path& path);

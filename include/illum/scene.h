@@ -135,7 +135,7 @@ std::optional<RendererKind> parseRendererKind(std::string_view name);
 // The ray tracers' settings (the rasterizer ignores them). Depth and samples are bounded so that
 // no scene can ask for unbounded work.
 constexpr int kMaxRayDepth = 16;
-constexpr int kMaxSamples = 1024;
+constexpr int kMaxSamples = 16384;  // a path-traced reference takes thousands
 struct RayTracing {
   int maxDepth = 5;      // reflected and refracted rays followed this many bounces deep
   bool shadows = true;   // shadow rays towards every light
@@ -143,6 +143,9 @@ struct RayTracing {
   Color3 environment{0};       // the path tracer: radiance arriving from everywhere rays escape to
   // ... or from an equirectangular .hdr image, times `environment` (which is then 1 unless given)
   std::shared_ptr<const EnvironmentMapFile> environmentMap;
+  // The path tracer: its picture filtered by the feature-guided À-trous denoiser (the first
+  // non-specular hit's albedo and normal guide it). Off for scene files unless they say so.
+  bool denoise = false;
 };
 
 // The multisample counts the rasterizer takes.

@@ -12,6 +12,7 @@
 
 #include <cstring>
 #include <exception>
+#include <string>
 
 namespace illum {
 namespace {
@@ -34,12 +35,19 @@ class MemoryStream final : public Imf::OStream {
   std::size_t position_ = 0;
 };
 
+constexpr const char* kChannelNames[4] = {"R", "G", "B", "A"};
+
+// The slices of `channels` interleaved floats per pixel, named `prefix` + R, G, B (, A).
+void insertSlices(Imf::FrameBuffer& fb, const std::string& prefix, const float* base, int channels, int width) {
+  const std::size_t pixel = std::size_t(channels) * sizeof(float), row = pixel * std::size_t(width);
+  for (int c = 0; c < channels; ++c)
+    fb.insert(prefix + kChannelNames[c],
+              Imf::Slice(Imf::FLOAT, const_cast<char*>(reinterpret_cast<const char*>(base + c)), pixel, row));
+}
+
 Imf::FrameBuffer frameBuffer(const float* base, int width) {
   Imf::FrameBuffer fb;
-  const std::size_t pixel = 4 * sizeof(float), row = pixel * std::size_t(width);
-  const char* names[4] = {"R", "G", "B", "A"};
-  for (int c = 0; c < 4; ++c)
-    fb.insert(names[c], Imf::Slice(Imf::FLOAT, const_cast<char*>(reinterpret_cast<const char*>(base + c)), pixel, row));
+  insertSlices(fb, "", base, 4, width);
   return fb;
 }
 
@@ -48,11 +56,17 @@ Imf::FrameBuffer frameBuffer(const float* base, int width) {
 std::vector<std::uint8_t> encodeExr(const FloatImage& image) {
   Imf::Header header(image.width, image.height);
   header.compression() = Imf::ZIP_COMPRESSION;
-  for (const char* name : {"R", "G", "B", "A"}) header.channels().insert(name, Imf::Channel(Imf::FLOAT));
+  for (const char* name : kChannelNames) header.channels().insert(name, Imf::Channel(Imf::FLOAT));
+  Imf::FrameBuffer fb = frameBuffer(image.rgba.data(), image.width);
+  for (const FloatLayer& layer : image.layers) {
+    for (int c = 0; c < layer.channels; ++c)
+      header.channels().insert(layer.name + "." + kChannelNames[c], Imf::Channel(Imf::FLOAT));
+    insertSlices(fb, layer.name + ".", layer.values.data(), layer.channels, image.width);
+  }
   MemoryStream stream;
   {
     Imf::OutputFile file(stream, header);
-    file.setFrameBuffer(frameBuffer(image.rgba.data(), image.width));
+    file.setFrameBuffer(fb);
     file.writePixels(image.height);
   }
   return stream.take();

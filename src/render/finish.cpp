@@ -8,7 +8,7 @@ namespace illum {
 
 void finishRasterPicture(const Scene& scene, RenderStats& stats, Image& image, FloatImage* linear) {
   if (linear) {
-    *linear = FloatImage{image.width, image.height, std::vector<float>(image.rgba.size())};
+    *linear = FloatImage{image.width, image.height, std::vector<float>(image.rgba.size()), {}};
     for (std::size_t i = 0; i < image.rgba.size(); ++i) linear->rgba[i] = float(image.rgba[i]) / 255;
   }
   applyDisplay(image, scene.display, &scene.background);

@@ -469,7 +469,7 @@ Scene parseScene(const std::string& text, const std::string& name, const std::fi
   j.expectObject({"version", "width", "height", "background", "model", "shading", "camera",
                   "light_model", "lights", "objects", "labels", "blend", "renderer", "max_depth", "shadows",
                   "samples", "environment", "environment_map", "tone_map", "encoding", "multisample", "overlays", "ambient_occlusion",
-                  "point_size", "line_width"});
+                  "point_size", "line_width", "denoise"});
   Scene s;
   if (j.has("version") && j.at("version").integer(0, std::numeric_limits<int>::max()) != 1)
     j.at("version").fail("expected version 1");
@@ -537,6 +537,7 @@ Scene parseScene(const std::string& text, const std::string& name, const std::fi
   if (j.has("line_width")) s.lineWidth = j.at("line_width").number(kMinPrimitiveSize, kMaxPrimitiveSize);
   if (j.has("max_depth")) s.rayTracing.maxDepth = j.at("max_depth").integer(0, kMaxRayDepth);
   if (j.has("shadows")) s.rayTracing.shadows = j.at("shadows").boolean();
+  if (j.has("denoise")) s.rayTracing.denoise = j.at("denoise").boolean();
   if (j.has("samples")) s.rayTracing.samples = j.at("samples").integer(1, kMaxSamples);
   if (j.has("environment_map")) {
     const std::filesystem::path file = baseDir / j.at("environment_map").string();

@@ -217,6 +217,7 @@ std::string sceneJson(const Scene& s) {
   j["multisample"] = s.multisample;
   j["max_depth"] = s.rayTracing.maxDepth;
   j["shadows"] = s.rayTracing.shadows;
+  j["denoise"] = s.rayTracing.denoise;
   if (s.rayTracing.samples) j["samples"] = *s.rayTracing.samples;
   if (s.rayTracing.environmentMap)
     j["environment_map"] = std::filesystem::absolute(s.rayTracing.environmentMap->path()).lexically_normal().string();

@@ -37,6 +37,11 @@ PathBsdf::PathBsdf(const Material& material, LightingModel model, const Vec3& no
   specularChance_ = d + s > 0 ? s / (d + s) : 0;
 }
 
+Color3 PathBsdf::albedo() const {
+  if (model_ == LightingModel::CookTorrance) return physical_.baseColor;
+  return glm::min(kd_ + ks_, Color3(1));
+}
+
 BsdfValue PathBsdf::eval(const Vec3& toViewer, const Vec3& toLight) const {
   const Vec3 v = frame_.toLocal(toViewer), l = frame_.toLocal(toLight);
   BsdfValue f;

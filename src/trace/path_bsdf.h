@@ -32,6 +32,9 @@ class PathBsdf {
 
   BsdfValue eval(const Vec3& toViewer, const Vec3& toLight) const;
   Real pdf(const Vec3& toViewer, const Vec3& toLight) const;
+  // What the surface reflects of white light, about: the denoiser's albedo (a dielectric's base
+  // colour, a metal's reflectance; k_d + k_s of a GL material, at most 1).
+  Color3 albedo() const;
   // Chooses a lobe by its expected weight, then a direction from it.
   bool sample(const Vec3& toViewer, Rng& rng, BsdfSample& out) const;
 

@@ -36,7 +36,7 @@ Color3 PathTracer::environment(const Vec3& eyeDirection) const {
 }
 
 Color4 PathTracer::primary(const Ray& primaryRay, const RayHit* primaryHit, const RayCone& primaryCone,
-                           RayCounts& counts, std::uint64_t seed) const {
+                           RayCounts& counts, std::uint64_t seed, PathFeatures* features) const {
   ++counts.primary;
   if (!primaryHit) return scene_.background;
   Rng rng(seed, seed >> 32);
@@ -117,6 +117,13 @@ Color4 PathTracer::primary(const Ray& primaryRay, const RayHit* primaryHit, cons
     const SurfaceOptics& optics = object.optics;
     const Color3 k = optics.transmits() ? optics.transmissive : optics.reflective;
     const Real idealChance = std::clamp(luminance(k), Real(0), Real(1));
+    // The denoiser's guides: this surface, unless it is an ideal mirror or glass and nothing else
+    // (then what is seen through it); a part mirror reflects k of everything besides its BSDF.
+    if (features && idealChance < 1) {
+      features->albedo = (Color3(1) - k) * bsdf.albedo() + k;
+      features->normal = N;
+      features = nullptr;
+    }
     if (idealChance > 0 && rng.uniform() < idealChance) {
       const Vec3 D = -wo;
       const Vec3 facing = glm::dot(h.normal, D) < 0 ? h.normal : -h.normal;

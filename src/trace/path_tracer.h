@@ -20,13 +20,22 @@
 
 namespace illum {
 
+// What the denoiser is guided by: the albedo and the eye-space normal (towards the viewer) where
+// the path first met a surface that is not wholly an ideal mirror or glass; 0 where it met none.
+struct PathFeatures {
+  Color3 albedo{0};
+  Vec3 normal{0};
+};
+
 class PathTracer {
  public:
   PathTracer(const Scene& scene, const RayScene& rays);
 
   // The radiance (unclamped) and alpha seen along a primary ray whose first hit is `hit` (null: a
-  // miss, which shows the background); `seed` picks this pixel sample's random numbers.
-  Color4 primary(const Ray& ray, const RayHit* hit, const RayCone& cone, RayCounts& counts, std::uint64_t seed) const;
+  // miss, which shows the background); `seed` picks this pixel sample's random numbers. With
+  // `features`, the denoiser's guides along this path too.
+  Color4 primary(const Ray& ray, const RayHit* hit, const RayCone& cone, RayCounts& counts, std::uint64_t seed,
+                 PathFeatures* features = nullptr) const;
 
  private:
   // The radiance arriving along an escaping ray (eye-space direction).

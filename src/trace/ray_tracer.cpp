@@ -1,5 +1,6 @@
 #include "trace/ray_tracer.h"
 
+#include "image/denoise.h"
 #include "math/unorm8.h"
 #include "trace/camera_rays.h"
 #include "trace/path_tracer.h"
@@ -36,11 +37,27 @@ struct TileCounts {
   double primarySeconds = 0;
 };
 
+// The path tracer's picture before the denoiser, and its guides: per pixel the mean radiance
+// (RGBA), albedo and normal (RGB), and the variance of the mean's luminance.
+struct DenoiseBuffers {
+  std::vector<float> color, albedo, normal, variance;
+  explicit DenoiseBuffers(std::size_t pixels) : color(4 * pixels), albedo(3 * pixels), normal(3 * pixels), variance(pixels) {}
+};
+
+// What one pixel's samples add up to, for the denoiser.
+struct FeatureSums {
+  Color3 albedo{0};
+  Vec3 normal{0};
+  Real luminance = 0, luminanceSquared = 0;  // of the radiance divided by the albedo (denoise.h)
+};
+
 class TracedFrame {
  public:
-  TracedFrame(const Scene& scene, const RayScene& rays, Image& image, PixelProbe* probe, FloatImage* linear)
-      : scene_(scene), rays_(rays), image_(image), linear_(linear), probe_(probe), camera_(scene.camera, scene.width, scene.height),
-        tracer_(scene, rays) {
+  // With `denoised`, the path tracer's pixels are kept there for the denoiser instead of written.
+  TracedFrame(const Scene& scene, const RayScene& rays, Image& image, PixelProbe* probe, FloatImage* linear,
+              DenoiseBuffers* denoised)
+      : scene_(scene), rays_(rays), image_(image), linear_(linear), probe_(probe), denoised_(denoised),
+        camera_(scene.camera, scene.width, scene.height), tracer_(scene, rays) {
     if (scene.renderer == RendererKind::Path) pathTracer_.emplace(scene, rays);
   }
 
@@ -49,24 +66,43 @@ class TracedFrame {
     const int samples = samplesPerPixel(scene_);
     std::array<Color4, kTile * kTile> sum;
     sum.fill(Color4(0));
+    std::array<FeatureSums, kTile * kTile> features{};
     for (int s = 0; s < samples; ++s)
       for (int by = y0; by < y1; by += kBlock)
-        for (int bx = x0; bx < x1; bx += kBlock) block(bx, by, x1, y1, s, x0, y0, sum, counts);
+        for (int bx = x0; bx < x1; bx += kBlock) block(bx, by, x1, y1, s, x0, y0, sum, features, counts);
     for (int y = y0; y < y1; ++y)
       for (int x = x0; x < x1; ++x) {
-        const Color4 c = sum[std::size_t((y - y0) * kTile + (x - x0))] / Real(samples);
-        std::uint8_t* p = image_.pixel(x, y);
-        for (int k = 0; k < 3; ++k) p[k] = toUnorm8(displayValue(c[k], scene_.display));
-        p[3] = toUnorm8(c[3]);
-        if (linear_)
-          for (int k = 0; k < 4; ++k) linear_->pixel(x, y)[k] = float(c[k]);
+        const std::size_t t = std::size_t((y - y0) * kTile + (x - x0));
+        const Color4 c = sum[t] / Real(samples);
+        if (!denoised_) {
+          writePixel(x, y, c);
+          continue;
+        }
+        const std::size_t i = std::size_t(y) * std::size_t(scene_.width) + std::size_t(x);
+        const FeatureSums& f = features[t];
+        for (int k = 0; k < 4; ++k) denoised_->color[4 * i + std::size_t(k)] = float(c[k]);
+        for (int k = 0; k < 3; ++k) {
+          denoised_->albedo[3 * i + std::size_t(k)] = float(f.albedo[k] / Real(samples));
+          denoised_->normal[3 * i + std::size_t(k)] = float(f.normal[k] / Real(samples));
+        }
+        const Real mean = f.luminance / Real(samples);
+        denoised_->variance[i] = float(std::max(Real(0), f.luminanceSquared / Real(samples) - mean * mean) / Real(samples));
       }
+  }
+
+  // A pixel's mean value as the picture shows it (the scene's display), and as it is (linear).
+  void writePixel(int x, int y, const Color4& c) const {
+    std::uint8_t* p = image_.pixel(x, y);
+    for (int k = 0; k < 3; ++k) p[k] = toUnorm8(displayValue(c[k], scene_.display));
+    p[3] = toUnorm8(c[3]);
+    if (linear_)
+      for (int k = 0; k < 4; ++k) linear_->pixel(x, y)[k] = float(c[k]);
   }
 
  private:
   // One 4×4 packet of primary rays (sample `s` of each pixel), then each hit shaded on its own.
   void block(int bx, int by, int x1, int y1, int s, int x0, int y0, std::array<Color4, kTile * kTile>& sum,
-             TileCounts& counts) const {
+             std::array<FeatureSums, kTile * kTile>& features, TileCounts& counts) const {
     std::array<Ray, 16> rays;
     std::array<bool, 16> active;
     std::array<RayHit, 16> hits;
@@ -99,8 +135,21 @@ class TracedFrame {
       if (pathTracer_) {
         // Radiance is averaged as it is: the mean converges to the rendering equation's solution.
         // (A sample that overflowed, say under an emitter of absurd strength, counts as nothing.)
-        const Color4 radiance = pathTracer_->primary(ray, first, cone, counts.rays, sampleSeed(x, y, s, 3));
-        if (std::isfinite(radiance.r + radiance.g + radiance.b + radiance.a)) pixel += radiance;
+        PathFeatures guides;
+        const Color4 radiance =
+            pathTracer_->primary(ray, first, cone, counts.rays, sampleSeed(x, y, s, 3), denoised_ ? &guides : nullptr);
+        if (!std::isfinite(radiance.r + radiance.g + radiance.b + radiance.a)) continue;
+        pixel += radiance;
+        if (denoised_) {
+          FeatureSums& f = features[std::size_t((y - y0) * kTile + (x - x0))];
+          f.albedo += guides.albedo;
+          f.normal += guides.normal;
+          Color3 demodulated;
+          for (int k = 0; k < 3; ++k) demodulated[k] = radiance[k] / Real(demodulationOf(float(guides.albedo[k])));
+          const Real l = luminance(demodulated);
+          f.luminance += l;
+          f.luminanceSquared += l * l;
+        }
         continue;
       }
       PixelProbe* probe = probe_ && s == 0 && x == probe_->x && y == probe_->y ? probe_ : nullptr;
@@ -120,6 +169,7 @@ class TracedFrame {
   Image& image_;
   FloatImage* linear_;
   PixelProbe* probe_;
+  DenoiseBuffers* denoised_;
   CameraRays camera_;
   WhittedTracer tracer_;
   std::optional<PathTracer> pathTracer_;
@@ -136,8 +186,11 @@ void traceScene(const Scene& scene, Image& image, RenderStats& stats, PixelProbe
   stats.trianglesIn = rays.triangleCount();
   if (image.width != scene.width || image.height != scene.height) image = Image(scene.width, scene.height);
   if (probe) probe->hit = false;
-  if (linear) *linear = FloatImage{scene.width, scene.height, std::vector<float>(std::size_t(scene.width) * std::size_t(scene.height) * 4)};
-  const TracedFrame frame(scene, rays, image, probe, linear);
+  if (linear) *linear = FloatImage{scene.width, scene.height, std::vector<float>(std::size_t(scene.width) * std::size_t(scene.height) * 4), {}};
+  const bool denoising = scene.renderer == RendererKind::Path && scene.rayTracing.denoise;
+  std::optional<DenoiseBuffers> denoised;
+  if (denoising) denoised.emplace(std::size_t(scene.width) * std::size_t(scene.height));
+  const TracedFrame frame(scene, rays, image, probe, linear, denoised ? &*denoised : nullptr);
   const int tilesX = (scene.width + kTile - 1) / kTile, tilesY = (scene.height + kTile - 1) / kTile;
   tbb::combinable<TileCounts> counts;
   std::atomic<int> done{0};
@@ -150,6 +203,21 @@ void traceScene(const Scene& scene, Image& image, RenderStats& stats, PixelProbe
       if (progress) progress(double(++done) / tiles);
     }
   });
+  if (denoised && !(cancel && cancel->load())) {
+    std::vector<float> filtered(denoised->color.size());
+    denoise({scene.width, scene.height, denoised->color, denoised->albedo, denoised->normal, denoised->variance},
+            filtered);
+    for (int y = 0; y < scene.height; ++y)
+      for (int x = 0; x < scene.width; ++x) {
+        const float* c = &filtered[4 * (std::size_t(y) * std::size_t(scene.width) + std::size_t(x))];
+        frame.writePixel(x, y, Color4(c[0], c[1], c[2], c[3]));
+      }
+    if (linear) {
+      linear->layers.push_back({"beauty", 4, std::move(denoised->color)});
+      linear->layers.push_back({"albedo", 3, std::move(denoised->albedo)});
+      linear->layers.push_back({"normal", 3, std::move(denoised->normal)});
+    }
+  }
   counts.combine_each([&](const TileCounts& c) {
     stats.primaryRays += c.rays.primary;
     stats.secondaryRays += c.rays.secondary;

@@ -1,0 +1,192 @@
+// The À-trous denoiser (denoise.h), compiled once per SIMD target (Highway's foreach_target) and
+// dispatched at run time.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "image/denoise.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+
+#include <hwy/highway.h>
+
+#include "image/denoise.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstdlib>
+#include <vector>
+
+#ifndef ILLUM_DENOISE_ONCE
+#define ILLUM_DENOISE_ONCE
+namespace illum {
+namespace {
+
+// The filter's constants, tuned on the Cornell box, the built-in scene and glTF models against
+// 4096-sample references (bench/denoise.sh).
+constexpr int kPasses = 5;
+constexpr float kSigmaColor = 4.0f;    // in standard deviations of the pixel's noise
+constexpr float kSigmaNormal = 0.1f;   // |n_p − n_q| of unit normals
+constexpr float kSigmaAlbedo = 0.02f;  // |a_p − a_q|
+// Pixels around the picture, as far as the widest pass reaches (two taps of 2^(kPasses−1)), whose
+// normal is so far from any unit normal that their weight is exactly 0.
+constexpr int kPad = 2 << (kPasses - 1);
+constexpr float kFarNormal = 1e10f;
+
+// The planes the passes read and write, each padded by kPad on every side.
+struct Planes {
+  int width, height, stride;
+  std::vector<float> color[3], luminance, normal[3], albedo[3], variance;
+  std::size_t at(int x, int y) const { return std::size_t(y + kPad) * std::size_t(stride) + std::size_t(x + kPad); }
+};
+
+}  // namespace
+}  // namespace illum
+#endif
+
+HWY_BEFORE_NAMESPACE();
+namespace illum::HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+// e^x for x ≤ 0 (below −87: 0), of multiplications and additions only (no fused
+// multiply-add), so that every SIMD target gives the same bits: x = k·ln 2 + r, |r| ≤ ln 2 / 2,
+// e^r by its Taylor polynomial to r⁵/120 (relative error below 2e-6: weights), times 2^k from the bits.
+template <class D, class V = hn::VFromD<D>>
+HWY_INLINE V ExpNegative(D d, V x) {
+  const hn::RebindToSigned<D> di;
+  const auto underflows = hn::Lt(x, hn::Set(d, -87.0f));  // e^x below 2^−126: 0
+  x = hn::Max(x, hn::Set(d, -87.0f));
+  const V k = hn::Round(hn::Mul(x, hn::Set(d, 1.44269504088896341f)));
+  // ln 2 in two parts, the first with few enough bits that k·ln2Hi is exact (Cody and Waite).
+  const V r = hn::Sub(hn::Sub(x, hn::Mul(k, hn::Set(d, 0.693145751953125f))), hn::Mul(k, hn::Set(d, 1.42860682030941723e-6f)));
+  V p = hn::Set(d, 1.0f / 120);
+  for (const float c : {1.0f / 24, 1.0f / 6, 0.5f, 1.0f, 1.0f}) p = hn::Add(hn::Mul(p, r), hn::Set(d, c));
+  const auto scale = hn::BitCast(d, hn::ShiftLeft<23>(hn::Add(hn::ConvertTo(di, k), hn::Set(di, 127))));
+  return hn::IfThenZeroElse(underflows, hn::Mul(p, scale));
+}
+
+// One pass over rows [y0, y1): `in` filtered into `out` (colour and variance planes), taps `step`
+// pixels apart.
+void FilterRows(const Planes& in, Planes& out, int step, int y0, int y1) {
+  const hn::ScalableTag<float> d;
+  using V = hn::VFromD<decltype(d)>;
+  const int lanes = int(hn::Lanes(d));
+  constexpr float kB3[5] = {1.0f / 16, 1.0f / 4, 3.0f / 8, 1.0f / 4, 1.0f / 16};
+  const V sigmaColor2 = hn::Set(d, kSigmaColor * kSigmaColor), epsilon = hn::Set(d, 1e-8f);
+  const V invNormal2 = hn::Set(d, 1 / (kSigmaNormal * kSigmaNormal));
+  const V invAlbedo2 = hn::Set(d, 1 / (kSigmaAlbedo * kSigmaAlbedo));
+  const auto squared = [](V a, V b) {
+    const V t = hn::Sub(a, b);
+    return hn::Mul(t, t);
+  };
+  const V kR = hn::Set(d, 0.2126f), kG = hn::Set(d, 0.7152f), kB = hn::Set(d, 0.0722f);
+  const auto luminanceOf = [&](const V (&c)[3]) { return hn::Add(hn::Add(hn::Mul(kR, c[0]), hn::Mul(kG, c[1])), hn::Mul(kB, c[2])); };
+  for (int y = y0; y < y1; ++y)
+    for (int x = 0; x < in.width; x += lanes) {  // the last vector's rest lands in the padding
+      const std::size_t p = in.at(x, y);
+      V c[3], n[3], a[3];
+      for (int k = 0; k < 3; ++k) {
+        c[k] = hn::LoadU(d, in.color[k].data() + p);
+        n[k] = hn::LoadU(d, in.normal[k].data() + p);
+        a[k] = hn::LoadU(d, in.albedo[k].data() + p);
+      }
+      const V l = hn::LoadU(d, in.luminance.data() + p);
+      const V invColor2 = hn::Div(hn::Set(d, 1.0f), hn::Add(hn::Mul(sigmaColor2, hn::LoadU(d, in.variance.data() + p)), epsilon));
+      V sumW = hn::Zero(d), sumV = hn::Zero(d), sum[3] = {hn::Zero(d), hn::Zero(d), hn::Zero(d)};
+      for (int dy = -2; dy <= 2; ++dy)
+        for (int dx = -2; dx <= 2; ++dx) {
+          const std::size_t q = std::size_t(std::ptrdiff_t(p) + std::ptrdiff_t(dy * step) * in.stride + dx * step);
+          V qc[3], dn = hn::Zero(d), da = hn::Zero(d);
+          for (int k = 0; k < 3; ++k) {
+            qc[k] = hn::LoadU(d, in.color[k].data() + q);
+            dn = hn::Add(dn, squared(n[k], hn::LoadU(d, in.normal[k].data() + q)));
+            da = hn::Add(da, squared(a[k], hn::LoadU(d, in.albedo[k].data() + q)));
+          }
+          const V dc = squared(l, hn::LoadU(d, in.luminance.data() + q));
+          const V e = hn::Add(hn::Add(hn::Mul(dc, invColor2), hn::Mul(dn, invNormal2)), hn::Mul(da, invAlbedo2));
+          const V w = hn::Mul(hn::Set(d, kB3[dy + 2] * kB3[dx + 2]), ExpNegative(d, hn::Neg(e)));
+          sumW = hn::Add(sumW, w);
+          for (int k = 0; k < 3; ++k) sum[k] = hn::Add(sum[k], hn::Mul(w, qc[k]));
+          sumV = hn::Add(sumV, hn::Mul(hn::Mul(w, w), hn::LoadU(d, in.variance.data() + q)));
+        }
+      // The centre tap always counts (e = 0): sumW > 0.
+      const V inv = hn::Div(hn::Set(d, 1.0f), sumW);
+      V filtered[3];
+      for (int k = 0; k < 3; ++k) {
+        filtered[k] = hn::Mul(sum[k], inv);
+        hn::StoreU(filtered[k], d, out.color[k].data() + p);
+      }
+      hn::StoreU(luminanceOf(filtered), d, out.luminance.data() + p);
+      hn::StoreU(hn::Mul(sumV, hn::Mul(inv, inv)), d, out.variance.data() + p);
+    }
+}
+
+}  // namespace illum::HWY_NAMESPACE
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace illum {
+
+HWY_EXPORT(FilterRows);
+
+void denoise(const DenoiseInput& in, std::span<float> out) {
+  const int w = in.width, h = in.height;
+  const std::size_t pixels = std::size_t(w) * std::size_t(h);
+  Planes planes[2];
+  for (Planes& p : planes) {
+    p.width = w, p.height = h, p.stride = w + 2 * kPad;
+    const std::size_t size = std::size_t(p.stride) * std::size_t(h + 2 * kPad);
+    for (int k = 0; k < 3; ++k) p.color[k].assign(size, 0.0f);
+    p.luminance.assign(size, 0.0f);
+    p.variance.assign(size, 0.0f);
+  }
+  // The guides (shared by both sets of planes: only colour and variance change from pass to pass).
+  Planes& first = planes[0];
+  const std::size_t size = first.color[0].size();
+  for (int k = 0; k < 3; ++k) first.normal[k].assign(size, kFarNormal), first.albedo[k].assign(size, 0.0f);
+  std::vector<float> divisor(pixels * 3);  // the albedo divided out (1 where it is near black)
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const std::size_t i = std::size_t(y) * std::size_t(w) + std::size_t(x), at = first.at(x, y);
+      for (int k = 0; k < 3; ++k) {
+        const float a = in.albedo[3 * i + std::size_t(k)];
+        divisor[3 * i + std::size_t(k)] = demodulationOf(a);
+        first.color[k][at] = in.color[4 * i + std::size_t(k)] / divisor[3 * i + std::size_t(k)];
+        first.normal[k][at] = in.normal[3 * i + std::size_t(k)];
+        first.albedo[k][at] = a;
+      }
+      first.luminance[at] = 0.2126f * first.color[0][at] + 0.7152f * first.color[1][at] + 0.0722f * first.color[2][at];
+    }
+  // The variance estimated from a pixel's own samples is noisy itself: blurred 3×3 (1 2 1) first,
+  // within the picture.
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      float sum = 0, weight = 0;
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int qx = x + dx, qy = y + dy;
+          if (qx < 0 || qy < 0 || qx >= w || qy >= h) continue;
+          const float k = float((2 - std::abs(dx)) * (2 - std::abs(dy)));
+          sum += k * in.variance[std::size_t(qy) * std::size_t(w) + std::size_t(qx)];
+          weight += k;
+        }
+      first.variance[first.at(x, y)] = sum / weight;
+    }
+  for (int k = 0; k < 3; ++k) planes[1].normal[k] = first.normal[k], planes[1].albedo[k] = first.albedo[k];
+  for (int pass = 0; pass < kPasses; ++pass) {
+    const Planes& from = planes[pass % 2];
+    Planes& to = planes[(pass + 1) % 2];
+    tbb::parallel_for(tbb::blocked_range<int>(0, h, 8), [&](const tbb::blocked_range<int>& rows) {
+      HWY_DYNAMIC_DISPATCH(FilterRows)(from, to, 1 << pass, rows.begin(), rows.end());
+    });
+  }
+  const Planes& last = planes[kPasses % 2];
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const std::size_t i = std::size_t(y) * std::size_t(w) + std::size_t(x), at = last.at(x, y);
+      for (int k = 0; k < 3; ++k) out[4 * i + std::size_t(k)] = last.color[k][at] * divisor[3 * i + std::size_t(k)];
+      out[4 * i + 3] = in.color[4 * i + 3];
+    }
+}
+
+}  // namespace illum
+#endif  // HWY_ONCE

@@ -1,0 +1,39 @@
+// The path tracer's denoiser: the edge-avoiding À-trous wavelet filter of Dammertz, Sewtz, Hanika
+// and Lensch ("Edge-Avoiding À-Trous Wavelet Transform for fast Global Illumination Filtering",
+// HPG 2010), guided by the first non-specular hit's albedo and normal, with the colour's edge
+// stopping scaled by each pixel's estimated variance as in Schied et al.'s SVGF (HPG 2017):
+//   five passes i = 0..4 of a 5×5 B3-spline kernel h whose taps lie 2^i pixels apart,
+//   c'(p) = Σ_q h(q) w(p,q) c(q) / Σ_q h(q) w(p,q),
+//   w(p,q) = exp(−(l_p − l_q)² / (σ_c²·var(p) + ε) − |n_p − n_q|² / σ_n² − |a_p − a_q|² / σ_a²),
+//   (l the colour's luminance; var the variance of its mean, blurred 3×3 before the first pass),
+//   var'(p) = Σ (h w)² var(q) / (Σ h w)²   (the variance of the filtered value, for the next pass).
+// The colour filtered is the radiance divided by the albedo (texture detail is put back after,
+// not blurred), channel by channel where the albedo is not near black (demodulate).
+// SIMD (Highway, with an exponential of plain multiplications and additions, so every target gives
+// the same bits) and threaded by rows: the same input gives the same bytes on every machine and
+// thread count.
+#pragma once
+
+#include <cstddef>
+#include <span>
+
+namespace illum {
+
+// A colour channel divided by the albedo's, unless that is too dark to divide by.
+constexpr float kDenoiseMinAlbedo = 0.02f;
+inline float demodulationOf(float albedo) { return albedo > kDenoiseMinAlbedo ? albedo : 1.0f; }
+
+struct DenoiseInput {
+  int width = 0, height = 0;
+  std::span<const float> color;     // RGBA per pixel: the radiance (linear, unclamped) and alpha
+  std::span<const float> albedo;    // RGB per pixel: the first non-specular hit's albedo (0: none)
+  std::span<const float> normal;    // RGB per pixel: its unit normal (0 where nothing was hit)
+  // Per pixel: the variance of the mean of the samples' luminances, each sample's radiance
+  // divided by its albedo (demodulationOf each channel).
+  std::span<const float> variance;
+};
+
+// The filtered radiance, RGBA per pixel into `out` (width·height·4 floats), alpha as it came.
+void denoise(const DenoiseInput& in, std::span<float> out);
+
+}  // namespace illum

@@ -1,0 +1,126 @@
+#include "image/denoise.h"
+
+#include <gtest/gtest.h>
+#include <hwy/targets.h>
+#include <oneapi/tbb/global_control.h>
+
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+namespace illum {
+namespace {
+
+// A picture of w×h pixels for the denoiser, its guides filled by the callers.
+struct Noisy {
+  int w, h;
+  std::vector<float> color, albedo, normal, variance;
+  Noisy(int width, int height)
+      : w(width), h(height), color(std::size_t(w * h) * 4, 1.0f), albedo(std::size_t(w * h) * 3, 1.0f),
+        normal(std::size_t(w * h) * 3, 0.0f), variance(std::size_t(w * h), 0.0f) {
+    for (std::size_t i = 0; i < std::size_t(w * h); ++i) normal[3 * i + 2] = 1;
+  }
+  std::size_t index(int x, int y) const { return std::size_t(y) * std::size_t(w) + std::size_t(x); }
+  std::vector<float> filtered() const {
+    std::vector<float> out(color.size());
+    denoise({w, h, color, albedo, normal, variance}, out);
+    return out;
+  }
+};
+
+// Deterministic noise in [−1, 1].
+float noise(std::uint32_t i) {
+  i = (i ^ 61u) ^ (i >> 16);
+  i *= 9u;
+  i ^= i >> 4;
+  i *= 0x27d4eb2du;
+  i ^= i >> 15;
+  return float(i) / float(0xFFFFFFFFu) * 2 - 1;
+}
+
+TEST(Denoise, KeepsAConstantPictureAndItsAlpha) {
+  Noisy p(37, 23);
+  for (std::size_t i = 0; i < p.color.size(); i += 4) p.color[i] = 0.25f, p.color[i + 1] = 0.5f, p.color[i + 2] = 2.0f, p.color[i + 3] = 0.5f;
+  const std::vector<float> out = p.filtered();
+  for (std::size_t i = 0; i < out.size(); i += 4) {
+    EXPECT_NEAR(out[i], 0.25f, 1e-6f);
+    EXPECT_NEAR(out[i + 1], 0.5f, 1e-6f);
+    EXPECT_NEAR(out[i + 2], 2.0f, 2e-6f);
+    EXPECT_EQ(out[i + 3], 0.5f);
+  }
+}
+
+TEST(Denoise, RemovesNoiseOnAFlatSurface) {
+  Noisy p(64, 48);
+  const float sigma = 0.1f;
+  double before = 0, after = 0;
+  for (std::size_t i = 0; i < p.variance.size(); ++i) {
+    for (int c = 0; c < 3; ++c) p.color[4 * i + std::size_t(c)] = 0.5f + sigma * noise(std::uint32_t(3 * i) + std::uint32_t(c));
+    p.variance[i] = sigma * sigma / 3;  // of a uniform variable in [−σ, σ]
+    for (int c = 0; c < 3; ++c) before += std::pow(p.color[4 * i + std::size_t(c)] - 0.5, 2);
+  }
+  const std::vector<float> out = p.filtered();
+  for (std::size_t i = 0; i < p.variance.size(); ++i)
+    for (int c = 0; c < 3; ++c) after += std::pow(out[4 * i + std::size_t(c)] - 0.5, 2);
+  EXPECT_LT(after, before / 50) << "mean squared error " << before / double(3 * p.variance.size()) << " → "
+                                << after / double(3 * p.variance.size());
+}
+
+TEST(Denoise, KeepsAnEdgeWhereTheNormalTurns) {
+  // Two walls meeting at x = 32: different normals, different brightness, both noisy.
+  Noisy p(64, 32);
+  for (int y = 0; y < p.h; ++y)
+    for (int x = 0; x < p.w; ++x) {
+      const std::size_t i = p.index(x, y);
+      const bool right = x >= 32;
+      const float value = right ? 0.8f : 0.2f;
+      for (int c = 0; c < 3; ++c) p.color[4 * i + std::size_t(c)] = value + 0.05f * noise(std::uint32_t(3 * i) + std::uint32_t(c));
+      p.variance[i] = 0.05f * 0.05f / 3;
+      p.normal[3 * i] = right ? 1.0f : 0.0f, p.normal[3 * i + 2] = right ? 0.0f : 1.0f;
+    }
+  const std::vector<float> out = p.filtered();
+  for (int y = 0; y < p.h; ++y) {
+    EXPECT_NEAR(out[4 * p.index(31, y)], 0.2f, 0.03f) << "row " << y;
+    EXPECT_NEAR(out[4 * p.index(32, y)], 0.8f, 0.03f) << "row " << y;
+  }
+}
+
+TEST(Denoise, KeepsTextureDetailThroughTheAlbedo) {
+  // A checkerboard texture under even light, without noise: nothing to remove, the pattern stays.
+  Noisy p(32, 32);
+  for (int y = 0; y < p.h; ++y)
+    for (int x = 0; x < p.w; ++x) {
+      const std::size_t i = p.index(x, y);
+      const float a = (x + y) % 2 ? 0.8f : 0.2f;
+      for (int c = 0; c < 3; ++c) p.albedo[3 * i + std::size_t(c)] = a, p.color[4 * i + std::size_t(c)] = 0.7f * a;
+    }
+  const std::vector<float> out = p.filtered();
+  for (std::size_t i = 0; i < p.variance.size(); ++i) EXPECT_NEAR(out[4 * i], p.color[4 * i], 1e-5f) << i;
+}
+
+TEST(Denoise, SameBitsOnEveryThreadCountAndSimdTarget) {
+  Noisy p(70, 45);
+  for (std::size_t i = 0; i < p.variance.size(); ++i) {
+    for (int c = 0; c < 3; ++c) p.color[4 * i + std::size_t(c)] = 1 + noise(std::uint32_t(7 * i) + std::uint32_t(c));
+    p.variance[i] = 0.3f;
+    p.albedo[3 * i] = 0.5f + 0.4f * noise(std::uint32_t(i));
+    p.normal[3 * i] = 0.6f, p.normal[3 * i + 2] = 0.8f * (i % 5 ? 1.0f : -1.0f);
+  }
+  std::vector<float> first;
+  {
+    const tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+    first = p.filtered();
+  }
+  EXPECT_EQ(p.filtered(), first) << "on every thread";
+  int targets = 0;
+  for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+    hwy::SetSupportedTargetsForTest(target);
+    ++targets;
+    EXPECT_EQ(p.filtered(), first) << hwy::TargetName(target);
+  }
+  hwy::SetSupportedTargetsForTest(0);
+  EXPECT_GE(targets, 2);
+}
+
+}  // namespace
+}  // namespace illum
