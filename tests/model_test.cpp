@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <iterator>
@@ -495,6 +496,31 @@ TEST(ModelDenoise, OnForPathTracedPreviewsWithItsLayersInTheExr) {
                              (dir / "both.png").string());
   EXPECT_EQ(both.exitCode, 2);
   EXPECT_NE(both.err.find("expected one of them"), std::string::npos) << both.err;
+}
+
+// The background is a display colour: the same bytes from every renderer, tone map or not (the
+// path tracer's preview is tone mapped, the rasterizer's not), and --background-color's bytes are
+// the colour given.
+TEST(ModelBackground, TheSameBytesFromEveryRendererToneMapOrNot) {
+  const fs::path duck = kModels / "Collada/duck.dae";
+  TempDir dir;
+  for (const std::string colour : {"", "0.5,0.5,0.5", "0.02,0.9,0.3"}) {
+    std::vector<std::array<std::uint8_t, 4>> corners;
+    for (const std::string options : {"--renderer raster", "--renderer raster --tone-map aces", "--renderer whitted",
+                                      "--renderer hall", "--renderer path --samples 4", "--renderer path --samples 4 --no-denoise"}) {
+      const fs::path out = dir / "corner.png";
+      const auto r = runIllum("render " + duck.string() + " --resolution 120,90 -o " + out.string() + " " + options +
+                              (colour.empty() ? "" : " --background-color " + colour));
+      ASSERT_EQ(r.exitCode, 0) << options << ": " << r.err;
+      const Image image = readPng(out);
+      corners.push_back({image.pixel(0, 0)[0], image.pixel(0, 0)[1], image.pixel(0, 0)[2], image.pixel(0, 0)[3]});
+      EXPECT_EQ(corners.back(), corners.front()) << options << " " << colour;
+    }
+    if (colour == "0.02,0.9,0.3") {
+      const std::array<std::uint8_t, 4> given{5, 230, 77, 255};  // round(c·255)
+      EXPECT_EQ(corners.front(), given);
+    }
+  }
 }
 
 TEST(ModelDefaults, StlIsZUpUnlessToldOtherwise) {

@@ -7,6 +7,8 @@
 #include <illum/image.h>
 #include <illum/real.h>
 
+#include <array>
+#include <cstdint>
 #include <optional>
 #include <string_view>
 
@@ -35,10 +37,15 @@ Real srgbDecoded(Real x);
 // The displayed value of a linear colour channel, in [0, 1].
 Real displayValue(Real x, const Display& display);
 
+// The bytes a background pixel has in every renderer's picture: the colour encoded, not tone
+// mapped (a tone map shapes radiance, not the backdrop behind it), round(c·255).
+std::array<std::uint8_t, 4> backgroundBytes(const Vec4& background, const Display& display);
+
 // Re-encodes an 8-bit image whose RGB bytes are linear values (the rasterizer's framebuffer, which
 // is 8-bit as GL's is) through a table of the 256 displayed values. Pixels that hold exactly the
-// `background` colour's bytes get its displayed value computed from the colour itself, so that a
-// background comes out the same from every renderer.
+// `background` colour's bytes get its encoded value computed from the colour itself, without the
+// tone map (which shapes radiance, not the backdrop), so that a background comes out the same
+// bytes from every renderer, tone map or not.
 void applyDisplay(Image& image, const Display& display, const Vec4* background = nullptr);
 
 }  // namespace illum

@@ -60,17 +60,26 @@ Real displayValue(Real x, const Display& display) {
   return display.encoding == Encoding::Srgb ? srgbEncoded(mapped) : mapped;
 }
 
+namespace {
+std::uint8_t byte(Real v) { return std::uint8_t(std::lround(std::clamp(v, Real(0), Real(1)) * 255)); }
+}  // namespace
+
+std::array<std::uint8_t, 4> backgroundBytes(const Vec4& background, const Display& display) {
+  // A tone map shapes radiance, not the backdrop: the background is only encoded.
+  const Display encoding{ToneMap::None, display.encoding};
+  return {byte(displayValue(background.r, encoding)), byte(displayValue(background.g, encoding)),
+          byte(displayValue(background.b, encoding)), byte(background.a)};
+}
+
 void applyDisplay(Image& image, const Display& display, const Vec4* background) {
   if (display.identity()) return;
-  const auto byte = [](Real v) { return std::uint8_t(std::lround(std::clamp(v, Real(0), Real(1)) * 255)); };
   std::array<std::uint8_t, 256> table;
   for (int i = 0; i < 256; ++i) table[std::size_t(i)] = byte(displayValue(Real(i) / 255, display));
   std::array<std::uint8_t, 4> stored{}, shown{};
-  if (background)
-    for (int c = 0; c < 4; ++c) {
-      stored[std::size_t(c)] = byte((*background)[c]);
-      shown[std::size_t(c)] = c < 3 ? byte(displayValue((*background)[c], display)) : stored[std::size_t(c)];
-    }
+  if (background) {
+    for (int c = 0; c < 4; ++c) stored[std::size_t(c)] = byte((*background)[c]);
+    shown = backgroundBytes(*background, display);
+  }
   for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
     if (background && std::equal(stored.begin(), stored.end(), image.rgba.begin() + long(i))) {
       std::copy(shown.begin(), shown.end(), image.rgba.begin() + long(i));

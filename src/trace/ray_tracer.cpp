@@ -1,6 +1,8 @@
 #include "trace/ray_tracer.h"
 
 #include "image/denoise.h"
+
+#include <illum/display.h>
 #include "math/unorm8.h"
 #include "trace/camera_rays.h"
 #include "trace/path_tracer.h"
@@ -37,15 +39,23 @@ struct TileCounts {
   double primarySeconds = 0;
 };
 
-// The path tracer's picture before the denoiser, and its guides: per pixel the mean radiance
-// (RGBA), albedo and normal (RGB), and the variance of the mean's luminance.
+// The path tracer's picture before the denoiser, and its guides: per pixel the mean of all its
+// samples (RGBA, the "beauty" layer), the mean radiance of those that hit something (RGB, and the
+// pixel's alpha) and their share of the samples, albedo and normal (RGB), and the variance of
+// the mean's luminance.
 struct DenoiseBuffers {
-  std::vector<float> color, albedo, normal, variance;
-  explicit DenoiseBuffers(std::size_t pixels) : color(4 * pixels), albedo(3 * pixels), normal(3 * pixels), variance(pixels) {}
+  std::vector<float> beauty, color, coverage, albedo, normal, variance;
+  explicit DenoiseBuffers(std::size_t pixels)
+      : beauty(4 * pixels), color(4 * pixels), coverage(pixels), albedo(3 * pixels), normal(3 * pixels),
+        variance(pixels) {}
 };
 
-// What one pixel's samples add up to, for the denoiser.
-struct FeatureSums {
+// What one pixel's samples add up to: every sample (the background where they miss), and those
+// that hit something apart; for the denoiser, its guides.
+struct PixelSums {
+  Color4 all{0};
+  Color3 hits{0};
+  int hitCount = 0;
   Color3 albedo{0};
   Vec3 normal{0};
   Real luminance = 0, luminanceSquared = 0;  // of the radiance divided by the albedo (denoise.h)
@@ -64,23 +74,26 @@ class TracedFrame {
   void tile(int x0, int y0, TileCounts& counts) const {
     const int x1 = std::min(x0 + kTile, scene_.width), y1 = std::min(y0 + kTile, scene_.height);
     const int samples = samplesPerPixel(scene_);
-    std::array<Color4, kTile * kTile> sum;
-    sum.fill(Color4(0));
-    std::array<FeatureSums, kTile * kTile> features{};
+    std::array<PixelSums, kTile * kTile> sums{};
     for (int s = 0; s < samples; ++s)
       for (int by = y0; by < y1; by += kBlock)
-        for (int bx = x0; bx < x1; bx += kBlock) block(bx, by, x1, y1, s, x0, y0, sum, features, counts);
+        for (int bx = x0; bx < x1; bx += kBlock) block(bx, by, x1, y1, s, x0, y0, sums, counts);
     for (int y = y0; y < y1; ++y)
       for (int x = x0; x < x1; ++x) {
-        const std::size_t t = std::size_t((y - y0) * kTile + (x - x0));
-        const Color4 c = sum[t] / Real(samples);
+        const PixelSums& f = sums[std::size_t((y - y0) * kTile + (x - x0))];
+        const Color4 c = f.all / Real(samples);
+        const Color3 hitMean = f.hitCount > 0 ? f.hits / Real(f.hitCount) : Color3(0);
+        const Real coverage = Real(f.hitCount) / Real(samples);
         if (!denoised_) {
-          writePixel(x, y, c);
+          writePixel(x, y, c, hitMean, coverage);
           continue;
         }
         const std::size_t i = std::size_t(y) * std::size_t(scene_.width) + std::size_t(x);
-        const FeatureSums& f = features[t];
-        for (int k = 0; k < 4; ++k) denoised_->color[4 * i + std::size_t(k)] = float(c[k]);
+        for (int k = 0; k < 4; ++k) {
+          denoised_->beauty[4 * i + std::size_t(k)] = float(c[k]);
+          denoised_->color[4 * i + std::size_t(k)] = float(k < 3 ? hitMean[k] : c[3]);
+        }
+        denoised_->coverage[i] = float(coverage);
         for (int k = 0; k < 3; ++k) {
           denoised_->albedo[3 * i + std::size_t(k)] = float(f.albedo[k] / Real(samples));
           denoised_->normal[3 * i + std::size_t(k)] = float(f.normal[k] / Real(samples));
@@ -90,19 +103,36 @@ class TracedFrame {
       }
   }
 
-  // A pixel's mean value as the picture shows it (the scene's display), and as it is (linear).
-  void writePixel(int x, int y, const Color4& c) const {
+  // A pixel as the picture shows it and as it is (linear): `all` the mean of every sample,
+  // `hitMean` that of the samples that hit something, `coverage` their share. A tone map shapes
+  // radiance, not the background behind it: under one, the tone-mapped radiance is laid over the
+  // background by coverage before the encoding, so that a background pixel has the same bytes from
+  // every renderer, tone map or not. Without one, the mean of all samples is shown, as it is.
+  void writePixel(int x, int y, const Color4& all, const Color3& hitMean, Real coverage) const {
     std::uint8_t* p = image_.pixel(x, y);
-    for (int k = 0; k < 3; ++k) p[k] = toUnorm8(displayValue(c[k], scene_.display));
-    p[3] = toUnorm8(c[3]);
+    const Display& display = scene_.display;
+    if (coverage == 0) {  // the background alone: its bytes from the colour itself, as every renderer's
+      const std::array<std::uint8_t, 4> bytes = backgroundBytes(scene_.background, display);
+      std::copy(bytes.begin(), bytes.end(), p);
+    }
+    for (int k = 0; k < 3 && coverage > 0; ++k) {
+      if (display.toneMap == ToneMap::None) {
+        p[k] = toUnorm8(displayValue(all[k], display));
+        continue;
+      }
+      const Real background = std::clamp(scene_.background[k], Real(0), Real(1));
+      const Real shown = toneMapped(hitMean[k], display.toneMap) * coverage + background * (1 - coverage);
+      p[k] = toUnorm8(displayValue(shown, Display{ToneMap::None, display.encoding}));
+    }
+    if (coverage > 0) p[3] = toUnorm8(all[3]);
     if (linear_)
-      for (int k = 0; k < 4; ++k) linear_->pixel(x, y)[k] = float(c[k]);
+      for (int k = 0; k < 4; ++k) linear_->pixel(x, y)[k] = float(all[k]);
   }
 
  private:
   // One 4×4 packet of primary rays (sample `s` of each pixel), then each hit shaded on its own.
-  void block(int bx, int by, int x1, int y1, int s, int x0, int y0, std::array<Color4, kTile * kTile>& sum,
-             std::array<FeatureSums, kTile * kTile>& features, TileCounts& counts) const {
+  void block(int bx, int by, int x1, int y1, int s, int x0, int y0, std::array<PixelSums, kTile * kTile>& sums,
+             TileCounts& counts) const {
     std::array<Ray, 16> rays;
     std::array<bool, 16> active;
     std::array<RayHit, 16> hits;
@@ -131,7 +161,8 @@ class TracedFrame {
         cone.up = camera_.through(at.x, at.y - 1);
       }
       const RayHit* first = hit.t >= 0 ? &hit : nullptr;
-      Color4& pixel = sum[std::size_t((y - y0) * kTile + (x - x0))];
+      PixelSums& pixel = sums[std::size_t((y - y0) * kTile + (x - x0))];
+      pixel.hitCount += first ? 1 : 0;
       if (pathTracer_) {
         // Radiance is averaged as it is: the mean converges to the rendering equation's solution.
         // (A sample that overflowed, say under an emitter of absurd strength, counts as nothing.)
@@ -139,9 +170,10 @@ class TracedFrame {
         const Color4 radiance =
             pathTracer_->primary(ray, first, cone, counts.rays, sampleSeed(x, y, s, 3), denoised_ ? &guides : nullptr);
         if (!std::isfinite(radiance.r + radiance.g + radiance.b + radiance.a)) continue;
-        pixel += radiance;
+        pixel.all += radiance;
+        if (first) pixel.hits += Color3(radiance);
         if (denoised_) {
-          FeatureSums& f = features[std::size_t((y - y0) * kTile + (x - x0))];
+          PixelSums& f = pixel;
           f.albedo += guides.albedo;
           f.normal += guides.normal;
           Color3 demodulated;
@@ -154,7 +186,9 @@ class TracedFrame {
       }
       PixelProbe* probe = probe_ && s == 0 && x == probe_->x && y == probe_->y ? probe_ : nullptr;
       // Each sample as the display shows it: clamped, then averaged.
-      pixel += glm::clamp(tracer_.primary(ray, first, cone, counts.rays, probe), Color4(0), Color4(1));
+      const Color4 c = glm::clamp(tracer_.primary(ray, first, cone, counts.rays, probe), Color4(0), Color4(1));
+      pixel.all += c;
+      if (first) pixel.hits += Color3(c);
     }
   }
 
@@ -204,16 +238,22 @@ void traceScene(const Scene& scene, Image& image, RenderStats& stats, PixelProbe
     }
   });
   if (denoised && !(cancel && cancel->load())) {
+    // The radiance of the samples that hit something is filtered (the background stays out of
+    // it), then laid over the background by each pixel's coverage.
     std::vector<float> filtered(denoised->color.size());
     denoise({scene.width, scene.height, denoised->color, denoised->albedo, denoised->normal, denoised->variance},
             filtered);
     for (int y = 0; y < scene.height; ++y)
       for (int x = 0; x < scene.width; ++x) {
-        const float* c = &filtered[4 * (std::size_t(y) * std::size_t(scene.width) + std::size_t(x))];
-        frame.writePixel(x, y, Color4(c[0], c[1], c[2], c[3]));
+        const std::size_t i = std::size_t(y) * std::size_t(scene.width) + std::size_t(x);
+        const float* c = &filtered[4 * i];
+        const Real coverage = denoised->coverage[i];
+        const Color3 hitMean(c[0], c[1], c[2]);
+        const Color3 all = hitMean * coverage + Color3(scene.background) * (1 - coverage);
+        frame.writePixel(x, y, Color4(all, c[3]), hitMean, coverage);
       }
     if (linear) {
-      linear->layers.push_back({"beauty", 4, std::move(denoised->color)});
+      linear->layers.push_back({"beauty", 4, std::move(denoised->beauty)});
       linear->layers.push_back({"albedo", 3, std::move(denoised->albedo)});
       linear->layers.push_back({"normal", 3, std::move(denoised->normal)});
     }
@@ -225,11 +265,9 @@ void traceScene(const Scene& scene, Image& image, RenderStats& stats, PixelProbe
     stats.primaryRaySeconds += c.primarySeconds;
   });
   // Pixels unlike the background, as the rasterizer counts them.
-  Color4 background = glm::clamp(scene.background, Color4(0), Color4(1));
-  std::uint8_t bg[4];
-  for (int k = 0; k < 4; ++k) bg[k] = toUnorm8(k < 3 ? displayValue(background[k], scene.display) : background[k]);
+  const std::array<std::uint8_t, 4> bg = backgroundBytes(scene.background, scene.display);
   for (std::size_t i = 0; i < image.rgba.size(); i += 4)
-    if (std::memcmp(&image.rgba[i], bg, 4) != 0) ++stats.pixelsDrawn;
+    if (std::memcmp(&image.rgba[i], bg.data(), 4) != 0) ++stats.pixelsDrawn;
 }
 
 }  // namespace illum
