@@ -10,7 +10,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <regex>
+#include <set>
 #include <sstream>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -105,6 +107,44 @@ TEST(Docs, EveryLinkAndModelPathExists) {
     for (std::sregex_iterator it(text.begin(), text.end(), example), end; it != end; ++it)
       EXPECT_TRUE(fs::exists(kRepo / std::string((*it)[1]))) << doc.filename() << " names " << (*it)[1];
   }
+}
+
+// Every picture the docs show is what its command draws, byte for byte, or is marked as an
+// illustration and says where it comes from (docs/images/sources.txt); no picture goes unlisted.
+TEST(Docs, EveryPictureIsWhatItsCommandDraws) {
+  std::map<std::string, std::string> sources;  // picture → its illum arguments, or "illustration: ..."
+  {
+    std::ifstream in(kRepo / "docs/images/sources.txt");
+    std::string line;
+    while (std::getline(in, line)) {
+      if (line.empty() || line[0] == '#') continue;
+      const std::size_t colon = line.find(": ");
+      ASSERT_NE(colon, std::string::npos) << "sources.txt: " << line;
+      sources[line.substr(0, colon)] = line.substr(colon + 2);
+    }
+  }
+  const std::regex image(R"(docs/images/([A-Za-z0-9_]+\.png))");
+  std::set<std::string> shown;
+  for (const fs::path& doc : documents()) {
+    std::ifstream in(doc);
+    const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    for (std::sregex_iterator it(text.begin(), text.end(), image), end; it != end; ++it) shown.insert((*it)[1]);
+  }
+  for (const std::string& name : shown) EXPECT_TRUE(sources.count(name)) << name << " is not in docs/images/sources.txt";
+  illum::test::TempDir dir;
+  int drawn = 0;
+  for (const auto& [name, source] : sources) {
+    EXPECT_TRUE(fs::exists(kRepo / "docs/images" / name)) << name;
+    if (source.rfind("illustration: ", 0) == 0) continue;
+    const std::string out = (dir / name).string();
+    const std::string args = std::regex_replace(source, std::regex(R"(\bOUT\b)"), out);
+    const auto r = illum::test::runShell("cd '" + kRepo.string() + "' && " + ILLUM_CLI + " " + args + " --quiet");
+    ASSERT_EQ(r.exitCode, 0) << name << ": illum " << args << "\n" << r.err;
+    EXPECT_TRUE(illum::test::slurp(out) == illum::test::slurp(kRepo / "docs/images" / name))
+        << name << " is not what `illum " << source << "` draws now: run scripts/pictures.sh " << name;
+    ++drawn;
+  }
+  EXPECT_GE(drawn, 10);
 }
 
 }  // namespace
