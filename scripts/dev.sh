@@ -11,7 +11,7 @@ cd "$(dirname "$0")/.."
 PACKAGES=(
   g++ cmake make pkg-config
   libglm-dev nlohmann-json3-dev libcli11-dev libstb-dev libassimp-dev libdeflate-dev libtbb-dev libhwy-dev libembree-dev libopenexr-dev
-  libgif-dev libwebp-dev
+  libgif-dev libwebp-dev libjpeg62-turbo-dev
   libsdl2-dev libimgui-dev
   slurmctld slurmd slurm-client munge
   libgtest-dev libbenchmark-dev libosmesa6-dev assimp-testmodels fonts-dejavu-core

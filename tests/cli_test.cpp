@@ -8,9 +8,11 @@
 #include <nlohmann/json.hpp>
 
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <vector>
 #include <sys/wait.h>
 
 namespace {
@@ -241,6 +243,69 @@ TEST(CliOutput, DevStdoutCarriesOnlyThePng) {
   ASSERT_GT(r.out.size(), 8u);
   EXPECT_EQ(r.out.substr(1, 3), "PNG");
   EXPECT_EQ(r.out.substr(r.out.size() - 8, 4), "IEND");  // nothing printed after the image
+}
+
+// An output's extension says its format, for one picture, a batch's pictures and a sheet alike;
+// a format illum does not write is refused before anything is drawn.
+TEST(CliOutput, EveryOutputNameMeansItsFormat) {
+  TempDir dir;
+  const auto render = [&](const std::string& name, const std::string& options = "") {
+    const RunResult r = run("render --resolution 64,48 -o " + (dir / name).string() + " " + options);
+    EXPECT_EQ(r.exitCode, 0) << name << ": " << r.err;
+    return slurp(dir / name);
+  };
+  const std::string png = render("a.png"), jpg = render("a.jpg"), jpeg = render("a.JPEG"), webp = render("a.webp"),
+                    lossy = render("lossy.webp", "--quality 80"), gif = render("a.gif"), exr = render("a.exr");
+  EXPECT_EQ(png.substr(1, 3), "PNG");
+  EXPECT_EQ(jpg.substr(0, 3), "\xFF\xD8\xFF");
+  EXPECT_EQ(jpeg.substr(0, 3), "\xFF\xD8\xFF");
+  EXPECT_EQ(webp.substr(0, 4) + webp.substr(8, 8), "RIFFWEBPVP8L");  // lossless
+  EXPECT_EQ(lossy.substr(8, 8), "WEBPVP8 ");                          // lossy, with --quality
+  EXPECT_EQ(gif.substr(0, 6), "GIF89a");
+  EXPECT_EQ(exr.substr(0, 4), "\x76\x2F\x31\x01");
+  // The JPEG is the picture (within its compression); the GIF keeps the background's exact colour.
+  const illum::Image picture = illum::readPng(dir / "a.png"), fromJpeg = illum::readPng(dir / "a.jpg");
+  const illum::Image fromGif = illum::readPng(dir / "a.gif");
+  double difference = 0;
+  for (std::size_t i = 0; i < picture.rgba.size(); i += 4)
+    for (std::size_t c = 0; c < 3; ++c) difference += std::abs(int(picture.rgba[i + c]) - int(fromJpeg.rgba[i + c]));
+  EXPECT_LT(difference / double(picture.rgba.size() / 4 * 3), 4.0);
+  EXPECT_EQ(std::vector<std::uint8_t>(fromGif.pixel(0, 0), fromGif.pixel(0, 0) + 4),
+            std::vector<std::uint8_t>(picture.pixel(0, 0), picture.pixel(0, 0) + 4));
+  // A turntable's GIF too, frame by frame.
+  const RunResult turntable = run("render --resolution 64,48 --turntable 3 -o " + (dir / "turn.gif").string());
+  ASSERT_EQ(turntable.exitCode, 0) << turntable.err;
+  const illum::Image firstFrame = illum::readPng(dir / "turn.gif");
+  EXPECT_EQ(std::vector<std::uint8_t>(firstFrame.pixel(0, 0), firstFrame.pixel(0, 0) + 4),
+            std::vector<std::uint8_t>(picture.pixel(0, 0), picture.pixel(0, 0) + 4));
+  // Sheets too.
+  const RunResult sheet = run("compare --resolution 64,48 --cols shininess=1,8 -o " + (dir / "sheet.jpg").string());
+  ASSERT_EQ(sheet.exitCode, 0) << sheet.err;
+  EXPECT_EQ(slurp(dir / "sheet.jpg").substr(0, 3), "\xFF\xD8\xFF");
+}
+
+TEST(CliOutput, FormatsIllumDoesNotWriteAreRefusedBeforeDrawing) {
+  TempDir dir;
+  for (const std::string name : {"still.tif", "still.bmp", "still.TGA"}) {
+    const RunResult r = run("render --resolution 64,48 -o " + (dir / name).string());
+    EXPECT_EQ(r.exitCode, 2) << name;
+    EXPECT_NE(r.err.find("illum does not write"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(".png, .jpg"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir / name));
+  }
+  const RunResult batch = run("render examples/first_light.json examples/shininess.json -o '" + (dir / "{stem}.bmp").string() + "'");
+  EXPECT_EQ(batch.exitCode, 2) << batch.err;
+  EXPECT_EQ(dir.fileCount(), 0u);
+  const RunResult quality = run("render --resolution 64,48 --quality 50 -o " + (dir / "a.png").string());
+  EXPECT_EQ(quality.exitCode, 2);
+  EXPECT_NE(quality.err.find("--quality: only .jpg and .webp"), std::string::npos) << quality.err;
+  const RunResult video = run("render --resolution 64,48 -o " + (dir / "a.mp4").string());
+  EXPECT_EQ(video.exitCode, 2);
+  EXPECT_NE(video.err.find("--turntable"), std::string::npos) << video.err;
+  const RunResult sheet = run("history -o " + (dir / "sheet.exr").string());
+  EXPECT_EQ(sheet.exitCode, 2);
+  EXPECT_NE(sheet.err.find("a sheet is one 8-bit picture"), std::string::npos) << sheet.err;
+  EXPECT_EQ(dir.fileCount(), 0u);
 }
 
 TEST(CliOutput, QuietPrintsNothing) {

@@ -3,6 +3,7 @@
 // on (unless --fail-fast); every picture is written atomically; Ctrl-C stops after the picture in
 // hand; --shard I/N renders one slice of the list, for cluster job arrays.
 #include <illum/animation.h>
+#include <illum/display.h>
 #include <illum/error.h>
 #include <illum/image.h>
 #include <illum/output_file.h>
@@ -10,6 +11,7 @@
 #include <illum/file_names.h>
 
 #include "output_guard.h"
+#include "output_format.h"
 #include "render_options.h"
 #include "stdin_input.h"
 
@@ -44,10 +46,10 @@ void onInterrupt(int) {
   std::signal(SIGINT, SIG_DFL);
 }
 
-enum class Container { Png, Gif, Webp, Mp4 };
-Container containerOf(const std::string& path) {
-  const std::string ext = lowerExtension(path);
-  return ext == ".gif" ? Container::Gif : ext == ".webp" ? Container::Webp : ext == ".mp4" ? Container::Mp4 : Container::Png;
+// Whether a job's frames go into one file: an .mp4 always, a .gif or .webp when there are several
+// (one frame of them is a still picture).
+bool isAnimation(OutputFormat format, int frames) {
+  return format == OutputFormat::Mp4 || (frames > 1 && (format == OutputFormat::Gif || format == OutputFormat::Webp));
 }
 
 bool onPath(const char* program) {
@@ -105,15 +107,16 @@ class Mp4Encoder final : public AnimationEncoder {
   FILE* pipe_ = nullptr;
 };
 
-std::unique_ptr<AnimationEncoder> makeEncoder(Container container, const Image& first, int fps) {
+std::unique_ptr<AnimationEncoder> makeEncoder(OutputFormat format, const Image& first, int fps,
+                                             const std::array<std::uint8_t, 3>& background) {
   const int delay = 1000 / std::max(1, fps);
-  switch (container) {
-    case Container::Gif: return makeGifEncoder(first.width, first.height, delay);
-    case Container::Webp: return makeWebpEncoder(first.width, first.height, delay);
-    case Container::Mp4: return std::make_unique<Mp4Encoder>(first.width, first.height, fps);
-    case Container::Png: break;
+  switch (format) {
+    case OutputFormat::Gif: return makeGifEncoder(first.width, first.height, delay, background);
+    case OutputFormat::Webp: return makeWebpEncoder(first.width, first.height, delay);
+    case OutputFormat::Mp4: return std::make_unique<Mp4Encoder>(first.width, first.height, fps);
+    default: break;
   }
-  throw Error("a PNG is not an animation");
+  throw Error(std::string("a ") + formatName(format) + " is not an animation");
 }
 
 // Turns the camera (turntable) or the first light (orbit) about the camera's up axis through the
@@ -178,7 +181,7 @@ double msBetween(Clock::time_point a, Clock::time_point b) { return std::chrono:
 // The files a job writes: one animation, or one picture per frame.
 std::vector<std::string> outputNames(const RenderOptions& o, const BatchJob& job, const OutputPattern& out) {
   const int frames = std::max({1, o.turntable, o.orbitLight});
-  const bool animation = containerOf(out.name(job, 0)) != Container::Png;
+  const bool animation = isAnimation(outputFormatOf(out.name(job, 0)), frames);
   std::vector<std::string> names;
   for (int f = 0; f < (animation ? 1 : frames); ++f) names.push_back(out.name(job, f));
   return names;
@@ -231,8 +234,10 @@ JobResult renderJob(const RenderOptions& o, const BatchJob& job, const std::stri
                     Renderer& renderer, ModelCache& cache, std::optional<ReadAhead> ahead) {
   JobResult result;
   const int frames = std::max({1, o.turntable, o.orbitLight});
-  const Container container = containerOf(out.name(job, 0));
-  const bool animation = container != Container::Png;
+  const OutputFormat format = outputFormatOf(out.name(job, 0));
+  const bool animation = isAnimation(format, frames);
+  if (o.bitDepth == 16 && format != OutputFormat::Png)
+    throw InputError("--bit-depth 16: PNG only (OpenEXR is 32-bit float already; JPEG, WebP and GIF are 8-bit)");
   if (frames > 1 && !animation && out.pattern.find("{frame") == std::string::npos)
     throw InputError("-o: " + std::to_string(frames) + " frames need {frame} in the name (\"{stem}_{frame:03}.png\"), or a "
                      ".gif, .webp or .mp4 output");
@@ -266,29 +271,26 @@ JobResult renderJob(const RenderOptions& o, const BatchJob& job, const std::stri
     const auto loaded = Clock::now();
     Image image;
     RenderStats stats;
-    if (o.bitDepth == 16 && !animation) {
-      FloatImage linear;
-      renderer.render(scene, image, &stats, nullptr, &linear);
-      const auto rendered = Clock::now();
-      writeOutputFile(names[std::size_t(f)], encodePng16(image.width, image.height, picture16(scene, linear)), OutputOptions{o.force});
-      ++result.framesDone;
-      result.encodeMs += msBetween(rendered, Clock::now());
-      result.renderMs += msBetween(loaded, rendered);
+    // OpenEXR and 16-bit PNG take the linear values; the rest the picture's bytes.
+    const bool linearOut = !animation && (format == OutputFormat::Exr || o.bitDepth == 16);
+    FloatImage linear;
+    renderer.render(scene, image, &stats, nullptr, linearOut ? &linear : nullptr);
+    const auto rendered = Clock::now();
+    result.renderMs += msBetween(loaded, rendered);
+    const std::array<std::uint8_t, 4> bg = backgroundBytes(scene.background, scene.display);
+    const std::array<std::uint8_t, 3> background{bg[0], bg[1], bg[2]};
+    if (animation) {
+      if (!encoder) encoder = makeEncoder(format, image, o.fps, background);
+      encoder->add(image);
     } else {
-      renderer.render(scene, image, &stats);
-      const auto rendered = Clock::now();
-      result.renderMs += msBetween(loaded, rendered);
-      if (animation) {
-        if (!encoder) encoder = makeEncoder(container, image, o.fps);
-        encoder->add(image);
-        ++result.framesDone;
-        result.encodeMs += msBetween(rendered, Clock::now());
-      } else {
-        writeOutputFile(names[std::size_t(f)], encodePng(image), OutputOptions{o.force});
-        ++result.framesDone;
-        result.encodeMs += msBetween(rendered, Clock::now());
-      }
+      const std::vector<std::uint8_t> bytes =
+          format == OutputFormat::Exr ? encodeExr(linear)
+          : o.bitDepth == 16          ? encodePng16(image.width, image.height, picture16(scene, linear))
+                                      : encodeStill(format, image, o.quality, background);
+      writeOutputFile(names[std::size_t(f)], bytes, OutputOptions{o.force});
     }
+    ++result.framesDone;
+    result.encodeMs += msBetween(rendered, Clock::now());
     result.loadMs += msBetween(start, loaded);
     result.triangles = stats.trianglesIn;
     result.points = result.lines = 0;
@@ -336,6 +338,8 @@ int runBatch(const RenderOptions& o, const std::vector<BatchJob>& allJobs) {
   if (!isTemplate(out.pattern) && allJobs.size() > 1)
     throw InputError("-o " + out.pattern + ": " + std::to_string(allJobs.size()) +
                      " inputs need different names: use a template such as '{stem}.png' (fields {stem} {name} {ext} {dir} {n} {frame})");
+  // What the outputs' names mean, before anything is drawn (a template's {ext} is each job's).
+  if (out.pattern.find("{ext}") == std::string::npos) checkQuality(outputFormatOf(out.pattern), o.quality);
   if (!o.outputDir.empty() && fs::path(out.pattern).is_absolute())
     throw InputError("-o " + out.pattern + " and --output-dir " + o.outputDir +
                      ": an absolute output name ignores the output folder; expected one of them");
@@ -343,7 +347,7 @@ int runBatch(const RenderOptions& o, const std::vector<BatchJob>& allJobs) {
   // write one file (nor one through a link to another's).
   OutputGuard guard;
   for (const BatchJob& job : allJobs)
-    if (job.input != "-") guard.protect(job.input);
+    if (job.input != "-" && !job.input.empty()) guard.protect(job.input);
   for (const BatchJob& job : allJobs)
     for (const std::string& name : outputNames(o, job, out)) {
       guard.checkNotInput(name);
@@ -411,7 +415,8 @@ int runBatch(const RenderOptions& o, const std::vector<BatchJob>& allJobs) {
       inputErrors += input;
       line["ok"] = false;
       line["error"] = e.what();
-      const std::string what = e.what(), name = job.input == "-" ? "standard input" : job.input;
+      const std::string what = e.what(),
+                        name = job.input == "-" ? "standard input" : job.input.empty() ? "the built-in scene" : job.input;
       progress.say("illum: error: " + (what.rfind(name, 0) == 0 ? "" : name + ": ") + what);
     }
     ++done;

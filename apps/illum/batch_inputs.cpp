@@ -136,7 +136,8 @@ std::string OutputPattern::name(const BatchJob& job, int frame) const {
 }
 
 std::string expandTemplate(const std::string& pattern, const BatchJob& job, int frame, bool confined) {
-  const fs::path in = job.input == "-" ? fs::path("stdin") : fs::path(job.input);
+  // Standard input is named stdin, the built-in scene (no input) illum, as its one picture is.
+  const fs::path in = job.input == "-" ? fs::path("stdin") : job.input.empty() ? fs::path("illum") : fs::path(job.input);
   std::string out;
   for (std::size_t i = 0; i < pattern.size();) {
     if (pattern[i] != '{') {

@@ -36,6 +36,7 @@ std::string figures(const DifferencePanel& d) {
 }
 
 int runCompare(const CompareOptions& o) {
+  checkSheetOutput(o.out);
   const ThreadLimit limit(o.scene);
   ModelCache cache;
   SceneOptions base = o.scene;

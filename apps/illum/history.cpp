@@ -59,6 +59,7 @@ void lightFromTheEye(Scene& scene) {
 }
 
 int runHistory(const HistoryOptions& o) {
+  checkSheetOutput(o.out);
   const ThreadLimit limit(o.scene);
   if (!o.scene.model.empty() || !o.scene.shading.empty() || !o.scene.renderer.empty())
     throw InputError("--model, --shading and --renderer: the history sets them panel by panel; use `illum render` for one");

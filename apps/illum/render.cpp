@@ -1,5 +1,6 @@
 // `illum render [SCENE.json | MODEL] [-o OUT.png]`: render a scene file, a model file (any format
 // assimp reads, framed and lit automatically), or with neither the built-in scene, to PNG.
+#include <illum/display.h>
 #include <illum/error.h>
 #include <illum/image.h>
 #include <illum/output_file.h>
@@ -11,6 +12,7 @@
 #include "commands.h"
 #include "output_guard.h"
 #include "pixel_report.h"
+#include "output_format.h"
 #include "render_options.h"
 #include "scene_options.h"
 #include "stdin_input.h"
@@ -19,6 +21,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <chrono>
 #include <filesystem>
@@ -64,11 +67,14 @@ class ProgressLine {
   bool shown_ = false;
 };
 
-bool isExrPath(const std::string& path) {
-  return lowerExtension(path) == ".exr";
-}
-
 int renderPicture(const RenderOptions& o) {
+  // What the output's name means, before anything is read or drawn.
+  const OutputFormat format = outputFormatOf(o.output);
+  checkQuality(format, o.quality);
+  if (format == OutputFormat::Mp4)
+    throw InputError("-o " + o.output + ": an .mp4 is a video of several frames: add --turntable N or --orbit-light N");
+  if (o.bitDepth == 16 && format != OutputFormat::Png)
+    throw InputError("--bit-depth 16: PNG only (OpenEXR is 32-bit float already; JPEG, WebP and GIF are 8-bit)");
   const ThreadLimit limit(o.scene);
   double loadMs = 0;
   Scene scene = prepareScene(o.scene, &loadMs);
@@ -88,10 +94,9 @@ int renderPicture(const RenderOptions& o) {
     probe->x = parseInteger("--debug-pixel", o.debugPixel.substr(0, comma), 0, scene.width - 1);
     probe->y = parseInteger("--debug-pixel", o.debugPixel.substr(comma + 1), 0, scene.height - 1);
   }
-  // A .exr output gets the linear values, unclamped (OpenEXR); anything else a PNG.
-  const bool exr = isExrPath(o.output);
+  // A .exr output gets the linear values, unclamped (OpenEXR); the others the picture's bytes.
+  const bool exr = format == OutputFormat::Exr;
   if (o.bitDepth != 8 && o.bitDepth != 16) throw InputError("--bit-depth: expected 8 or 16, got " + std::to_string(o.bitDepth));
-  if (o.bitDepth == 16 && exr) throw InputError("--bit-depth: OpenEXR output is 32-bit float already; drop --bit-depth 16");
   const bool deep = o.bitDepth == 16;
   FloatImage linear;
   Renderer renderer;
@@ -119,9 +124,11 @@ int renderPicture(const RenderOptions& o) {
     if (std::fwrite(png.data(), 1, png.size(), stdout) != png.size() || std::fflush(stdout) != 0)
       throw Error("cannot write the PNG to standard output");
   } else {
-    const std::vector<std::uint8_t> bytes = exr    ? encodeExr(linear)
-                                            : deep ? encodePng16(image.width, image.height, picture16(scene, linear))
-                                                   : encodePng(image);
+    const std::array<std::uint8_t, 4> background = backgroundBytes(scene.background, scene.display);
+    const std::vector<std::uint8_t> bytes =
+        exr    ? encodeExr(linear)
+        : deep ? encodePng16(image.width, image.height, picture16(scene, linear))
+               : encodeStill(format, image, o.quality, std::array{background[0], background[1], background[2]});
     encoded = Clock::now();
     writeOutputFile(o.output, bytes, OutputOptions{o.force});
   }
@@ -136,14 +143,14 @@ int renderPicture(const RenderOptions& o) {
                  loadMs, std::string(toString(scene.renderer)).c_str(), scene.width, scene.height, ms(loaded, rendered),
                  withThousands(stats.trianglesIn).c_str(), stats.bvhMs, withThousands(stats.primaryRays).c_str(),
                  withThousands(stats.secondaryRays).c_str(), withThousands(stats.shadowRays).c_str(), limit.threads(),
-                 exr ? "EXR" : "PNG", ms(rendered, encoded), peakMemoryMiB());
+                 formatName(format), ms(rendered, encoded), peakMemoryMiB());
   } else if (o.scene.verbose) {
     std::fprintf(stderr,
                  "illum: loaded in %.1f ms; rendered %dx%d in %.1f ms (%s triangles in, %s drawn, %s fragments shaded; "
                  "%d threads, %s); %s encoded in %.1f ms; peak memory %.0f MiB\n",
                  loadMs, scene.width, scene.height, ms(loaded, rendered),
                  withThousands(stats.trianglesIn).c_str(), withThousands(stats.trianglesDrawn).c_str(),
-                 withThousands(stats.fragmentsShaded).c_str(), limit.threads(), simdTarget(), exr ? "EXR" : "PNG",
+                 withThousands(stats.fragmentsShaded).c_str(), limit.threads(), simdTarget(), formatName(format),
                  ms(rendered, encoded), peakMemoryMiB());
   }
   if (toStdout) return 0;
@@ -160,6 +167,8 @@ int runRender(RenderOptions o) {
     throw InputError("-: standard input can be read once");
   if (isBatch(o)) {
     if (!o.saveScene.empty()) throw InputError("--save-scene: writes the scene of one picture, not of a batch");
+    // No input: the built-in scene's turntable (or orbit) is a batch of one job too.
+    if (o.inputs.empty()) jobs.push_back({"", 0, ""});
     return runBatch(o, jobs);
   }
   if (o.output.empty()) o.output = "illum.png";
@@ -180,9 +189,12 @@ Command addRenderCommand(CLI::App& app) {
       "Colours are R,G,B in [0,1] or #rrggbb; both are written to the image as they are (docs/cli.md).");
   addSceneOptions(*cmd, o->scene, &o->inputs);
   cmd->add_option("-o,--output", o->output,
-                  "Output PNG [illum.png], or OpenEXR (linear, unclamped) when it ends in .exr; written atomically; - for "
-                  "standard output (PNG). Many inputs: a template [{stem}.png] of {stem} {name} {ext} {dir} {n} {frame}; "
-                  "turntables: .gif, .webp, .mp4 (ffmpeg) or PNGs named with {frame}");
+                  "Output picture [illum.png]: its extension says its format, .png, .jpg/.jpeg, .webp (lossless), .gif, "
+                  "or .exr (linear, unclamped); written atomically; - for standard output (PNG). Many inputs: a template "
+                  "[{stem}.png] of {stem} {name} {ext} {dir} {n} {frame}; turntables: .gif, .webp, .mp4 (ffmpeg) or "
+                  "pictures named with {frame}");
+  cmd->add_option("--quality", o->quality, "JPEG quality [90], or lossy WebP at this quality (WebP is lossless without it)")
+      ->check(wholeRange(1, 100));
   cmd->add_option("--output-dir", o->outputDir, "Many inputs: the folder the output names are in (made if missing)");
   cmd->add_option("--format", o->format, "What standard input (-) holds: its extension (ply, stl, obj, glb, json, ...)");
   cmd->add_option("--turntable", o->turntable, "Render N frames with the camera orbiting the up axis")

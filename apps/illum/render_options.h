@@ -5,6 +5,7 @@
 #include "batch_inputs.h"
 #include "scene_options.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,7 @@ struct RenderOptions {
   std::string saveScene;  // --save-scene: the scene drawn, as a scene file
   bool force = false, quiet = false, progress = false, json = false, failFast = false, skipExisting = false;
   int bitDepth = 8, turntable = 0, orbitLight = 0, fps = 15;
+  std::optional<int> quality;  // --quality: JPEG and lossy WebP outputs
 };
 
 // Whether the options make a batch rather than one picture.

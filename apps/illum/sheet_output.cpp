@@ -1,5 +1,7 @@
 #include "sheet_output.h"
 
+#include "output_format.h"
+
 #include <illum/image.h>
 #include <illum/error.h>
 #include <illum/output_file.h>
@@ -34,9 +36,18 @@ std::string inputName(const SceneOptions& o) {
 }
 
 void addSheetOutputOptions(CLI::App& cmd, SheetOutput& out) {
-  cmd.add_option("-o,--output", out.path, "Output PNG, written atomically")->capture_default_str();
+  cmd.add_option("-o,--output", out.path, "Output picture, written atomically: .png, .jpg/.jpeg, .webp (lossless) or .gif")
+      ->capture_default_str();
+  cmd.add_option("--quality", out.quality, "JPEG quality [90], or lossy WebP at this quality")->check(CLI::Range(1, 100));
   cmd.add_flag("-q,--quiet", out.quiet, "Do not print the output's path on standard output");
   cmd.add_flag("--force", out.force, "Replace a read-only output file (its permissions are kept)");
+}
+
+void checkSheetOutput(const SheetOutput& out) {
+  const OutputFormat format = outputFormatOf(out.path);
+  if (format == OutputFormat::Exr || format == OutputFormat::Mp4)
+    throw InputError("-o " + out.path + ": a sheet is one 8-bit picture: expected .png, .jpg, .webp or .gif");
+  checkQuality(format, out.quality);
 }
 
 void writeSheet(const Sheet& sheet, const SheetOutput& out, bool verbose,
@@ -50,7 +61,7 @@ void writeSheet(const Sheet& sheet, const SheetOutput& out, bool verbose,
                      layout.panelOrigin[r][c].first, layout.panelOrigin[r][c].second, sheet.panels[r][c].image.width,
                      sheet.panels[r][c].image.height);
   }
-  writeOutputFile(out.path, encodePng(image), OutputOptions{out.force});
+  writeOutputFile(out.path, encodeStill(outputFormatOf(out.path), image, out.quality), OutputOptions{out.force});
   if (!out.quiet) std::printf("%s\n", out.path.c_str());
 }
 

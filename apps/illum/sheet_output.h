@@ -7,6 +7,7 @@
 #include "scene_options.h"
 
 #include <functional>
+#include <optional>
 #include <string>
 
 namespace illum::cli {
@@ -25,9 +26,12 @@ std::string inputName(const SceneOptions& o);
 struct SheetOutput {
   std::string path;
   bool force = false, quiet = false;
+  std::optional<int> quality;
 };
-// -o, -q and --force.
+// -o, -q, --quality and --force.
 void addSheetOutputOptions(CLI::App& cmd, SheetOutput& out);
+// Refuses (InputError) an output name that is not a still 8-bit picture, before anything is drawn.
+void checkSheetOutput(const SheetOutput& out);
 
 // Composes and writes the sheet; with verbose, one line per panel naming it by `describe(r, c)`.
 void writeSheet(const Sheet& sheet, const SheetOutput& out, bool verbose,

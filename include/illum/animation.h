@@ -7,8 +7,10 @@
 
 #include <illum/image.h>
 
+#include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace illum {
@@ -22,7 +24,10 @@ class AnimationEncoder {
   virtual std::vector<std::uint8_t> finish() = 0;
 };
 
-std::unique_ptr<AnimationEncoder> makeGifEncoder(int width, int height, int delayMs);
+// `exact`: a colour (the background's) that every frame's palette holds exactly, for the pixels of
+// exactly that colour; the others are quantized.
+std::unique_ptr<AnimationEncoder> makeGifEncoder(int width, int height, int delayMs,
+                                                 std::optional<std::array<std::uint8_t, 3>> exact = std::nullopt);
 std::unique_ptr<AnimationEncoder> makeWebpEncoder(int width, int height, int delayMs);
 
 }  // namespace illum

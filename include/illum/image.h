@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -47,6 +48,11 @@ struct FloatImage {
 std::vector<std::uint8_t> encodeExr(const FloatImage& image);
 // Reads an OpenEXR file's R, G, B, A channels (missing ones read as 0). Throws InputError.
 FloatImage readExr(const std::filesystem::path& path);
+
+// Encodes the image as JPEG (libjpeg-turbo, RGB: alpha is dropped) at `quality` 1..100.
+std::vector<std::uint8_t> encodeJpeg(const Image& image, int quality = 90);
+// Encodes the image as WebP: lossless without a quality, lossy at `quality` 1..100.
+std::vector<std::uint8_t> encodeWebp(const Image& image, std::optional<int> quality = std::nullopt);
 
 // Encodes the image as PNG in memory.
 std::vector<std::uint8_t> encodePng(const Image& image);

@@ -6,6 +6,8 @@
 #include <webp/mux.h>
 
 #include <algorithm>
+#include <array>
+#include <optional>
 #include <cstring>
 #include <memory>
 #include <utility>
@@ -25,7 +27,8 @@ int appendBytes(GifFileType* gif, const GifByteType* bytes, int count) {
 
 class GifEncoder final : public AnimationEncoder {
  public:
-  GifEncoder(int width, int height, int delayMs) : w_(width), h_(height), delayMs_(delayMs) {
+  GifEncoder(int width, int height, int delayMs, std::optional<std::array<std::uint8_t, 3>> exact)
+      : w_(width), h_(height), delayMs_(delayMs), exact_(exact) {
     int error = 0;
     gif_ = EGifOpen(&out_, appendBytes, &error);
     if (!gif_) gifFailed(error);
@@ -50,19 +53,27 @@ class GifEncoder final : public AnimationEncoder {
       r_[i] = frame.rgba[4 * i], g_[i] = frame.rgba[4 * i + 1], b_[i] = frame.rgba[4 * i + 2];
       transparent = transparent || frame.rgba[4 * i + 3] < 128;
     }
-    // 255 colours from the picture, the 256th kept for transparency.
+    // The colours quantized from the picture; the last entry kept for transparency, and the one
+    // before it, with an exact colour (the background's), for the pixels of exactly that colour.
     GifColorType palette[256] = {};
-    int size = transparent ? 255 : 256;
+    const int transparentIndex = 255, exactIndex = transparent ? 254 : 255;
+    int size = 256 - int(transparent) - int(exact_.has_value());
     if (GifQuantizeBuffer(unsigned(w_), unsigned(h_), &size, r_.data(), g_.data(), b_.data(), index_.data(), palette) ==
         GIF_ERROR)
       throw Error("cannot encode the GIF: quantizing a frame failed");
+    if (exact_) {
+      const auto& [r, g, b] = *exact_;
+      palette[exactIndex] = {r, g, b};
+      for (std::size_t i = 0; i < n; ++i)
+        if (r_[i] == r && g_[i] == g && b_[i] == b) index_[i] = GifByteType(exactIndex);
+    }
     if (transparent)
       for (std::size_t i = 0; i < n; ++i)
-        if (frame.rgba[4 * i + 3] < 128) index_[i] = 255;
+        if (frame.rgba[4 * i + 3] < 128) index_[i] = GifByteType(transparentIndex);
     GraphicsControlBlock gcb{};
     gcb.DisposalMode = DISPOSE_BACKGROUND;
     gcb.DelayTime = std::max(1, delayMs_ / 10);  // hundredths of a second
-    gcb.TransparentColor = transparent ? 255 : NO_TRANSPARENT_COLOR;
+    gcb.TransparentColor = transparent ? transparentIndex : NO_TRANSPARENT_COLOR;
     GifByteType extension[4];
     const std::size_t length = EGifGCBToExtension(&gcb, extension);
     if (EGifPutExtension(gif_, GRAPHICS_EXT_FUNC_CODE, int(length), extension) == GIF_ERROR) fail(gif_->Error);
@@ -92,6 +103,7 @@ class GifEncoder final : public AnimationEncoder {
   }
 
   int w_, h_, delayMs_, frames_ = 0;
+  std::optional<std::array<std::uint8_t, 3>> exact_;
   GifFileType* gif_ = nullptr;
   std::vector<std::uint8_t> out_;
   std::vector<GifByteType> r_, g_, b_, index_;
@@ -142,8 +154,9 @@ class WebpEncoder final : public AnimationEncoder {
 
 }  // namespace
 
-std::unique_ptr<AnimationEncoder> makeGifEncoder(int width, int height, int delayMs) {
-  return std::make_unique<GifEncoder>(width, height, delayMs);
+std::unique_ptr<AnimationEncoder> makeGifEncoder(int width, int height, int delayMs,
+                                                 std::optional<std::array<std::uint8_t, 3>> exact) {
+  return std::make_unique<GifEncoder>(width, height, delayMs, exact);
 }
 
 std::unique_ptr<AnimationEncoder> makeWebpEncoder(int width, int height, int delayMs) {
