@@ -308,6 +308,31 @@ TEST(CliOutput, FormatsIllumDoesNotWriteAreRefusedBeforeDrawing) {
   EXPECT_EQ(dir.fileCount(), 0u);
 }
 
+// Mistyped commands, options and values name what was meant, in illum's words, and never render.
+TEST(CliErrors, TyposNameTheClosestValidName) {
+  TempDir dir;
+  const auto refused = [&](const std::string& args, const std::string& expected) {
+    const RunResult in = illum::test::runShell("cd '" + dir.path().string() + "' && " + std::string(ILLUM_CLI) + " " + args);
+    EXPECT_EQ(in.exitCode, 2) << args << ": " << in.err;
+    EXPECT_NE(in.err.find(expected), std::string::npos) << args << ": " << in.err;
+    EXPECT_EQ(in.err.find("Run 'illum --help'"), std::string::npos) << in.err;  // CLI11's own tail is gone
+    EXPECT_EQ(dir.fileCount(), 0u) << args << " wrote something";
+  };
+  refused("rendr /usr/share/assimp/models/Collada/duck.dae", "rendr: no such command or file; did you mean render?");
+  refused("veiw", "did you mean view?");
+  refused("render --size 800,600", "--size: not an option of illum render; did you mean --resolution?");
+  refused("render --azimuth 30", "did you mean --camera-azimuth-angle?");
+  refused("render --resolutoin 10,10", "did you mean --resolution?");
+  refused("render --shading phongg", "--shading: expected flat, gouraud or phong, got \"phongg\"; did you mean phong?");
+  refused("render --model blin", "did you mean blinn-phong?");
+  refused("render --renderer pathh", "did you mean path?");
+  refused("compare --rows modle=phong", "did you mean model?");
+  refused("render --width abc", "--width: expected a whole number in [1, 16384], got \"abc\"");
+  refused("render --samples 0", "--samples: expected a whole number in [1, 16384], got");
+  refused("render --width 5 --width 6", "--width: given 2 times; expected once");
+  refused("eval --angle-nl 30 extra", "\"extra\": not expected here");
+}
+
 TEST(CliOutput, QuietPrintsNothing) {
   TempDir dir;
   const RunResult r = run("render --width 16 --height 16 --quiet -o " + (dir / "a.png").string());

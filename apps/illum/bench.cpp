@@ -4,6 +4,7 @@
 #include <illum/image.h>
 #include <illum/render.h>
 
+#include "cli_values.h"
 #include "commands.h"
 #include "scene_options.h"
 
@@ -92,7 +93,7 @@ Command addBenchCommand(CLI::App& app) {
   cmd->footer("Loading is timed once (load_ms); frames are timed after one warm-up (median ms_per_frame and\n"
               "ms_min); the PNG encoding of the picture separately (encode_ms). See bench/ for comparisons.");
   addSceneOptions(*cmd, o->scene);
-  cmd->add_option("--frames", o->frames, "Timed frames after the warm-up")->check(CLI::Range(1, 100000))->capture_default_str();
+  cmd->add_option("--frames", o->frames, "Timed frames after the warm-up")->check(wholeRange(1, 100000))->capture_default_str();
   return [o] { return runBench(*o); };
 }
 

@@ -1,7 +1,10 @@
 #include "cli_values.h"
 
 #include <illum/error.h>
+#include <illum/lighting.h>
 
+#include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <limits>
 #include <cmath>
@@ -117,6 +120,68 @@ CLI::Validator wholeRange(long long min, long long max) {
         return {};
       },
       "INT in " + range);
+}
+
+namespace {
+
+// Damerau-Levenshtein (optimal string alignment): insertions, deletions, substitutions and swaps
+// of neighbours, the slips of typing.
+std::size_t editDistance(const std::string& a, const std::string& b) {
+  std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1));
+  for (std::size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+  for (std::size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i)
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+    }
+  return d[a.size()][b.size()];
+}
+
+std::string lower(std::string s) {
+  for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+}  // namespace
+
+std::optional<std::string> closestName(const std::string& given, const std::vector<std::string>& candidates,
+                                       const std::vector<std::pair<std::string, std::string>>& synonyms) {
+  const std::string g = lower(given);
+  for (const auto& [typed, meant] : synonyms)
+    if (g == typed) return meant;
+  // The core of a name: without its leading dashes.
+  const auto core = [](const std::string& s) { return s.substr(std::min(s.find_first_not_of('-'), s.size())); };
+  const std::string gc = core(g);
+  std::optional<std::string> best;
+  if (gc.size() >= 3)
+    for (const std::string& c : candidates)
+      if (lower(c).find(gc) != std::string::npos && (!best || c.size() < best->size())) best = c;
+  if (best) return best;
+  std::size_t bestDistance = std::max<std::size_t>(1, std::min<std::size_t>(3, gc.size() / 3)) + 1;
+  for (const std::string& c : candidates) {
+    const std::size_t d = editDistance(gc, core(lower(c)));
+    if (d < bestDistance) bestDistance = d, best = c;
+  }
+  return best;
+}
+
+std::vector<std::string> lightingModelChoices() {
+  std::vector<std::string> names;
+  std::string list = lightingModelNames();
+  for (const std::string separator : {" or ", ", "})
+    for (std::size_t at; (at = list.find(separator)) != std::string::npos;) list.replace(at, separator.size(), "|");
+  std::stringstream in(list);
+  for (std::string name; std::getline(in, name, '|');) names.push_back(name);
+  return names;
+}
+
+void badChoice(const std::string& option, const std::string& given, const std::vector<std::string>& choices) {
+  std::string list;
+  for (std::size_t i = 0; i < choices.size(); ++i)
+    list += (i == 0 ? "" : i + 1 == choices.size() ? " or " : ", ") + choices[i];
+  const std::optional<std::string> meant = closestName(given, choices);
+  throw InputError(option + ": expected " + list + ", got \"" + given + "\"" + (meant ? "; did you mean " + *meant + "?" : ""));
 }
 
 }  // namespace illum::cli

@@ -5,7 +5,10 @@
 
 #include <CLI/CLI.hpp>
 
+#include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace illum::cli {
 
@@ -23,5 +26,19 @@ int parseInteger(const std::string& option, const std::string& text, int min, in
 CLI::Validator finiteRange(double min, double max);
 // The check of a count: a whole number in [min, max] (0 frames or -5 light turns are refused).
 CLI::Validator wholeRange(long long min, long long max);
+
+// The candidate closest to `given`, if one is close enough to be what was meant: a known synonym
+// (`synonyms`: pairs of what people type and what illum calls it), one that contains it whole (the
+// shortest), or one within a few typing slips (Damerau-Levenshtein distance at most a third of
+// its length, at least 1, at most 3).
+std::optional<std::string> closestName(const std::string& given, const std::vector<std::string>& candidates,
+                                       const std::vector<std::pair<std::string, std::string>>& synonyms = {});
+
+// `option`'s value is not one of `choices`: "--shading: expected flat, gouraud or phong, got
+// \"phongg\"; did you mean phong?" (InputError).
+// The lighting models' names, as the options take them.
+std::vector<std::string> lightingModelChoices();
+
+[[noreturn]] void badChoice(const std::string& option, const std::string& given, const std::vector<std::string>& choices);
 
 }  // namespace illum::cli

@@ -131,7 +131,7 @@ std::string triple(const Color3& c) { return "[" + number(c.r) + "," + number(c.
 
 int runEval(const EvalOptions& o) {
   const auto model = parseLightingModel(o.model);
-  if (!model) throw InputError("--model: expected " + lightingModelNames() + ", got \"" + o.model + "\"");
+  if (!model) badChoice("--model", o.model, lightingModelChoices());
 
   // Light and material: the scene format's defaults for whatever is not given.
   const Light defaults;
@@ -158,7 +158,7 @@ int runEval(const EvalOptions& o) {
     p.f0 = Color3(color4("--f0", o.f0, Color4(p.f0, 1)));
     if (o.distribution == "beckmann") p.distribution = Microfacet::Beckmann;
     else if (!o.distribution.empty() && o.distribution != "ggx")
-      throw InputError("--distribution: expected ggx or beckmann, got \"" + o.distribution + "\"");
+      badChoice("--distribution", o.distribution, {"ggx", "beckmann"});
     glFromPhysical(material, p);
   }
   LightModel lightModel;

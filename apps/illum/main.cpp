@@ -1,6 +1,7 @@
 // illum: the classic local lighting models, computed and rendered exactly, on the CPU.
 #include <illum/error.h>
 
+#include "cli_errors.h"
 #include "commands.h"
 #include "view_command.h"
 
@@ -24,10 +25,22 @@ int main(int argc, char** argv) {
   const illum::cli::Command history = illum::cli::addHistoryCommand(app);
   const illum::cli::Command view = illum::view::addViewCommand(app);
 
-  // f3d's habit: `illum model.glb` means `illum render model.glb`.
+  // f3d's habit: `illum model.glb` means `illum render model.glb`; a bare word that names no file
+  // is a mistyped command, never an input.
+  const std::vector<std::string> commands = {"eval", "render", "bench", "compare", "history", "view"};
   std::vector<std::string> args(argv + 1, argv + argc);
-  if (!args.empty() && args[0] != "eval" && args[0] != "render" && args[0] != "bench" && args[0] != "compare" && args[0] != "history" && args[0] != "view" && !args[0].empty() && args[0][0] != '-')
+  if (!args.empty() && std::find(commands.begin(), commands.end(), args[0]) == commands.end() && !args[0].empty() &&
+      args[0][0] != '-') {
+    if (const auto message = illum::cli::unknownCommand(args[0], commands)) {
+      std::cerr << "illum: error: " << *message << "\n";
+      return 2;
+    }
     args.insert(args.begin(), "render");
+  }
+  const auto command = std::find_if(args.begin(), args.end(), [&](const std::string& a) {
+    return std::find(commands.begin(), commands.end(), a) != commands.end();
+  });
+  const std::string commandName = command == args.end() ? "" : *command;
   std::reverse(args.begin(), args.end());  // CLI11 takes the arguments last first
 
   try {
@@ -39,7 +52,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::cerr << "illum: error: " << e.what() << "\nRun 'illum --help' for usage.\n";
+    std::cerr << "illum: error: " << illum::cli::explainParseError(e, app, commandName) << "\n";
     return 2;
   }
 

@@ -38,7 +38,7 @@ Vec3 parseUp(const std::string& text) {
       default: break;
     }
   }
-  throw InputError("--up: expected one of +X, -X, +Y, -Y, +Z, -Z, got \"" + text + "\"");
+  badChoice("--up", text, {"+X", "-X", "+Y", "-Y", "+Z", "-Z"});
 }
 
 void parseResolution(const std::string& text, SceneOptions& o) {
@@ -71,7 +71,7 @@ ImportOptions importOptions(const SceneOptions& o) {
     else if (o.normals == "flat") io.normals = NormalMode::Flat;
     else if (o.normals == "smooth") io.normals = NormalMode::Smooth;
     else if (o.normals == "file") io.normals = NormalMode::File;
-    else throw InputError("--normals: expected auto, flat, smooth or file, got \"" + o.normals + "\"");
+    else badChoice("--normals", o.normals, {"auto", "flat", "smooth", "file"});
   }
   if (o.creaseAngle) {
     if (!std::isfinite(*o.creaseAngle) || *o.creaseAngle < 0 || *o.creaseAngle > 180)
@@ -306,8 +306,8 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o, std::vector<std::string>* i
                    "renders the built-in scene");
   else
     cmd.add_option("input", o.input, "Scene (.json) or model file; none renders the built-in scene");
-  cmd.add_option("--width", o.width, "Image width in pixels")->check(CLI::Range(1, 16384));
-  cmd.add_option("--height", o.height, "Image height in pixels")->check(CLI::Range(1, 16384));
+  cmd.add_option("--width", o.width, "Image width in pixels")->check(wholeRange(1, 16384));
+  cmd.add_option("--height", o.height, "Image height in pixels")->check(wholeRange(1, 16384));
   cmd.add_option("--resolution", o.resolution, "Image size W,H (models: 1000,600)");
   cmd.add_option("--model", o.model, "Lighting model: " + lightingModelNames());
   cmd.add_option("--shading", o.shading, "Shading frequency: flat, gouraud or phong");
@@ -315,9 +315,9 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o, std::vector<std::string>* i
   cmd.add_flag("--no-shadows", o.noShadows, "Ray tracers: no shadow rays");
   cmd.add_option("--samples", o.samples,
                  "Rasterizer: multisamples per pixel, 1, 4, 8 or 16 [scenes 1, models 8]; ray tracers: rays per pixel [1; path: 64]")
-      ->check(CLI::Range(1, kMaxSamples));
+      ->check(wholeRange(1, kMaxSamples));
   cmd.add_option("--max-depth", o.maxDepth, "Ray tracers: reflected and refracted bounces followed [5]")
-      ->check(CLI::Range(0, kMaxRayDepth));
+      ->check(wholeRange(0, kMaxRayDepth));
   cmd.add_option("--tone-map", o.toneMap, "Radiance above 1: none (clamp; default), reinhard or aces");
   cmd.add_option("--encoding", o.encoding, "Bytes of the picture: linear (GL's; default) or srgb");
   cmd.add_option("--background-color,--background", o.background, "Background colour R,G,B or #rrggbb");
@@ -371,7 +371,7 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o, std::vector<std::string>* i
   cmd.add_option("--max-json-depth", o.limits.maxJsonDepth, "Refuse scene files whose arrays and objects nest deeper [64]")
       ->check(wholeRange(1, 10000));
   cmd.add_option("--threads", o.threads, "Worker threads (default: every core); the picture is the same for any count")
-      ->check(CLI::Range(1, 1024));
+      ->check(wholeRange(1, 1024));
   cmd.add_flag("-v,--verbose", o.verbose, "Print model statistics, bounds, times and peak memory on stderr");
 }
 
@@ -383,22 +383,22 @@ Scene prepareScene(SceneOptions o, double* loadMs, ModelCache* cache, std::vecto
   std::optional<Shading> shading;
   if (!o.model.empty()) {
     lightingModel = parseLightingModel(o.model);
-    if (!lightingModel) throw InputError("--model: expected " + lightingModelNames() + ", got \"" + o.model + "\"");
+    if (!lightingModel) badChoice("--model", o.model, lightingModelChoices());
   }
   std::optional<RendererKind> renderer;
   if (!o.renderer.empty()) {
     renderer = parseRendererKind(o.renderer);
-    if (!renderer) throw InputError("--renderer: expected raster, whitted, hall or path, got \"" + o.renderer + "\"");
+    if (!renderer) badChoice("--renderer", o.renderer, {"raster", "whitted", "hall", "path"});
   }
   std::optional<ToneMap> toneMap;
   std::optional<Encoding> encoding;
   if (!o.toneMap.empty() && !(toneMap = parseToneMap(o.toneMap)))
-    throw InputError("--tone-map: expected none, reinhard or aces, got \"" + o.toneMap + "\"");
+    badChoice("--tone-map", o.toneMap, {"none", "reinhard", "aces"});
   if (!o.encoding.empty() && !(encoding = parseEncoding(o.encoding)))
-    throw InputError("--encoding: expected linear or srgb, got \"" + o.encoding + "\"");
+    badChoice("--encoding", o.encoding, {"linear", "srgb"});
   if (!o.shading.empty()) {
     shading = parseShading(o.shading);
-    if (!shading) throw InputError("--shading: expected flat, gouraud or phong, got \"" + o.shading + "\"");
+    if (!shading) badChoice("--shading", o.shading, {"flat", "gouraud", "phong"});
   }
   Scene scene;
   std::optional<ImportedModel> model;

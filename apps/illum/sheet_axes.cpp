@@ -95,9 +95,11 @@ SheetAxis parseSheetAxis(const std::string& option, const std::string& spec, std
   const auto known = optionAxes().find(axis.name);
   if (known == optionAxes().end() && axis.name != "shininess" && axis.name != "light-count" && !material && !light) {
     std::string names;
-    for (const auto& [n, unused] : optionAxes()) names += n + ", ";
+    std::vector<std::string> axes = {"shininess", "light-count"};
+    for (const auto& [n, unused] : optionAxes()) names += n + ", ", axes.push_back(n);
+    const std::optional<std::string> meant = closestName(axis.name, axes);
     throw InputError(option + ": expected an axis (" + names + "shininess, light-count, material.KEY or light.N.KEY), got \"" +
-                     axis.name + "\"");
+                     axis.name + "\"" + (meant ? "; did you mean " + *meant + "?" : ""));
   }
   if (eq == std::string::npos) {
     if (known != optionAxes().end()) axis.values = known->second;
@@ -112,12 +114,11 @@ SheetAxis parseSheetAxis(const std::string& option, const std::string& spec, std
   // Enumerations and numbers are checked now, so that no picture is rendered before an error.
   for (const std::string& v : axis.values) {
     const std::string what = option + " " + axis.name;
-    if (axis.name == "model" && !parseLightingModel(v)) throw InputError(what + ": expected " + lightingModelNames() + ", got \"" + v + "\"");
-    if (axis.name == "shading" && !parseShading(v)) throw InputError(what + ": expected flat, gouraud or phong, got \"" + v + "\"");
-    if (axis.name == "renderer" && !parseRendererKind(v))
-      throw InputError(what + ": expected raster, whitted, hall or path, got \"" + v + "\"");
-    if (axis.name == "tone-map" && !parseToneMap(v)) throw InputError(what + ": expected none, reinhard or aces, got \"" + v + "\"");
-    if (axis.name == "encoding" && !parseEncoding(v)) throw InputError(what + ": expected linear or srgb, got \"" + v + "\"");
+    if (axis.name == "model" && !parseLightingModel(v)) badChoice(what, v, lightingModelChoices());
+    if (axis.name == "shading" && !parseShading(v)) badChoice(what, v, {"flat", "gouraud", "phong"});
+    if (axis.name == "renderer" && !parseRendererKind(v)) badChoice(what, v, {"raster", "whitted", "hall", "path"});
+    if (axis.name == "tone-map" && !parseToneMap(v)) badChoice(what, v, {"none", "reinhard", "aces"});
+    if (axis.name == "encoding" && !parseEncoding(v)) badChoice(what, v, {"linear", "srgb"});
     if (axis.name == "normals" && v != "auto" && v != "flat" && v != "smooth" && v != "file")
       throw InputError(what + ": expected auto, flat, smooth or file, got \"" + v + "\"");
     if (axis.name == "samples") parseInteger(what, v, 1, kMaxSamples);

@@ -1,5 +1,6 @@
 #include "sheet_output.h"
 
+#include "cli_values.h"
 #include "output_format.h"
 
 #include <illum/image.h>
@@ -38,7 +39,7 @@ std::string inputName(const SceneOptions& o) {
 void addSheetOutputOptions(CLI::App& cmd, SheetOutput& out) {
   cmd.add_option("-o,--output", out.path, "Output picture, written atomically: .png, .jpg/.jpeg, .webp (lossless) or .gif")
       ->capture_default_str();
-  cmd.add_option("--quality", out.quality, "JPEG quality [90], or lossy WebP at this quality")->check(CLI::Range(1, 100));
+  cmd.add_option("--quality", out.quality, "JPEG quality [90], or lossy WebP at this quality")->check(wholeRange(1, 100));
   cmd.add_flag("-q,--quiet", out.quiet, "Do not print the output's path on standard output");
   cmd.add_flag("--force", out.force, "Replace a read-only output file (its permissions are kept)");
 }
