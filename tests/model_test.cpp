@@ -523,6 +523,31 @@ TEST(ModelBackground, TheSameBytesFromEveryRendererToneMapOrNot) {
   }
 }
 
+// Inputs as file managers give them: a file:// URI (percent-decoded), and a file whose name has no
+// extension or the wrong one: the content says the format, and the picture is the original's.
+TEST(ModelInputs, FileUrisAndNamesThatDoNotSayTheFormat) {
+  TempDir dir;
+  const fs::path box = kModels / "glTF2/BoxTextured-glTF-Binary/BoxTextured.glb", spider = kModels / "STL/Spider_binary.stl";
+  fs::create_directories(dir / "my files");
+  fs::copy_file(box, dir / "my files" / "Bóx.glb");
+  fs::copy_file(box, dir / "box-download");
+  fs::copy_file(spider, dir / "spider.obj");
+  const auto picture = [&](const std::string& input) {
+    const fs::path out = dir / "out.png";
+    const auto r = runIllum("render '" + input + "' --resolution 120,90 -o " + out.string());
+    EXPECT_EQ(r.exitCode, 0) << input << ": " << r.err;
+    return r.exitCode == 0 ? readPng(out).rgba : std::vector<std::uint8_t>{};
+  };
+  const std::vector<std::uint8_t> boxPicture = picture(box.string()), spiderPicture = picture(spider.string());
+  EXPECT_EQ(picture("file://" + (dir / "my%20files" / "B%C3%B3x.glb").string()), boxPicture);
+  EXPECT_EQ(picture("file://localhost" + box.string()), boxPicture);
+  EXPECT_EQ(picture((dir / "box-download").string()), boxPicture);
+  EXPECT_EQ(picture((dir / "spider.obj").string()), spiderPicture);
+  const auto remote = runIllum("render file://fileserver/models/box.glb -o " + (dir / "remote.png").string());
+  EXPECT_EQ(remote.exitCode, 2);
+  EXPECT_NE(remote.err.find("another machine"), std::string::npos) << remote.err;
+}
+
 TEST(ModelDefaults, StlIsZUpUnlessToldOtherwise) {
   const fs::path spider = kModels / "STL/Spider_binary.stl";
   const Image byDefault = renderModel(spider), zUp = renderModel(spider, "--up=+Z"), yUp = renderModel(spider, "--up=+Y");

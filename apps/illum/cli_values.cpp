@@ -166,6 +166,41 @@ std::optional<std::string> closestName(const std::string& given, const std::vect
   return best;
 }
 
+std::string fromFileUri(const std::string& input) {
+  if (input.rfind("file://", 0) != 0) return input;
+  std::string rest = input.substr(7);
+  if (rest.rfind("localhost/", 0) == 0) rest = rest.substr(9);
+  if (rest.empty() || rest[0] != '/')
+    throw InputError(input + ": a file:// address of another machine; expected file:///path (this machine's files)");
+  std::string path;
+  for (std::size_t i = 0; i < rest.size(); ++i) {
+    const auto hex = [&](char c) { return std::isxdigit(static_cast<unsigned char>(c)) != 0; };
+    if (rest[i] == '%' && i + 2 < rest.size() && hex(rest[i + 1]) && hex(rest[i + 2])) {
+      path += char(std::stoi(rest.substr(i + 1, 2), nullptr, 16));
+      i += 2;
+    } else if (rest[i] == '?' || rest[i] == '#') {
+      break;  // a query or fragment is no part of a file's name
+    } else {
+      path += rest[i];
+    }
+  }
+  if (path.find('\0') != std::string::npos) throw InputError(input + ": a file name cannot hold a NUL byte (%00)");
+  return path;
+}
+
+CLI::Validator fileUriInput() {
+  return CLI::Validator(
+      [](std::string& value) {
+        try {
+          value = fromFileUri(value);
+          return std::string();
+        } catch (const InputError& e) {
+          return std::string(e.what());
+        }
+      },
+      "", "file URI");
+}
+
 std::vector<std::string> lightingModelChoices() {
   std::vector<std::string> names;
   std::string list = lightingModelNames();

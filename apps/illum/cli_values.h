@@ -36,6 +36,12 @@ std::optional<std::string> closestName(const std::string& given, const std::vect
 
 // `option`'s value is not one of `choices`: "--shading: expected flat, gouraud or phong, got
 // \"phongg\"; did you mean phong?" (InputError).
+// An input as file managers give it: "file:///home/a/My%20Duck.glb" is /home/a/My Duck.glb (a
+// host other than localhost is refused: the file is not on this machine); anything else as it is.
+std::string fromFileUri(const std::string& input);
+// The same as a CLI11 transform, for the options that take input files.
+CLI::Validator fileUriInput();
+
 // The lighting models' names, as the options take them.
 std::vector<std::string> lightingModelChoices();
 

@@ -302,10 +302,12 @@ ThreadLimit::ThreadLimit(const SceneOptions& o)
 void addSceneOptions(CLI::App& cmd, SceneOptions& o, std::vector<std::string>* inputs) {
   if (inputs)
     cmd.add_option("inputs", *inputs,
-                   "Scene (.json) or model files, folders, patterns ('scans/**/*.ply'), - for standard input; none "
-                   "renders the built-in scene");
+                   "Scene (.json) or model files (or file:// URIs), folders, patterns ('scans/**/*.ply'), - for "
+                   "standard input; none renders the built-in scene")
+        ->transform(fileUriInput());
   else
-    cmd.add_option("input", o.input, "Scene (.json) or model file; none renders the built-in scene");
+    cmd.add_option("input", o.input, "Scene (.json) or model file (or file:// URI); none renders the built-in scene")
+        ->transform(fileUriInput());
   cmd.add_option("--width", o.width, "Image width in pixels")->check(wholeRange(1, 16384));
   cmd.add_option("--height", o.height, "Image height in pixels")->check(wholeRange(1, 16384));
   cmd.add_option("--resolution", o.resolution, "Image size W,H (models: 1000,600)");

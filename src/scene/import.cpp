@@ -4,9 +4,11 @@
 #include <illum/file_names.h>
 
 #include "core/input_file.h"
+#include "scene/model_format.h"
 #include "scene/model_precheck.h"
 #include "scene/texture_lookup.h"
 
+#include <assimp/DefaultIOSystem.h>
 #include <assimp/DefaultLogger.hpp>
 #include <assimp/GltfMaterial.h>
 #include <assimp/Importer.hpp>
@@ -374,6 +376,20 @@ bool hasDrawableTriangle(const Mesh& mesh) {
   return false;
 }
 
+// assimp's file system with one file under another name: `alias` opens `real`.
+class RenamingIOSystem final : public Assimp::DefaultIOSystem {
+ public:
+  RenamingIOSystem(fs::path alias, fs::path real) : alias_(std::move(alias)), real_(std::move(real)) {}
+  bool Exists(const char* file) const override { return DefaultIOSystem::Exists(redirect(file).c_str()); }
+  Assimp::IOStream* Open(const char* file, const char* mode) override {
+    return DefaultIOSystem::Open(redirect(file).c_str(), mode);
+  }
+
+ private:
+  std::string redirect(const char* file) const { return fs::path(file) == alias_ ? real_.string() : std::string(file); }
+  fs::path alias_, real_;
+};
+
 }  // namespace
 
 bool isModelFileName(const fs::path& path) {
@@ -387,7 +403,8 @@ ImportedModel importModelInProcess(const fs::path& path, const ImportOptions& op
   std::error_code ec;
   checkRegularFile(path, {"model file", nullptr});
   if (fs::file_size(path, ec) == 0) throw InputError(path.string() + ": the model file is empty");
-  const std::string ext = options.format.empty() ? lowerExtension(path) : options.format;
+  // The format: the name's, unless the content says otherwise (or standard input's, as told).
+  const std::string ext = options.format.empty() ? modelFormatOf(path) : options.format;
   const fs::path companionDir = options.format.empty() ? path.parent_path() : options.companionDir;
   precheckModelFile(path, options.limits, ext);
 
@@ -403,7 +420,14 @@ ImportedModel importModelInProcess(const fs::path& path, const ImportOptions& op
     // assimp's memory reader opens companion files (.mtl, .bin) by their bare names, from the
     // working folder: standard input's companion folder.
   }
-  const aiScene* scene = bytes.empty() ? importer.ReadFile(path.string(), 0)
+  // A file whose name says another format than its content is read under a name that says the
+  // content's, beside it, so that its companion files are still found where it is.
+  fs::path readAs = path;
+  if (bytes.empty() && ext != lowerExtension(path)) {
+    readAs = path.parent_path() / (path.filename().string() + ext);
+    importer.SetIOHandler(new RenamingIOSystem(readAs, path));
+  }
+  const aiScene* scene = bytes.empty() ? importer.ReadFile(readAs.string(), 0)
                                        : importer.ReadFileFromMemory(bytes.data(), bytes.size(), 0, ext.substr(1).c_str());
   if (!scene) readFailed(path, importer);
   // The importer owns the scene; its own post-processing steps change it in place as this does.
