@@ -15,7 +15,7 @@ PACKAGES=(
   libsdl2-dev libimgui-dev
   slurmctld slurmd slurm-client munge
   libgtest-dev libbenchmark-dev libosmesa6-dev assimp-testmodels fonts-dejavu-core
-  xvfb xdotool x11-apps imagemagick
+  xvfb xdotool x11-apps imagemagick bubblewrap
   clang libclang-rt-14-dev
 )
 

@@ -14,5 +14,6 @@ Command addRenderCommand(CLI::App& app);
 Command addBenchCommand(CLI::App& app);
 Command addCompareCommand(CLI::App& app);
 Command addHistoryCommand(CLI::App& app);
+Command addThumbnailCommand(CLI::App& app);
 
 }  // namespace illum::cli

@@ -159,6 +159,8 @@ int renderPicture(const RenderOptions& o) {
   return 0;
 }
 
+}  // namespace
+
 // One picture, or a batch (batch.cpp).
 int runRender(RenderOptions o) {
   std::vector<BatchJob> jobs;
@@ -177,7 +179,6 @@ int runRender(RenderOptions o) {
   return renderPicture(o);
 }
 
-}  // namespace
 
 Command addRenderCommand(CLI::App& app) {
   auto o = std::make_shared<RenderOptions>();

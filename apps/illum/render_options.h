@@ -25,6 +25,9 @@ struct RenderOptions {
   std::optional<int> quality;  // --quality: JPEG and lossy WebP outputs
 };
 
+// `illum render` with these options: one picture, or a batch.
+int runRender(RenderOptions o);
+
 // Whether the options make a batch rather than one picture.
 bool isBatch(const RenderOptions& o);
 // Renders every job, each failure reported and counted; the exit status.
