@@ -2,12 +2,18 @@
 //   BM_Triangles/<pixels per triangle>: a screen of equal triangles, Gouraud-lit (triangles/s);
 //   BM_ShadedPixels/<model>/<lights>: a full-screen quad shaded per pixel (pixels/s);
 //   BM_EncodePng/<encoder>: the PNG encoding of a rendered 1080p frame (MB/s of RGBA), libdeflate as
-//   illum uses it against stb_image_write, the encoder illum used before.
+//   illum uses it against stb_image_write, the encoder illum used before;
+//   BM_EmbreeIncoherent/<scene> and BM_PathTracerRays/<scene>: Embree's own rate of incoherent
+//   closest-hit rays on the scene's BVH, against the rays the path tracer traces per second (all
+//   kinds: camera, bounces, shadows) on the same scene, both on every core;
+//   BM_Denoise: the path tracer's denoiser at 1000×600.
 #include <illum/image.h>
 #include <illum/render.h>
 #include <illum/scene.h>
 
 #include "image/denoise.h"
+#include "trace/ray_scene.h"
+#include "trace/sampling.h"
 
 #include <benchmark/benchmark.h>
 
@@ -125,6 +131,61 @@ void BM_Denoise(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_Denoise)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The scenes of the ray-rate benches: the built-in scene and the Cornell box.
+Scene rayScene(std::int64_t which) {
+  if (which == 0) {
+    Scene s = defaultScene(LightingModel::BlinnPhong, Shading::Phong, RendererKind::Path);
+    s.width = 320, s.height = 180;
+    return s;
+  }
+  Scene s = loadSceneFile(std::string(ILLUM_REPO_DIR) + "/examples/cornell_box.json");
+  s.width = s.height = 128;
+  return s;
+}
+const char* raySceneName(std::int64_t which) { return which == 0 ? "built-in" : "cornell_box.json"; }
+
+// Rays with no coherence: from points along random camera rays, 1 to 8 units out, in directions
+// uniform over the sphere, as a path's bounces are. Closest hits, one ray at a time.
+void BM_EmbreeIncoherent(benchmark::State& state) {
+  const Scene scene = rayScene(state.range(0));
+  static std::unique_ptr<RayScene> shared;
+  if (state.thread_index() == 0) shared = std::make_unique<RayScene>(scene);
+  constexpr int kRays = 1 << 16;
+  std::vector<Ray> rays(kRays);
+  Rng rng(std::uint64_t(state.thread_index()) + 7, 11);
+  for (Ray& r : rays) {
+    const Vec3 primary = glm::normalize(Vec3(rng.uniform() - Real(0.5), rng.uniform() - Real(0.5), -1));
+    r.origin = primary * (1 + 7 * rng.uniform());
+    const Real z = 1 - 2 * rng.uniform(), phi = 2 * kPiReal * rng.uniform(), radius = std::sqrt(std::max(Real(0), 1 - z * z));
+    r.direction = {radius * std::cos(phi), radius * std::sin(phi), z};
+  }
+  std::int64_t traced = 0;
+  for (auto _ : state) {
+    RayHit hit;
+    for (const Ray& r : rays) benchmark::DoNotOptimize(shared->intersect(r, hit));
+    traced += kRays;
+  }
+  state.counters["rays_per_second"] = benchmark::Counter(double(traced), benchmark::Counter::kIsRate);
+  state.SetLabel(raySceneName(state.range(0)));
+}
+BENCHMARK(BM_EmbreeIncoherent)->Arg(0)->Arg(1)->Threads(2)->UseRealTime()->Unit(benchmark::kMillisecond);
+
+// The path tracer on the same scene, on every core: every ray it traces, per second of its frame.
+void BM_PathTracerRays(benchmark::State& state) {
+  Scene scene = rayScene(state.range(0));
+  scene.renderer = RendererKind::Path;
+  scene.rayTracing.samples = 16;
+  std::uint64_t rays = 0;
+  for (auto _ : state) {
+    RenderStats stats;
+    renderScene(scene, &stats);
+    rays += stats.primaryRays + stats.secondaryRays + stats.shadowRays;
+  }
+  state.counters["rays_per_second"] = benchmark::Counter(double(rays), benchmark::Counter::kIsRate);
+  state.SetLabel(raySceneName(state.range(0)));
+}
+BENCHMARK(BM_PathTracerRays)->Arg(0)->Arg(1)->UseRealTime()->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -72,8 +72,12 @@ TEST(CliCompare, DefaultSheetIsModelsByShadingAndEveryPanelIsTheSingleRender) {
     ASSERT_EQ(one.exitCode, 0) << one.err;
     EXPECT_EQ(crop(sheet, p).rgba, illum::readPng(single).rgba) << p.rowLabel << " / " << p.colLabel;
     // A label left of every row and over every column.
-    if (p.col == 0) EXPECT_GT(inkIn(sheet, 0, p.y, p.x, p.y + p.height), 20) << p.rowLabel;
-    if (p.row == 0) EXPECT_GT(inkIn(sheet, p.x, p.y - 26, p.x + p.width, p.y), 20) << p.colLabel;
+    if (p.col == 0) {
+      EXPECT_GT(inkIn(sheet, 0, p.y, p.x, p.y + p.height), 20) << p.rowLabel;
+    }
+    if (p.row == 0) {
+      EXPECT_GT(inkIn(sheet, p.x, p.y - 26, p.x + p.width, p.y), 20) << p.colLabel;
+    }
   }
   // The grid's size: the panels and their gaps inside the margins, the labels' column and row.
   EXPECT_GE(sheet.width, 3 * 160 + 2 * 10);

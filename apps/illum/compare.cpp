@@ -25,7 +25,7 @@ namespace {
 struct CompareOptions {
   SceneOptions scene;
   std::string rows = "model", cols = "shading", diff;
-  SheetOutput out{"compare.png"};
+  SheetOutput out{"compare.png", false, false, std::nullopt};
 };
 
 std::string figures(const DifferencePanel& d) {

@@ -22,7 +22,7 @@ namespace {
 
 struct HistoryOptions {
   SceneOptions scene;
-  SheetOutput out{"history.png"};
+  SheetOutput out{"history.png", false, false, std::nullopt};
 };
 
 // One step of the history: who, when, what, and how illum draws it.

@@ -100,19 +100,19 @@ Scene texturedColouredBlended() {
       const std::uint32_t a = j * 9 + i;
       floor->indices.insert(floor->indices.end(), {a, a + 9, a + 10, a, a + 10, a + 1});
     }
-  s.objects.push_back({floor, Mat4(1), shiny, std::make_shared<const Texture>(pattern), {}, {}});
+  s.objects.push_back({floor, Mat4(1), shiny, std::make_shared<const Texture>(pattern), {}, {}, {}});
   auto ball = std::make_shared<Mesh>(makeSphere(0.7f, 32, 16));
   for (const Vec3& p : ball->positions) {
     const Vec3 d = glm::normalize(p);
     ball->colors.push_back({Real(0.5) + d.x / 2, Real(0.5) + d.y / 2, Real(0.5) + d.z / 2, 1});
   }
-  s.objects.push_back({ball, glm::translate(Mat4(1), Vec3(-1.2f, 0, 0)), shiny, nullptr, {}, {}});
+  s.objects.push_back({ball, glm::translate(Mat4(1), Vec3(-1.2f, 0, 0)), shiny, nullptr, {}, {}, {}});
   s.blend = true;
-  s.objects.push_back({std::make_shared<const Mesh>(makeCube(1)), glm::translate(Mat4(1), Vec3(1, 0, -1)), shiny, nullptr, {}, {}});
+  s.objects.push_back({std::make_shared<const Mesh>(makeCube(1)), glm::translate(Mat4(1), Vec3(1, 0, -1)), shiny, nullptr, {}, {}, {}});
   Material glassy = shiny;
   glassy.diffuse.a = 0.5f;
   s.objects.push_back({quad({0.2f, -0.8f, 0.5f}, {1.8f, -0.8f, 0.5f}, {1.8f, 0.8f, 0.5f}, {0.2f, 0.8f, 0.5f}), Mat4(1),
-                       glassy, nullptr, {}, {}});
+                       glassy, nullptr, {}, {}, {}});
   return s;
 }
 
@@ -150,9 +150,9 @@ TEST(RayTracer, ASpheresShadowUnderADirectionalLightIsWhereAndAsLargeAsGeometryS
   s.camera.up = {0, 0, -1};
   Material floor = black();
   floor.diffuse = {1, 1, 1, 1};
-  s.objects.push_back({quad({-4, 0, 4}, {4, 0, 4}, {4, 0, -4}, {-4, 0, -4}), Mat4(1), floor, nullptr, {}, {}});
+  s.objects.push_back({quad({-4, 0, 4}, {4, 0, 4}, {4, 0, -4}, {-4, 0, -4}), Mat4(1), floor, nullptr, {}, {}, {}});
   s.objects.push_back({std::make_shared<const Mesh>(makeSphere(r, 256, 128)),
-                       glm::translate(Mat4(1), Vec3(0, h, 0)), glowing({0, 0, 1}), nullptr, {}, {}});
+                       glm::translate(Mat4(1), Vec3(0, h, 0)), glowing({0, 0, 1}), nullptr, {}, {}, {}});
   Light sun;
   sun.position = {1, 1, 0, 0};  // towards the light: up and to +x, so the shadow falls to −x
   sun.specular = Color3(0);
@@ -182,9 +182,9 @@ TEST(RayTracer, AMirrorAt45DegreesShowsTheObjectItFaces) {
   Material mirror = black();
   SurfaceOptics mirrorOptics;
   mirrorOptics.reflective = Color3(1);
-  s.objects.push_back({quad({-2, -2, 2}, {2, -2, 2}, {2, 2, -2}, {-2, 2, -2}), Mat4(1), mirror, nullptr, mirrorOptics, {}});
+  s.objects.push_back({quad({-2, -2, 2}, {2, -2, 2}, {2, 2, -2}, {-2, 2, -2}), Mat4(1), mirror, nullptr, mirrorOptics, {}, {}});
   s.objects.push_back({std::make_shared<const Mesh>(makeSphere(0.3f, 64, 32)),
-                       glm::translate(Mat4(1), Vec3(1, 5, -0.5f)), glowing({1, 0, 0}), nullptr, {}, {}});
+                       glm::translate(Mat4(1), Vec3(1, 5, -0.5f)), glowing({1, 0, 0}), nullptr, {}, {}, {}});
   const Image image = renderScene(s);
   EXPECT_EQ(pixelAt(image, view, 1, 0.5f)[0], 255);
   EXPECT_EQ(pixelAt(image, view, 1.25f, 0.5f)[0], 255);
@@ -207,10 +207,10 @@ TEST(RayTracer, AGlassSlabOffsetsALineBySnellsFormula) {
   glass.transmissive = Color3(1);
   glass.ior = n;
   const Mat4 slab = glm::scale(glm::rotate(Mat4(1), theta, Vec3(0, 1, 0)), Vec3(6, 6, d));
-  s.objects.push_back({std::make_shared<const Mesh>(makeCube(1)), slab, black(), nullptr, glass, {}});
+  s.objects.push_back({std::make_shared<const Mesh>(makeCube(1)), slab, black(), nullptr, glass, {}, {}});
   const Real lineWidth = 0.02f;
   s.objects.push_back({quad({-lineWidth / 2, -3, -5}, {lineWidth / 2, -3, -5}, {lineWidth / 2, 3, -5}, {-lineWidth / 2, 3, -5}),
-                       Mat4(1), glowing({0, 1, 0}), nullptr, {}, {}});
+                       Mat4(1), glowing({0, 1, 0}), nullptr, {}, {}, {}});
   const Image image = renderScene(s);
   const Real thetaT = std::asin(std::sin(theta) / n);
   const Real expected = d * std::sin(theta - thetaT) / std::cos(thetaT);
@@ -233,7 +233,7 @@ TEST(RayTracer, HallReflectsTheFresnelFractionAtNormalIncidence) {
   SurfaceOptics optics;
   optics.reflective = Color3(1);
   optics.ior = 1.5f;
-  s.objects.push_back({quad({-2, -2, 0}, {2, -2, 0}, {2, 2, 0}, {-2, 2, 0}), Mat4(1), black(), nullptr, optics, {}});
+  s.objects.push_back({quad({-2, -2, 0}, {2, -2, 0}, {2, 2, 0}, {-2, 2, 0}), Mat4(1), black(), nullptr, optics, {}, {}});
   s.renderer = RendererKind::Hall;
   EXPECT_EQ(renderScene(s).pixel(16, 16)[0], 10);
   s.renderer = RendererKind::Whitted;
@@ -249,7 +249,7 @@ TEST(RayTracer, HallsFilterAttenuatesByTheDistanceTravelledInside) {
   optics.transmissive = Color3(1);
   optics.ior = 1;
   optics.filter = Color3(0.5f, 0.25f, 1);
-  s.objects.push_back({std::make_shared<const Mesh>(makeCube(1)), glm::scale(Mat4(1), Vec3(8, 8, 2)), black(), nullptr, optics, {}});
+  s.objects.push_back({std::make_shared<const Mesh>(makeCube(1)), glm::scale(Mat4(1), Vec3(8, 8, 2)), black(), nullptr, optics, {}, {}});
   s.renderer = RendererKind::Hall;
   const Image hall = renderScene(s);
   EXPECT_EQ(hall.pixel(16, 16)[0], 64);   // 0.5²
