@@ -87,6 +87,22 @@ TEST(CliEval, CookTorranceAtNormalIncidence) {
   EXPECT_EQ(run("eval --model cook-torrance --distribution phong").exitCode, 2);
 }
 
+// eval teaches: each factor's formula with its numbers, and why a term is zero where it is.
+TEST(CliEval, ExplainsItsFactorsAndWhyATermIsZero) {
+  const RunResult behind = run("eval --angle-nl 100 --shininess 10");
+  ASSERT_EQ(behind.exitCode, 0) << behind.err;
+  EXPECT_NE(behind.out.find("the light is behind the surface (N·L = -0.1736 ≤ 0)"), std::string::npos) << behind.out;
+  EXPECT_NE(behind.out.find("(N·H)^10 would be 0.0120"), std::string::npos) << behind.out;  // 0.6428^10
+  const RunResult attenuated = run("eval --distance 2 --attenuation 1,0.5,0.25");
+  ASSERT_EQ(attenuated.exitCode, 0) << attenuated.err;
+  EXPECT_NE(attenuated.out.find("attenuation = 1/(k_c + k_l·d + k_q·d²) = 1/(1 + 0.5·2.0000 + 0.25·2.0000²) = 0.3333"),
+            std::string::npos)
+      << attenuated.out;
+  const RunResult outside = run("eval --angle-nl 40 --spot-cutoff 30 --spot-direction 0,0,-1");
+  ASSERT_EQ(outside.exitCode, 0) << outside.err;
+  EXPECT_NE(outside.out.find("40.00° off the spot's axis, outside its cutoff of 30°"), std::string::npos) << outside.out;
+}
+
 TEST(CliEval, BadInputIsRefusedClearly) {
   const RunResult zero = run("eval --normal 0,0,0");
   EXPECT_EQ(zero.exitCode, 2);

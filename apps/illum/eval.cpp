@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <limits>
 #include <cstdio>
+#include <algorithm>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -129,6 +130,41 @@ void printRow(const char* name, const Color3& c) {
 // for float, 15 for double), not the binary expansion of a float.
 std::string triple(const Color3& c) { return "[" + number(c.r) + "," + number(c.g) + "," + number(c.b) + "]"; }
 
+// The factors' formulas with their numbers, and why a term is zero where it is: what a student
+// would work out by hand next to the figures above.
+void explainFactors(const EyeLight& light, const Material& material, LightingModel model, const LightDetail& d) {
+  if (d.positional) {
+    const Vec3& k = light.attenuation;
+    const double dist = double(d.distance);
+    std::printf("attenuation = 1/(k_c + k_l·d + k_q·d²) = 1/(%g + %g·%.4f + %g·%.4f²) = %.4f\n", double(k.x), double(k.y),
+                dist, double(k.z), dist, double(d.attenuation));
+  }
+  if (light.isSpot()) {
+    const double cosAngle = double(glm::dot(-d.L, glm::normalize(light.spotDirection)));
+    const double angle = glm::degrees(std::acos(std::clamp(cosAngle, -1.0, 1.0)));
+    if (cosAngle < double(light.spotCosCutoff))
+      std::printf("spot: the point is %.2f° off the spot's axis, outside its cutoff of %g°: spot factor 0, the light "
+                  "adds nothing\n",
+                  angle, double(light.spotCutoff));
+    else
+      std::printf("spot: the point is %.2f° off the spot's axis, inside its cutoff of %g°: factor cos(%.2f°)^%g = %.4f\n",
+                  angle, double(light.spotCutoff), angle, double(light.spotExponent), double(d.spot));
+  }
+  if (!(d.NoL > 0)) {
+    std::printf("diffuse and specular are 0: the light is behind the surface (N·L = %.4f ≤ 0), and GL adds a light's "
+                "diffuse and specular terms only where N·L > 0",
+                double(d.NoL));
+    const double base = model == LightingModel::BlinnPhong ? double(d.NoH) : model == LightingModel::Phong ? double(d.RoV) : -1;
+    if (base > 0 && model != LightingModel::CookTorrance)
+      std::printf(" (%s^%g would be %.4f)", model == LightingModel::BlinnPhong ? "(N·H)" : "(R·V)",
+                  double(material.shininess), std::pow(base, double(material.shininess)));
+    std::printf("\n");
+  } else if ((model == LightingModel::BlinnPhong && !(d.NoH > 0)) || (model == LightingModel::Phong && !(d.RoV > 0))) {
+    std::printf("specular is 0: %s ≤ 0, the highlight's lobe points away from the viewer\n",
+                model == LightingModel::BlinnPhong ? "N·H" : "R·V");
+  }
+}
+
 int runEval(const EvalOptions& o) {
   const auto model = parseLightingModel(o.model);
   if (!model) badChoice("--model", o.model, lightingModelChoices());
@@ -239,6 +275,7 @@ int runEval(const EvalOptions& o) {
                 vec(d.F).c_str());
   std::printf("\nattenuation %.4f%s; spot factor %.4f%s\n", double(d.attenuation),
               d.positional ? "" : " (directional light)", double(d.spot), light.isSpot() ? "" : " (no cone)");
+  explainFactors(light, material, *model, d);
   return 0;
 }
 
