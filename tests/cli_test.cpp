@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <vector>
 #include <sys/wait.h>
 
@@ -101,6 +102,36 @@ TEST(CliEval, ExplainsItsFactorsAndWhyATermIsZero) {
   const RunResult outside = run("eval --angle-nl 40 --spot-cutoff 30 --spot-direction 0,0,-1");
   ASSERT_EQ(outside.exitCode, 0) << outside.err;
   EXPECT_NE(outside.out.find("40.00° off the spot's axis, outside its cutoff of 30°"), std::string::npos) << outside.out;
+}
+
+// A sweep: the terms against one angle, distance or shininess, a row each (or a JSON array).
+TEST(CliEval, SweepsOneValueAsATable) {
+  const RunResult r = run("eval --angle-nl 0:90:30");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  std::istringstream lines(r.out);
+  std::string header, line;
+  std::getline(lines, header);
+  EXPECT_EQ(header.rfind("angle-nl", 0), 0u) << header;
+  int rows = 0;
+  for (const double theta : {0.0, 30.0, 60.0, 90.0}) {
+    ASSERT_TRUE(std::getline(lines, line));
+    ++rows;
+    // Lambert: the diffuse term is 0.8·cos θ (the default material and light).
+    char expected[32];
+    std::snprintf(expected, sizeof expected, "%.4f", 0.8 * std::cos(theta * 3.14159265358979 / 180) + 0.0);
+    EXPECT_NE(line.find(std::string("| ") + (theta == 90.0 ? "0.0000" : expected)), std::string::npos) << line;
+  }
+  EXPECT_FALSE(std::getline(lines, line)) << line;
+  EXPECT_EQ(rows, 4);
+  const auto json = nlohmann::json::parse(run("eval --json --distance 1,2,4 --attenuation 0,0,1").out);
+  ASSERT_EQ(json.size(), 3u);
+  EXPECT_NEAR(json[2]["diffuse"][0].get<double>(), 0.8 / 16, 1e-6);  // 1/d² at d = 4
+  const RunResult two = run("eval --angle-nl 0:90:5 --shininess 1,2");
+  EXPECT_EQ(two.exitCode, 2);
+  EXPECT_NE(two.err.find("a sweep varies one of them at a time"), std::string::npos) << two.err;
+  const RunResult many = run("eval --angle-nl 0:90:0.01");
+  EXPECT_EQ(many.exitCode, 2);
+  EXPECT_NE(many.err.find("9001 values; expected at most 1000"), std::string::npos) << many.err;
 }
 
 TEST(CliEval, BadInputIsRefusedClearly) {

@@ -14,6 +14,9 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <string>
+#include <vector>
+#include <sstream>
 
 namespace illum::cli {
 namespace {
@@ -165,7 +168,18 @@ void explainFactors(const EyeLight& light, const Material& material, LightingMod
   }
 }
 
-int runEval(const EvalOptions& o) {
+// One evaluation: everything the report prints.
+struct Evaluation {
+  LightingModel model;
+  Geometry g;
+  EyeLight light;
+  Material material;
+  LightingTerms terms;
+  LightDetail d;
+  Color3 total;
+};
+
+Evaluation evaluate(const EvalOptions& o) {
   const auto model = parseLightingModel(o.model);
   if (!model) badChoice("--model", o.model, lightingModelChoices());
 
@@ -236,17 +250,22 @@ int runEval(const EvalOptions& o) {
   LightDetail d;
   accumulateLight(terms, light, material, *model, surface, &d);
   const Color3 total = Color3(clampedColor(terms, material));
+  return {*model, g, light, material, terms, d, total};
+}
+
+int printEvaluation(const EvalOptions& o, const Evaluation& e) {
+  const auto& [model, g, light, material, terms, d, total] = e;
   if (o.json) {
     std::cout << "{\"emission\":" << triple(terms.emission) << ",\"ambient\":" << triple(terms.ambient)
               << ",\"diffuse\":" << triple(terms.diffuse) << ",\"specular\":" << triple(terms.specular)
               << ",\"total\":" << triple(total) << ",\"N\":" << triple(g.N) << ",\"L\":" << triple(d.L)
               << ",\"V\":" << triple(g.V) << ",\"NoL\":" << number(d.NoL);
-    if (*model == LightingModel::BlinnPhong) std::cout << ",\"H\":" << triple(d.H) << ",\"NoH\":" << number(d.NoH);
-    if (*model == LightingModel::CookTorrance)
+    if (model == LightingModel::BlinnPhong) std::cout << ",\"H\":" << triple(d.H) << ",\"NoH\":" << number(d.NoH);
+    if (model == LightingModel::CookTorrance)
       std::cout << ",\"H\":" << triple(d.H) << ",\"NoH\":" << number(d.NoH) << ",\"NoV\":" << number(d.NoV)
                 << ",\"VoH\":" << number(d.VoH) << ",\"D\":" << number(d.D) << ",\"Vis\":" << number(d.visibility)
                 << ",\"F\":" << triple(d.F);
-    if (*model == LightingModel::Phong) std::cout << ",\"R\":" << triple(d.R) << ",\"RoV\":" << number(d.RoV);
+    if (model == LightingModel::Phong) std::cout << ",\"R\":" << triple(d.R) << ",\"RoV\":" << number(d.RoV);
     std::cout << ",\"attenuation\":" << number(d.attenuation) << ",\"spot\":" << number(d.spot) << "}\n";
     return 0;
   }
@@ -260,22 +279,95 @@ int runEval(const EvalOptions& o) {
   if (sum != total)
     std::printf("(Total is clamped to [0,1] per channel; the unclamped sum is %.4f %.4f %.4f)\n",
                 double(sum.r), double(sum.g), double(sum.b));
-  std::printf("model %s; N = %s, L = %s, V = %s\n", std::string(toString(*model)).c_str(), vec(g.N).c_str(),
+  std::printf("model %s; N = %s, L = %s, V = %s\n", std::string(toString(model)).c_str(), vec(g.N).c_str(),
               vec(d.L).c_str(), vec(g.V).c_str());
   std::printf("N·L = %.4f", double(d.NoL));
-  if (*model == LightingModel::BlinnPhong)
+  if (model == LightingModel::BlinnPhong)
     std::printf("; H = %s, N·H = %.4f, (N·H)^%g = %.4f", vec(d.H).c_str(), double(d.NoH), double(material.shininess),
                 double(d.lobe));
-  if (*model == LightingModel::Phong)
+  if (model == LightingModel::Phong)
     std::printf("; R = %s, R·V = %.4f, (R·V)^%g = %.4f", vec(d.R).c_str(), double(d.RoV), double(material.shininess),
                 double(d.lobe));
-  if (*model == LightingModel::CookTorrance)
+  if (model == LightingModel::CookTorrance)
     std::printf("; H = %s, N·H = %.4f, N·V = %.4f, V·H = %.4f\nD = %.4f, V = G/(4 N·L N·V) = %.4f, F = %s",
                 vec(d.H).c_str(), double(d.NoH), double(d.NoV), double(d.VoH), double(d.D), double(d.visibility),
                 vec(d.F).c_str());
   std::printf("\nattenuation %.4f%s; spot factor %.4f%s\n", double(d.attenuation),
               d.positional ? "" : " (directional light)", double(d.spot), light.isSpot() ? "" : " (no cone)");
-  explainFactors(light, material, *model, d);
+  explainFactors(light, material, model, d);
+  return 0;
+}
+
+// The options a sweep may vary, by name, and where their text is.
+struct SweepOption {
+  const char* name;
+  std::string EvalOptions::*text;
+};
+constexpr SweepOption kSweepable[] = {{"--angle-nl", &EvalOptions::angleNL}, {"--angle-rv", &EvalOptions::angleRV},
+                                      {"--angle-nh", &EvalOptions::angleNH}, {"--distance", &EvalOptions::distance},
+                                      {"--shininess", &EvalOptions::shininess}};
+constexpr std::size_t kMostSweepValues = 1000;
+
+// A sweep's values: "from:to:step" (to included, within rounding) or "a,b,c"; one number is no sweep.
+std::vector<std::string> sweepValues(const std::string& option, const std::string& text) {
+  std::vector<std::string> values;
+  if (text.find(':') != std::string::npos) {
+    std::vector<std::string> parts;
+    std::stringstream in(text);
+    for (std::string part; std::getline(in, part, ':');) parts.push_back(part);
+    if (parts.size() != 3) throw InputError(option + ": expected a sweep from:to:step, got \"" + text + "\"");
+    const Real from = parseNumber(option, parts[0], Real(-1e30), Real(1e30)), to = parseNumber(option, parts[1], Real(-1e30), Real(1e30));
+    const Real step = parseNumber(option, parts[2], Real(0), Real(1e30));
+    if (!(step > 0) || to < from) throw InputError(option + ": expected from ≤ to and a positive step, got \"" + text + "\"");
+    const double count = std::floor(double(to - from) / double(step) + 1e-9) + 1;
+    if (count > double(kMostSweepValues))
+      throw InputError(option + ": " + text + " is " + std::to_string(std::llround(count)) + " values; expected at most " +
+                       std::to_string(kMostSweepValues));
+    for (long i = 0; i < long(count); ++i) values.push_back(number(from + Real(i) * step));
+  } else {
+    std::stringstream in(text);
+    for (std::string value; std::getline(in, value, ',');) values.push_back(value);
+    if (values.size() > kMostSweepValues)
+      throw InputError(option + ": " + std::to_string(values.size()) + " values; expected at most " + std::to_string(kMostSweepValues));
+  }
+  return values;
+}
+
+int runEval(const EvalOptions& o) {
+  const SweepOption* swept = nullptr;
+  for (const SweepOption& s : kSweepable)
+    if ((o.*s.text).find_first_of(",:") != std::string::npos) {
+      if (swept) throw InputError(std::string(swept->name) + " and " + s.name + ": a sweep varies one of them at a time");
+      swept = &s;
+    }
+  if (!swept) return printEvaluation(o, evaluate(o));
+  // The terms against the swept value, a row each (JSON: an array of the single reports).
+  const std::vector<std::string> values = sweepValues(swept->name, o.*swept->text);
+  if (o.json) std::cout << "[";
+  else
+    std::printf("%-12s | %-20s | %-20s | %-20s | %-20s | %-20s\n", swept->name + 2, "emission R G B", "ambient R G B",
+                "diffuse R G B", "specular R G B", "total R G B");
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    EvalOptions at = o;
+    at.*swept->text = values[i];
+    const Evaluation e = evaluate(at);
+    if (o.json) {
+      if (i) std::cout << ",";
+      std::cout << "{\"" << (swept->name + 2) << "\":" << values[i] << ",\"emission\":" << triple(e.terms.emission)
+                << ",\"ambient\":" << triple(e.terms.ambient) << ",\"diffuse\":" << triple(e.terms.diffuse)
+                << ",\"specular\":" << triple(e.terms.specular) << ",\"total\":" << triple(e.total) << "}";
+      continue;
+    }
+    const auto cell = [](const Color3& c) {
+      char buf[64];
+      std::snprintf(buf, sizeof buf, "%.4f %.4f %.4f", double(c.r), double(c.g), double(c.b));
+      return std::string(buf);
+    };
+    std::printf("%-12s | %-20s | %-20s | %-20s | %-20s | %-20s\n", values[i].c_str(), cell(e.terms.emission).c_str(),
+                cell(e.terms.ambient).c_str(), cell(e.terms.diffuse).c_str(), cell(e.terms.specular).c_str(),
+                cell(e.total).c_str());
+  }
+  if (o.json) std::cout << "]\n";
   return 0;
 }
 
