@@ -31,6 +31,9 @@ constexpr float kSigmaAlbedo = 0.02f;  // |a_p − a_q|
 // normal is so far from any unit normal that their weight is exactly 0.
 constexpr int kPad = 2 << (kPasses - 1);
 constexpr float kFarNormal = 1e10f;
+// Floats after each padded row that belong to no pixel: a vector that starts at a row's last pixel
+// and a tap kPad to its right still ends inside its own row (and inside the planes at the last).
+constexpr int kVectorSlack = 64;
 
 // The planes the passes read and write, each padded by kPad on every side.
 struct Planes {
@@ -133,7 +136,7 @@ void denoise(const DenoiseInput& in, std::span<float> out) {
   const std::size_t pixels = std::size_t(w) * std::size_t(h);
   Planes planes[2];
   for (Planes& p : planes) {
-    p.width = w, p.height = h, p.stride = w + 2 * kPad;
+    p.width = w, p.height = h, p.stride = w + 2 * kPad + kVectorSlack;
     const std::size_t size = std::size_t(p.stride) * std::size_t(h + 2 * kPad);
     for (int k = 0; k < 3; ++k) p.color[k].assign(size, 0.0f);
     p.luminance.assign(size, 0.0f);
