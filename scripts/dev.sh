@@ -15,7 +15,8 @@ PACKAGES=(
   libsdl2-dev libimgui-dev
   slurmctld slurmd slurm-client munge
   libgtest-dev libbenchmark-dev libosmesa6-dev assimp-testmodels fonts-dejavu-core
-  xvfb xdotool x11-apps imagemagick bubblewrap
+  xvfb xdotool x11-apps imagemagick bubblewrap help2man
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-nbclient python3-nbformat python3-ipykernel python3-ipywidgets
   clang libclang-rt-14-dev
 )
 

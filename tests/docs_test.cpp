@@ -1,6 +1,8 @@
 // The docs say what happens: every `sh` example in README.md and docs/*.md runs as written (with
-// the built illum first on PATH, in a scratch folder that has the repository's examples/), and
-// where the docs show its output in the block that follows, that is the output. Every link and
+// the built illum first on PATH, in a scratch folder that has the repository's examples/), every
+// `python` example runs with the built module (Debian's /usr/bin/python3), every `cpp` example is
+// compiled against the built library's public headers and runs, and where the docs show an
+// example's output in the block that follows, that is the output. Every link and
 // every model path the docs name exists.
 #include "cli_support.h"
 
@@ -11,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -60,13 +63,30 @@ bool isSetUp(const std::string& script) {
   return script.find("scripts/dev.sh") != std::string::npos || script.find("cmake ") != std::string::npos;
 }
 
-illum::test::RunResult runScript(const std::string& script, const fs::path& cwd) {
+// Runs an example of `language` (sh, python or cpp) in `cwd`; nullopt when this build has nothing
+// to run it with (a sanitized build has no Python module, and its library links only sanitized).
+std::optional<illum::test::RunResult> runExample(const std::string& language, const std::string& script, const fs::path& cwd) {
   const fs::path bin = cwd / "bin";
   fs::create_directories(bin);
   if (!fs::exists(bin / "illum")) fs::create_symlink(ILLUM_CLI, bin / "illum");
   if (!fs::exists(cwd / "examples")) fs::create_directory_symlink(kRepo / "examples", cwd / "examples");
-  std::ofstream(cwd / "example.sh") << "set -e\n" << script;
-  return illum::test::runShell("cd '" + cwd.string() + "' && PATH='" + bin.string() + "':\"$PATH\" sh example.sh");
+  const std::string in = "cd '" + cwd.string() + "' && PATH='" + bin.string() + "':\"$PATH\" ";
+  if (language == "sh") {
+    std::ofstream(cwd / "example.sh") << "set -e\n" << script;
+    return illum::test::runShell(in + "sh example.sh");
+  }
+  if (language == "python") {
+    if (std::string(ILLUM_DOCS_PYTHON_PATH).empty()) return std::nullopt;
+    std::ofstream(cwd / "example.py") << script;
+    return illum::test::runShell(in + "PYTHONPATH='" + ILLUM_DOCS_PYTHON_PATH + "' /usr/bin/python3 example.py");
+  }
+  if (std::string(ILLUM_DOCS_LIBRARY_DIR).empty()) return std::nullopt;
+  std::ofstream(cwd / "example.cpp") << script;
+  const illum::test::RunResult built = illum::test::runShell(
+      in + "g++ -std=c++17 -I'" + ILLUM_DOCS_PUBLIC_INCLUDE + "' example.cpp -o example -L'" + ILLUM_DOCS_LIBRARY_DIR +
+      "' -lillum -Wl,-rpath,'" + ILLUM_DOCS_LIBRARY_DIR + "'");
+  if (built.exitCode != 0) return built;
+  return illum::test::runShell(in + "./example");
 }
 
 TEST(Docs, EveryShellExampleRunsAndShowsItsOutput) {
@@ -74,11 +94,15 @@ TEST(Docs, EveryShellExampleRunsAndShowsItsOutput) {
   for (const fs::path& doc : documents()) {
     const std::vector<Block> blocks = codeBlocks(doc);
     for (std::size_t i = 0; i < blocks.size(); ++i) {
-      if (blocks[i].language != "sh" || isSetUp(blocks[i].text)) continue;
+      const std::string& language = blocks[i].language;
+      if ((language != "sh" && language != "python" && language != "cpp") || (language == "sh" && isSetUp(blocks[i].text)))
+        continue;
       const fs::path cwd = fs::temp_directory_path() / ("illum_docs_" + std::to_string(::getpid()) + "_" + std::to_string(examples++));
       fs::remove_all(cwd);
       fs::create_directories(cwd);
-      const illum::test::RunResult r = runScript(blocks[i].text, cwd);
+      const std::optional<illum::test::RunResult> run = runExample(language, blocks[i].text, cwd);
+      if (!run) continue;
+      const illum::test::RunResult& r = *run;
       const std::string where = doc.filename().string() + ":" + std::to_string(blocks[i].line);
       EXPECT_EQ(r.exitCode, 0) << where << "\n" << blocks[i].text << r.err;
       if (i + 1 < blocks.size() && blocks[i + 1].language.empty() && blocks[i + 1].line <= blocks[i].line + 20) {

@@ -20,9 +20,9 @@ const std::vector<std::pair<std::string, std::string>> kOptionSynonyms = {
     {"--threads-count", "--threads"},    {"--light", "--light-intensity"},
 };
 
-// Every name of `command`'s options, with their dashes.
+// Every name of `command`'s options, with their dashes (`app` itself when it is that command).
 std::vector<std::string> optionNames(const CLI::App& app, const std::string& command) {
-  const CLI::App* sub = command.empty() ? &app : app.get_subcommand(command);
+  const CLI::App* sub = command.empty() || app.get_name() == command ? &app : app.get_subcommand(command);
   std::vector<std::string> names;
   for (const CLI::Option* option : sub->get_options()) {
     for (const std::string& l : option->get_lnames()) names.push_back("--" + l);

@@ -16,7 +16,8 @@ namespace illum::cli {
 // neither, like "rendr", is a mistyped command: the message for it, with the closest command.
 std::optional<std::string> unknownCommand(const std::string& first, const std::vector<std::string>& commands);
 
-// The message for a parse error of `command` (the subcommand's name, or empty).
+// The message for a parse error of `command` (the subcommand's name, or empty; `app` may be that
+// subcommand itself).
 std::string explainParseError(const CLI::ParseError& error, const CLI::App& app, const std::string& command);
 
 }  // namespace illum::cli

@@ -9,6 +9,7 @@
 #include <illum/sheet.h>
 
 #include "commands.h"
+#include "compare.h"
 #include "scene_options.h"
 #include "sheet_axes.h"
 #include "sheet_output.h"
@@ -22,12 +23,6 @@
 namespace illum::cli {
 namespace {
 
-struct CompareOptions {
-  SceneOptions scene;
-  std::string rows = "model", cols = "shading", diff;
-  SheetOutput out{"compare.png", false, false, std::nullopt};
-};
-
 std::string figures(const DifferencePanel& d) {
   char text[96];
   if (std::isinf(d.psnr)) std::snprintf(text, sizeof text, "identical");
@@ -35,10 +30,12 @@ std::string figures(const DifferencePanel& d) {
   return text;
 }
 
-int runCompare(const CompareOptions& o) {
-  checkSheetOutput(o.out);
+}  // namespace
+
+Sheet compareSheet(const CompareOptions& o, ModelCache* models) {
   const ThreadLimit limit(o.scene);
-  ModelCache cache;
+  ModelCache own;
+  ModelCache& cache = models ? *models : own;
   SceneOptions base = o.scene;
   const Scene first = prepareScene(base, nullptr, &cache);
   defaultPanelSize(base, first);
@@ -110,6 +107,14 @@ int runCompare(const CompareOptions& o) {
     sheet.rowLabels.push_back(rows.values[diffRows->first] + " vs " + rows.values[diffRows->second]);
   }
 
+  return sheet;
+}
+
+namespace {
+
+int runCompare(const CompareOptions& o) {
+  checkSheetOutput(o.out);
+  const Sheet sheet = compareSheet(o);
   writeSheet(sheet, o.out, o.scene.verbose,
              [&](std::size_t r, std::size_t c) { return sheet.rowLabels[r] + " / " + sheet.columnLabels[c]; });
   return 0;
@@ -120,6 +125,14 @@ int runCompare(const CompareOptions& o) {
 Command addCompareCommand(CLI::App& app) {
   auto o = std::make_shared<CompareOptions>();
   CLI::App* cmd = app.add_subcommand("compare", "Render a scene under two axes of settings into one labelled sheet");
+  addCompareOptions(*cmd, *o);
+  addSheetOutputOptions(*cmd, o->out);
+  return [o] { return runCompare(*o); };
+}
+
+void addCompareOptions(CLI::App& command, CompareOptions& options) {
+  CLI::App* cmd = &command;
+  CompareOptions* o = &options;
   cmd->footer(
       "An axis is NAME or NAME=v1,v2,... (';' between values that hold commas):\n"
       "  model, shading, renderer, samples, max-depth, tone-map, encoding, normals, crease-angle,\n"
@@ -130,8 +143,6 @@ Command addCompareCommand(CLI::App& app) {
   cmd->add_option("--rows", o->rows, "The axis down the sheet")->capture_default_str();
   cmd->add_option("--cols", o->cols, "The axis across the sheet")->capture_default_str();
   cmd->add_option("--diff", o->diff, "A,B: add panels showing where values A and B of one axis differ (max, PSNR)");
-  addSheetOutputOptions(*cmd, o->out);
-  return [o] { return runCompare(*o); };
 }
 
 }  // namespace illum::cli

@@ -5,6 +5,7 @@
 
 #include "cli_values.h"
 #include "commands.h"
+#include "eval.h"
 
 #include <cmath>
 #include <cstdlib>
@@ -20,18 +21,6 @@
 
 namespace illum::cli {
 namespace {
-
-struct EvalOptions {
-  std::string model = "blinn-phong";
-  std::string lightAmbient, lightDiffuse, lightSpecular;
-  std::string materialAmbient, materialDiffuse, materialSpecular, materialEmission;
-  std::string shininess, globalAmbient, distance, attenuation;
-  std::string angleNL, angleRV, angleNH;
-  std::string normal, toLight, toViewer;
-  std::string spotDirection, spotExponent, spotCutoff;
-  std::string baseColor, metallic, roughness, f0, distribution;  // a physically based material
-  bool json = false;
-};
 
 struct Geometry {
   Vec3 N, L, V;
@@ -253,20 +242,28 @@ Evaluation evaluate(const EvalOptions& o) {
   return {*model, g, light, material, terms, d, total};
 }
 
+// The report as one JSON object: the terms unclamped, the total clamped, the vectors and factors.
+std::string evaluationJson(const Evaluation& e) {
+  const auto& [model, g, light, material, terms, d, total] = e;
+  std::ostringstream json;
+    json << "{\"emission\":" << triple(terms.emission) << ",\"ambient\":" << triple(terms.ambient)
+            << ",\"diffuse\":" << triple(terms.diffuse) << ",\"specular\":" << triple(terms.specular)
+            << ",\"total\":" << triple(total) << ",\"N\":" << triple(g.N) << ",\"L\":" << triple(d.L)
+            << ",\"V\":" << triple(g.V) << ",\"NoL\":" << number(d.NoL);
+  if (model == LightingModel::BlinnPhong) json << ",\"H\":" << triple(d.H) << ",\"NoH\":" << number(d.NoH);
+  if (model == LightingModel::CookTorrance)
+    json << ",\"H\":" << triple(d.H) << ",\"NoH\":" << number(d.NoH) << ",\"NoV\":" << number(d.NoV)
+              << ",\"VoH\":" << number(d.VoH) << ",\"D\":" << number(d.D) << ",\"Vis\":" << number(d.visibility)
+              << ",\"F\":" << triple(d.F);
+  if (model == LightingModel::Phong) json << ",\"R\":" << triple(d.R) << ",\"RoV\":" << number(d.RoV);
+  json << ",\"attenuation\":" << number(d.attenuation) << ",\"spot\":" << number(d.spot) << "}";
+  return json.str();
+}
+
 int printEvaluation(const EvalOptions& o, const Evaluation& e) {
   const auto& [model, g, light, material, terms, d, total] = e;
   if (o.json) {
-    std::cout << "{\"emission\":" << triple(terms.emission) << ",\"ambient\":" << triple(terms.ambient)
-              << ",\"diffuse\":" << triple(terms.diffuse) << ",\"specular\":" << triple(terms.specular)
-              << ",\"total\":" << triple(total) << ",\"N\":" << triple(g.N) << ",\"L\":" << triple(d.L)
-              << ",\"V\":" << triple(g.V) << ",\"NoL\":" << number(d.NoL);
-    if (model == LightingModel::BlinnPhong) std::cout << ",\"H\":" << triple(d.H) << ",\"NoH\":" << number(d.NoH);
-    if (model == LightingModel::CookTorrance)
-      std::cout << ",\"H\":" << triple(d.H) << ",\"NoH\":" << number(d.NoH) << ",\"NoV\":" << number(d.NoV)
-                << ",\"VoH\":" << number(d.VoH) << ",\"D\":" << number(d.D) << ",\"Vis\":" << number(d.visibility)
-                << ",\"F\":" << triple(d.F);
-    if (model == LightingModel::Phong) std::cout << ",\"R\":" << triple(d.R) << ",\"RoV\":" << number(d.RoV);
-    std::cout << ",\"attenuation\":" << number(d.attenuation) << ",\"spot\":" << number(d.spot) << "}\n";
+    std::cout << evaluationJson(e) << "\n";
     return 0;
   }
   std::printf("%-10s %9s %9s %9s\n", "", "R", "G", "B");
@@ -333,50 +330,71 @@ std::vector<std::string> sweepValues(const std::string& option, const std::strin
   return values;
 }
 
-int runEval(const EvalOptions& o) {
+// The option a sweep varies (one of --angle-nl, ..., given as from:to:step or a list), or none.
+const SweepOption* sweptOption(const EvalOptions& o) {
   const SweepOption* swept = nullptr;
   for (const SweepOption& s : kSweepable)
     if ((o.*s.text).find_first_of(",:") != std::string::npos) {
       if (swept) throw InputError(std::string(swept->name) + " and " + s.name + ": a sweep varies one of them at a time");
       swept = &s;
     }
+  return swept;
+}
+
+int runEval(const EvalOptions& o) {
+  const SweepOption* swept = sweptOption(o);
+  if (o.json) {
+    std::cout << evalJson(o) << "\n";
+    return 0;
+  }
   if (!swept) return printEvaluation(o, evaluate(o));
-  // The terms against the swept value, a row each (JSON: an array of the single reports).
+  // The terms against the swept value, a row each.
   const std::vector<std::string> values = sweepValues(swept->name, o.*swept->text);
-  if (o.json) std::cout << "[";
-  else
-    std::printf("%-12s | %-20s | %-20s | %-20s | %-20s | %-20s\n", swept->name + 2, "emission R G B", "ambient R G B",
-                "diffuse R G B", "specular R G B", "total R G B");
-  for (std::size_t i = 0; i < values.size(); ++i) {
+  std::printf("%-12s | %-20s | %-20s | %-20s | %-20s | %-20s\n", swept->name + 2, "emission R G B", "ambient R G B",
+              "diffuse R G B", "specular R G B", "total R G B");
+  for (const std::string& value : values) {
     EvalOptions at = o;
-    at.*swept->text = values[i];
+    at.*swept->text = value;
     const Evaluation e = evaluate(at);
-    if (o.json) {
-      if (i) std::cout << ",";
-      std::cout << "{\"" << (swept->name + 2) << "\":" << values[i] << ",\"emission\":" << triple(e.terms.emission)
-                << ",\"ambient\":" << triple(e.terms.ambient) << ",\"diffuse\":" << triple(e.terms.diffuse)
-                << ",\"specular\":" << triple(e.terms.specular) << ",\"total\":" << triple(e.total) << "}";
-      continue;
-    }
     const auto cell = [](const Color3& c) {
       char buf[64];
       std::snprintf(buf, sizeof buf, "%.4f %.4f %.4f", double(c.r), double(c.g), double(c.b));
       return std::string(buf);
     };
-    std::printf("%-12s | %-20s | %-20s | %-20s | %-20s | %-20s\n", values[i].c_str(), cell(e.terms.emission).c_str(),
+    std::printf("%-12s | %-20s | %-20s | %-20s | %-20s | %-20s\n", value.c_str(), cell(e.terms.emission).c_str(),
                 cell(e.terms.ambient).c_str(), cell(e.terms.diffuse).c_str(), cell(e.terms.specular).c_str(),
                 cell(e.total).c_str());
   }
-  if (o.json) std::cout << "]\n";
   return 0;
 }
 
 }  // namespace
 
+std::string evalJson(const EvalOptions& o) {
+  const SweepOption* swept = sweptOption(o);
+  if (!swept) return evaluationJson(evaluate(o));
+  // A sweep: an array of the single reports, each with the swept value first.
+  std::string json = "[";
+  for (const std::string& value : sweepValues(swept->name, o.*swept->text)) {
+    EvalOptions at = o;
+    at.*swept->text = value;
+    json += (json.size() > 1 ? ",{\"" : "{\"") + std::string(swept->name + 2) + "\":" + value + "," +
+            evaluationJson(evaluate(at)).substr(1);
+  }
+  return json + "]";
+}
+
 Command addEvalCommand(CLI::App& app) {
   auto o = std::make_shared<EvalOptions>();
   CLI::App* cmd = app.add_subcommand(
       "eval", "Evaluate the lighting equation at one surface point for one light and print its terms");
+  addEvalOptions(*cmd, *o);
+  return [o] { return runEval(*o); };
+}
+
+void addEvalOptions(CLI::App& cmd_, EvalOptions& options) {
+  CLI::App* cmd = &cmd_;
+  EvalOptions* o = &options;
   cmd->footer(
       "Example (the 'Colored light' exercise of the seed lecture notes):\n"
       "  illum eval --model phong --distance 1 --angle-nl 30 --angle-rv 0 \\\n"
@@ -410,7 +428,6 @@ Command addEvalCommand(CLI::App& app) {
   cmd->add_option("--f0", o->f0, "cook-torrance: a dielectric's reflectance at normal incidence R,G,B [0.04,0.04,0.04]");
   cmd->add_option("--distribution", o->distribution, "cook-torrance: ggx or beckmann [ggx]");
   cmd->add_flag("--json", o->json, "Print the terms as JSON (terms unclamped, total clamped)");
-  return [o] { return runEval(*o); };
 }
 
 }  // namespace illum::cli

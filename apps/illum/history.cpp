@@ -8,6 +8,7 @@
 #include <illum/sheet.h>
 
 #include "commands.h"
+#include "history.h"
 #include "scene_options.h"
 #include "sheet_output.h"
 
@@ -19,11 +20,6 @@
 
 namespace illum::cli {
 namespace {
-
-struct HistoryOptions {
-  SceneOptions scene;
-  SheetOutput out{"history.png", false, false, std::nullopt};
-};
 
 // One step of the history: who, when, what, and how illum draws it.
 struct Step {
@@ -58,18 +54,20 @@ void lightFromTheEye(Scene& scene) {
   scene.lights = {light};
 }
 
-int runHistory(const HistoryOptions& o) {
-  checkSheetOutput(o.out);
-  const ThreadLimit limit(o.scene);
-  if (!o.scene.model.empty() || !o.scene.shading.empty() || !o.scene.renderer.empty())
+}  // namespace
+
+Sheet historySheet(const SceneOptions& o, ModelCache* models) {
+  const ThreadLimit limit(o);
+  if (!o.model.empty() || !o.shading.empty() || !o.renderer.empty())
     throw InputError("--model, --shading and --renderer: the history sets them panel by panel; use `illum render` for one");
-  ModelCache cache;
-  SceneOptions base = o.scene;
+  ModelCache own;
+  ModelCache& cache = models ? *models : own;
+  SceneOptions base = o;
   const Scene first = prepareScene(base, nullptr, &cache);
   defaultPanelSize(base, first);
   checkSheetPixels(std::size(kSteps), base, first);
   Sheet sheet;
-  sheet.title = "Lighting from Wylie (1967) to Kajiya (1986): " + inputName(o.scene);
+  sheet.title = "Lighting from Wylie (1967) to Kajiya (1986): " + inputName(o);
   Renderer renderer;
   int index = 0;
   for (const Step& step : kSteps) {
@@ -86,6 +84,19 @@ int runHistory(const HistoryOptions& o) {
     sheet.panels.back().push_back({std::move(image), std::string(step.year) + " · " + step.authors + "\n" + step.formula});
     ++index;
   }
+  return sheet;
+}
+
+namespace {
+
+struct HistoryOptions {
+  SceneOptions scene;
+  SheetOutput out{"history.png", false, false, std::nullopt};
+};
+
+int runHistory(const HistoryOptions& o) {
+  checkSheetOutput(o.out);
+  const Sheet sheet = historySheet(o.scene);
   writeSheet(sheet, o.out, o.scene.verbose, [](std::size_t r, std::size_t c) {
     const Step& step = kSteps[r * kColumns + c];
     return std::string(step.year) + " / " + step.model + " " + step.shading + " " + step.renderer;

@@ -24,6 +24,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// A warning goes into `warnings` when the caller collects them (a batch's JSON, the library), or to stderr.
+void warn(std::vector<std::string>* warnings, const std::string& text) {
+  if (warnings) warnings->push_back(text);
+  else std::fprintf(stderr, "illum: warning: %s\n", text.c_str());
+}
+
 bool isSceneFile(const std::string& path) {
   return isSceneFileName(path);
 }
@@ -270,8 +276,7 @@ void rejectTracedPointsAndLines(const Scene& scene, std::vector<std::string>* wa
     throw InputError("the " + renderer + " renderer: the scene holds only points and lines, which the rasterizer draws; " +
                      "the ray tracers trace surfaces (use --renderer raster)");
   const std::string w = "the ray tracers trace surfaces: the scene's points and lines are left out (the rasterizer draws them)";
-  if (warnings) warnings->push_back(w);
-  else std::fprintf(stderr, "illum: warning: %s\n", w.c_str());
+  warn(warnings, w);
 }
 
 }  // namespace
@@ -409,7 +414,9 @@ Scene prepareScene(SceneOptions o, double* loadMs, ModelCache* cache, std::vecto
   if (o.input.empty() || (piped ? piped->isScene() : isSceneFile(o.input))) {
     rejectModelOnlyOptions(o);
     // The built-in scene's captions name the model and shading it is drawn with.
-    scene = o.input.empty() ? defaultScene(lightingModel.value_or(LightingModel::BlinnPhong),
+    scene = o.memoryScene ? parseScene(o.memoryScene->text, "the scene given", o.memoryScene->baseDir, o.limits,
+                                       cache ? &cache->sceneModels : nullptr)
+            : o.input.empty() ? defaultScene(lightingModel.value_or(LightingModel::BlinnPhong),
                                            shading.value_or(Shading::Phong), renderer.value_or(RendererKind::Raster))
             : piped ? parseScene(piped->text(), "standard input", std::filesystem::current_path(), o.limits,
                                  cache ? &cache->sceneModels : nullptr)
@@ -440,8 +447,7 @@ Scene prepareScene(SceneOptions o, double* loadMs, ModelCache* cache, std::vecto
     model = *entry.model;
     if (report)
       for (const std::string& w : model->warnings) {
-        if (warnings) warnings->push_back(w);
-        else std::fprintf(stderr, "illum: warning: %s\n", w.c_str());
+        warn(warnings, w);
       }
     if (o.verbose && report) {
       std::string primitives = withThousands(model->triangleCount) + " triangles";
@@ -494,7 +500,7 @@ Scene prepareScene(SceneOptions o, double* loadMs, ModelCache* cache, std::vecto
     while (count > *o.samples) count /= count == 4 ? 4 : 2;  // the largest of 16, 8, 4, 1 at most asked
     scene.multisample = count;
     if (count != *o.samples && scene.renderer == RendererKind::Raster)
-      std::fprintf(stderr, "illum: warning: --samples: the rasterizer takes 1, 4, 8 or 16 samples per pixel; using %d\n", count);
+      warn(warnings, "--samples: the rasterizer takes 1, 4, 8 or 16 samples per pixel; using " + std::to_string(count));
   } else if (model && scene.renderer == RendererKind::Raster) {
     scene.multisample = 8;  // previews are anti-aliased
   }

@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 #include <tbb/global_control.h>
 
+#include <filesystem>
 #include <map>
 #include <memory>
 
@@ -19,9 +20,16 @@ namespace illum::cli {
 
 class StdinInput;
 
+// A scene document given in memory rather than as a file (the library's scenes built in code).
+struct MemoryScene {
+  std::string text;
+  std::filesystem::path baseDir;  // where the files it names are found
+};
+
 struct SceneOptions {
   std::string input;  // a scene file (.json), a model file, "-" for standard input, or empty for the built-in scene
   std::shared_ptr<const StdinInput> stdinInput;  // what standard input held, when input is "-"
+  std::shared_ptr<const MemoryScene> memoryScene;  // with input empty: this scene instead of the built-in one
   std::optional<int> width, height;
   std::string resolution;
   std::string model, shading, background;

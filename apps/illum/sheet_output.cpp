@@ -33,6 +33,7 @@ void checkSheetPixels(std::size_t panels, const SceneOptions& o, const Scene& fi
 }
 
 std::string inputName(const SceneOptions& o) {
+  if (o.memoryScene) return "the scene given";
   return o.input.empty() ? "the built-in scene" : std::filesystem::path(o.input).filename().string();
 }
 
