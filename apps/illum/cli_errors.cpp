@@ -62,7 +62,7 @@ std::string explainParseError(const CLI::ParseError& error, const CLI::App& app,
     return "\"" + extras.front() + "\": not expected here (" + where + " --help says what " + where + " takes)";
   }
   if (what == "A subcommand is required")
-    return "expected a command (eval, render, bench, compare, history, view or thumbnail) or a file to render (illum --help)";
+    return "expected a command (eval, render, bench, compare, history, view, thumbnail or exercise) or a file to render (illum --help)";
   if (std::regex_search(what, m, std::regex(R"(^(\S+): At Most (\d+) required but received (\d+))")))
     return m[1].str() + ": given " + m[3].str() + " times; expected " + (m[2].str() == "1" ? "once" : "at most " + m[2].str() + " times");
   if (std::regex_search(what, m, std::regex(R"(^(\S+): Value (.*) not in range (.*) to (.*)$)")))

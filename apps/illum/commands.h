@@ -15,5 +15,6 @@ Command addBenchCommand(CLI::App& app);
 Command addCompareCommand(CLI::App& app);
 Command addHistoryCommand(CLI::App& app);
 Command addThumbnailCommand(CLI::App& app);
+Command addExerciseCommand(CLI::App& app);
 
 }  // namespace illum::cli

@@ -250,12 +250,14 @@ std::string evaluationJson(const Evaluation& e) {
             << ",\"diffuse\":" << triple(terms.diffuse) << ",\"specular\":" << triple(terms.specular)
             << ",\"total\":" << triple(total) << ",\"N\":" << triple(g.N) << ",\"L\":" << triple(d.L)
             << ",\"V\":" << triple(g.V) << ",\"NoL\":" << number(d.NoL);
-  if (model == LightingModel::BlinnPhong) json << ",\"H\":" << triple(d.H) << ",\"NoH\":" << number(d.NoH);
+  if (model == LightingModel::BlinnPhong)
+    json << ",\"H\":" << triple(d.H) << ",\"NoH\":" << number(d.NoH) << ",\"lobe\":" << number(d.lobe);
   if (model == LightingModel::CookTorrance)
     json << ",\"H\":" << triple(d.H) << ",\"NoH\":" << number(d.NoH) << ",\"NoV\":" << number(d.NoV)
               << ",\"VoH\":" << number(d.VoH) << ",\"D\":" << number(d.D) << ",\"Vis\":" << number(d.visibility)
               << ",\"F\":" << triple(d.F);
-  if (model == LightingModel::Phong) json << ",\"R\":" << triple(d.R) << ",\"RoV\":" << number(d.RoV);
+  if (model == LightingModel::Phong)
+    json << ",\"R\":" << triple(d.R) << ",\"RoV\":" << number(d.RoV) << ",\"lobe\":" << number(d.lobe);
   json << ",\"attenuation\":" << number(d.attenuation) << ",\"spot\":" << number(d.spot) << "}";
   return json.str();
 }

@@ -25,10 +25,11 @@ int main(int argc, char** argv) {
   const illum::cli::Command history = illum::cli::addHistoryCommand(app);
   const illum::cli::Command view = illum::view::addViewCommand(app);
   const illum::cli::Command thumbnail = illum::cli::addThumbnailCommand(app);
+  const illum::cli::Command exercise = illum::cli::addExerciseCommand(app);
 
   // f3d's habit: `illum model.glb` means `illum render model.glb`; a bare word that names no file
   // is a mistyped command, never an input.
-  const std::vector<std::string> commands = {"eval", "render", "bench", "compare", "history", "view", "thumbnail"};
+  const std::vector<std::string> commands = {"eval", "render", "bench", "compare", "history", "view", "thumbnail", "exercise"};
   std::vector<std::string> args(argv + 1, argv + argc);
   if (!args.empty() && std::find(commands.begin(), commands.end(), args[0]) == commands.end() && !args[0].empty() &&
       args[0][0] != '-') {
@@ -64,6 +65,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("history")) return history();
     if (app.got_subcommand("view")) return view();
     if (app.got_subcommand("thumbnail")) return thumbnail();
+    if (app.got_subcommand("exercise")) return exercise();
     return render();
   } catch (const illum::InputError& e) {
     std::cerr << "illum: error: " << e.what() << "\n";
