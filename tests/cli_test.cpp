@@ -134,6 +134,37 @@ TEST(CliEval, SweepsOneValueAsATable) {
   EXPECT_NE(many.err.find("9001 values; expected at most 1000"), std::string::npos) << many.err;
 }
 
+// --plot: the terms against the swept value beside the lobes, or the lobes alone; a name that is no
+// still picture is refused before anything is evaluated.
+TEST(CliEval, PlotsASweepAndTheLobes) {
+  TempDir dir;
+  const RunResult sweep = run("eval --model phong --angle-nl 0:90:5 --material-specular 1,1,1 --shininess 10 --plot " +
+                              (dir / "sweep.png").string());
+  ASSERT_EQ(sweep.exitCode, 0) << sweep.err;
+  EXPECT_EQ(sweep.out, run("eval --model phong --angle-nl 0:90:5 --material-specular 1,1,1 --shininess 10").out);
+  const illum::Image both = illum::readPng(dir / "sweep.png");
+  EXPECT_EQ(both.width, 1120);
+  EXPECT_EQ(both.height, 420);
+  ASSERT_EQ(run("eval --angle-nl 30 --shininess 32 --plot " + (dir / "lobes.png").string()).exitCode, 0);
+  const illum::Image lobes = illum::readPng(dir / "lobes.png");
+  EXPECT_EQ(lobes.width, 560);
+  // Both lobes are drawn: Phong's orange and Blinn-Phong's blue.
+  int orange = 0, blue = 0;
+  for (int y = 0; y < lobes.height; ++y)
+    for (int x = 0; x < lobes.width; ++x) {
+      const std::uint8_t* p = lobes.pixel(x, y);
+      orange += p[0] == 255 && p[1] == 140 && p[2] == 77;
+      blue += p[0] == 89 && p[1] == 191 && p[2] == 255;
+    }
+  EXPECT_GT(orange, 200);
+  EXPECT_GT(blue, 200);
+  const RunResult exr = run("eval --angle-nl 30 --plot " + (dir / "p.exr").string());
+  EXPECT_EQ(exr.exitCode, 2);
+  EXPECT_EQ(exr.out, "");
+  EXPECT_NE(exr.err.find("--plot"), std::string::npos) << exr.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "p.exr"));
+}
+
 TEST(CliEval, BadInputIsRefusedClearly) {
   const RunResult zero = run("eval --normal 0,0,0");
   EXPECT_EQ(zero.exitCode, 2);

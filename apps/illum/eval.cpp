@@ -344,7 +344,13 @@ const SweepOption* sweptOption(const EvalOptions& o) {
 }
 
 int runEval(const EvalOptions& o) {
+  if (!o.plot.empty()) checkEvalPlot(o.plot);
   const SweepOption* swept = sweptOption(o);
+  if (!o.plot.empty()) writeEvalPlot(o, o.plot);
+  if (o.quiet) {
+    evalJson(o);  // checked all the same
+    return 0;
+  }
   if (o.json) {
     std::cout << evalJson(o) << "\n";
     return 0;
@@ -371,6 +377,11 @@ int runEval(const EvalOptions& o) {
 }
 
 }  // namespace
+
+std::string sweptOptionName(const EvalOptions& o) {
+  const SweepOption* swept = sweptOption(o);
+  return swept ? std::string(swept->name + 2) : std::string();
+}
 
 std::string evalJson(const EvalOptions& o) {
   const SweepOption* swept = sweptOption(o);
@@ -430,6 +441,10 @@ void addEvalOptions(CLI::App& cmd_, EvalOptions& options) {
   cmd->add_option("--f0", o->f0, "cook-torrance: a dielectric's reflectance at normal incidence R,G,B [0.04,0.04,0.04]");
   cmd->add_option("--distribution", o->distribution, "cook-torrance: ggx or beckmann [ggx]");
   cmd->add_flag("--json", o->json, "Print the terms as JSON (terms unclamped, total clamped)");
+  cmd->add_option("--plot", o->plot,
+                  "Also draw FILE.png: each term against the swept value (with a sweep) and the specular lobes of "
+                  "Phong and Blinn-Phong for the light's angle and the shininess");
+  cmd->add_flag("-q,--quiet", o->quiet, "Print nothing (with --plot: only the figure)");
 }
 
 }  // namespace illum::cli

@@ -16,7 +16,8 @@ struct EvalOptions {
   std::string normal, toLight, toViewer;
   std::string spotDirection, spotExponent, spotCutoff;
   std::string baseColor, metallic, roughness, f0, distribution;  // a physically based material
-  bool json = false;
+  bool json = false, quiet = false;
+  std::string plot;  // --plot FILE.png
 };
 
 // The options of `illum eval`, on `cmd`.
@@ -25,5 +26,13 @@ void addEvalOptions(CLI::App& cmd, EvalOptions& o);
 // The terms as JSON (`illum eval --json`): one object, or with a sweep an array of them, each with
 // the swept value under the option's name. Throws InputError for values it refuses.
 std::string evalJson(const EvalOptions& o);
+
+// The option a sweep varies, without its dashes ("angle-nl"), or empty.
+std::string sweptOptionName(const EvalOptions& o);
+
+// `--plot FILE`: refuses a name that is not a still picture (before anything is evaluated), and
+// writes the figure: each term against the swept value (with a sweep) and the specular lobes.
+void checkEvalPlot(const std::string& path);
+void writeEvalPlot(const EvalOptions& o, const std::string& path);
 
 }  // namespace illum::cli
