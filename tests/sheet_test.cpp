@@ -6,6 +6,7 @@
 #include <illum/image.h>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <regex>
 #include <sstream>
@@ -21,19 +22,19 @@ RunResult run(const std::string& args) { return illum::test::runIllum(args); }
 
 struct Panel {
   int row, col, x, y, width, height;
-  std::string rowLabel, colLabel;
+  std::string rowLabel, colLabel, caption;
 };
 
-// The panels `-v` lists: "illum: panel R,C (ROW / COL) at X,Y, WxH".
+// The panels `-v` lists: "illum: panel R,C (ROW / COL) at X,Y, WxH[: CAPTION]".
 std::vector<Panel> panels(const std::string& err) {
   std::vector<Panel> out;
-  const std::regex line(R"(illum: panel (\d+),(\d+) \((.*) / (.*)\) at (\d+),(\d+), (\d+)x(\d+))");
+  const std::regex line(R"(illum: panel (\d+),(\d+) \((.*) / (.*)\) at (\d+),(\d+), (\d+)x(\d+)(?:: (.*))?)");
   std::istringstream in(err);
   for (std::string s; std::getline(in, s);) {
     std::smatch m;
     if (std::regex_match(s, m, line))
       out.push_back({std::stoi(m[1]), std::stoi(m[2]), std::stoi(m[5]), std::stoi(m[6]), std::stoi(m[7]), std::stoi(m[8]),
-                     m[3], m[4]});
+                     m[3], m[4], m[9]});
   }
   return out;
 }
@@ -111,6 +112,66 @@ TEST(CliCompare, SceneKeyAxesEqualTheEditedSceneFile) {
                                (dir / "lights.png").string());
   ASSERT_EQ(lights.exitCode, 0) << lights.err;
   EXPECT_EQ(panels(lights.err).size(), 2u);
+}
+
+// A caption is a template over what it describes (captions.h): an axis that moves the light moves
+// the caption with it, so that each panel is the scene file with that light, caption and all.
+TEST(CliCompare, CaptionsStayTrueUnderAnAxis) {
+  TempDir dir;
+  const std::string original = illum::test::slurp(fs::path(ILLUM_EXAMPLES_DIR) / "first_light.json");
+  ASSERT_NE(original.find("light at {light.0.position}"), std::string::npos);
+  const RunResult r = run("compare " + (fs::path(ILLUM_EXAMPLES_DIR) / "first_light.json").string() +
+                          " --rows 'light.0.position=1,2,3,1;-2,1,3,1' --cols shading=phong -v -o " + (dir / "sheet.png").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const Image sheet = illum::readPng(dir / "sheet.png");
+  const std::vector<Panel> ps = panels(r.err);
+  ASSERT_EQ(ps.size(), 2u);
+  for (const Panel& p : ps) {
+    std::string edited = original;
+    edited.replace(edited.find("[1, 2, 3, 1]"), 12, p.row == 0 ? "[1, 2, 3, 1]" : "[-2, 1, 3, 1]");
+    std::ofstream(dir / "edited.json") << edited;
+    ASSERT_EQ(run("render " + (dir / "edited.json").string() + " --resolution " + std::to_string(p.width) + "," +
+                  std::to_string(p.height) + " -o " + (dir / "one.png").string()).exitCode, 0);
+    EXPECT_EQ(crop(sheet, p).rgba, illum::readPng(dir / "one.png").rgba) << p.rowLabel;
+  }
+  // The captions differ: the top rows of the two panels, where the caption is, are not the same.
+  const Image a = crop(sheet, ps[0]), b = crop(sheet, ps[1]);
+  EXPECT_FALSE(std::equal(a.rgba.begin(), a.rgba.begin() + 40 * a.width * 4, b.rgba.begin()));
+}
+
+// A panel that comes out black says why under it: the floor of attenuation.json has no vertex in a
+// spot's cone, so flat and Gouraud shading light nothing (correct GL), and Phong shading does.
+TEST(CliCompare, BlackPanelsSayWhy) {
+  TempDir dir;
+  const RunResult r = run("compare " + (fs::path(ILLUM_EXAMPLES_DIR) / "attenuation.json").string() +
+                          " --rows light-count --cols shading -v -o " + (dir / "sheet.png").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const std::vector<Panel> ps = panels(r.err);
+  ASSERT_EQ(ps.size(), 9u);
+  for (const Panel& p : ps) {
+    if (p.colLabel == "phong") {
+      EXPECT_EQ(p.caption, "") << p.rowLabel;
+      continue;
+    }
+    EXPECT_EQ(p.caption, "black: no vertex lies inside a spot's cone (" + p.colLabel + " shading lights vertices only)");
+    const Image sheet = illum::readPng(dir / "sheet.png");
+    EXPECT_GT(inkIn(sheet, p.x, p.y + p.height, p.x + p.width, p.y + p.height + 40), 20) << "the caption is drawn";
+  }
+}
+
+// Captions too small to read once a picture is scaled down (a sheet's panel, a thumbnail) are left
+// out; those kept are readable.
+TEST(CliCompare, NoCaptionIsShownSmallerThanReadable) {
+  TempDir dir;
+  for (const char* size : {"400,225", "640,360", "960,540"}) {
+    const fs::path saved = dir / "scene.json";
+    ASSERT_EQ(run(std::string("render --resolution ") + size + " --save-scene " + saved.string() + " --force -o " +
+                  (dir / "x.png").string()).exitCode, 0);
+    const nlohmann::json scene = nlohmann::json::parse(illum::test::slurp(saved));
+    const nlohmann::json labels = scene.value("labels", nlohmann::json::array());
+    for (const nlohmann::json& label : labels) EXPECT_GE(label.at("size").get<double>(), 10) << size;
+    EXPECT_EQ(labels.empty(), std::string(size) == "400,225") << size << ": " << labels.size() << " labels";
+  }
 }
 
 TEST(CliCompare, DiffAddsAPanelWithTheFigures) {

@@ -71,6 +71,7 @@ Sheet compareSheet(const CompareOptions& o, ModelCache* models) {
   sheet.columnLabels = cols.values;
   Renderer renderer;
   std::vector<std::vector<Image>> images(rows.values.size());
+  std::vector<std::vector<std::string>> captions(rows.values.size());  // why a black panel is black
   for (std::size_t r = 0; r < rows.values.size(); ++r)
     for (std::size_t c = 0; c < cols.values.size(); ++c) {
       SceneOptions cell = base;
@@ -82,6 +83,7 @@ Sheet compareSheet(const CompareOptions& o, ModelCache* models) {
       applyToScene(cols, cols.values[c], scene);
       Image image;
       renderer.render(scene, image);
+      captions[r].push_back(unlitPanelCaption(image, scene));
       images[r].push_back(std::move(image));
     }
   // The difference panels first, then every picture moved (not copied) into the sheet.
@@ -98,7 +100,7 @@ Sheet compareSheet(const CompareOptions& o, ModelCache* models) {
     }
   for (std::size_t r = 0; r < rows.values.size(); ++r) {
     sheet.panels.emplace_back();
-    for (std::size_t c = 0; c < cols.values.size(); ++c) sheet.panels.back().push_back({std::move(images[r][c]), ""});
+    for (std::size_t c = 0; c < cols.values.size(); ++c) sheet.panels.back().push_back({std::move(images[r][c]), captions[r][c]});
     if (diffCols) sheet.panels.back().push_back(std::move(colDiffs[r]));
   }
   if (diffCols) sheet.columnLabels.push_back(cols.values[diffCols->first] + " vs " + cols.values[diffCols->second]);

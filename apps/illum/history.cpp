@@ -81,7 +81,9 @@ Sheet historySheet(const SceneOptions& o, ModelCache* models) {
     Image image;
     renderer.render(scene, image);
     if (index % kColumns == 0) sheet.panels.emplace_back();
-    sheet.panels.back().push_back({std::move(image), std::string(step.year) + " · " + step.authors + "\n" + step.formula});
+    const std::string unlit = unlitPanelCaption(image, scene);
+    sheet.panels.back().push_back(
+        {std::move(image), std::string(step.year) + " · " + step.authors + "\n" + step.formula + (unlit.empty() ? "" : "\n" + unlit)});
     ++index;
   }
   return sheet;

@@ -2,6 +2,7 @@
 
 #include <illum/error.h>
 #include <illum/framing.h>
+#include <illum/captions.h>
 #include <illum/import.h>
 #include <illum/file_names.h>
 
@@ -432,7 +433,7 @@ Scene prepareScene(SceneOptions o, double* loadMs, ModelCache* cache, std::vecto
         if (label.pixel) *label.pixel *= scale;
         label.size *= std::min(scale.x, scale.y);
       }
-      std::erase_if(scene.labels, [](const Label& label) { return label.size < 7; });
+      std::erase_if(scene.labels, [](const Label& label) { return label.size < kReadableCaption; });
     }
     applyExplicitCamera(o, scene.camera);
     validateCamera(o, scene.camera, Real(scene.width) / Real(scene.height));

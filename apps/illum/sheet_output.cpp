@@ -1,13 +1,16 @@
 #include "sheet_output.h"
 
+#include <illum/captions.h>
+#include <illum/display.h>
+#include <illum/error.h>
+#include <illum/image.h>
+#include <illum/output_file.h>
+
 #include "cli_values.h"
 #include "output_format.h"
 
-#include <illum/image.h>
-#include <illum/error.h>
-#include <illum/output_file.h>
-
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -52,6 +55,17 @@ void checkSheetOutput(const SheetOutput& out) {
   checkQuality(format, out.quality);
 }
 
+std::string unlitPanelCaption(const Image& image, const Scene& scene) {
+  const std::array<std::uint8_t, 4> background = backgroundBytes(scene.background, scene.display);
+  for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
+    const std::uint8_t* p = &image.rgba[i];
+    const bool isBackground = p[0] == background[0] && p[1] == background[1] && p[2] == background[2];
+    if (!isBackground && std::max({p[0], p[1], p[2]}) > 2) return "";
+  }
+  const std::string why = whyUnlit(scene);
+  return why.empty() ? "" : "black: " + why;
+}
+
 void writeSheet(const Sheet& sheet, const SheetOutput& out, bool verbose,
                 const std::function<std::string(std::size_t, std::size_t)>& describe) {
   const Image image = composeSheet(sheet);
@@ -59,9 +73,10 @@ void writeSheet(const Sheet& sheet, const SheetOutput& out, bool verbose,
     const SheetLayout layout = layoutSheet(sheet);
     for (std::size_t r = 0; r < sheet.panels.size(); ++r)
       for (std::size_t c = 0; c < sheet.panels[r].size(); ++c)
-        std::fprintf(stderr, "illum: panel %zu,%zu (%s) at %d,%d, %dx%d\n", r, c, describe(r, c).c_str(),
+        std::fprintf(stderr, "illum: panel %zu,%zu (%s) at %d,%d, %dx%d%s%s\n", r, c, describe(r, c).c_str(),
                      layout.panelOrigin[r][c].first, layout.panelOrigin[r][c].second, sheet.panels[r][c].image.width,
-                     sheet.panels[r][c].image.height);
+                     sheet.panels[r][c].image.height, sheet.panels[r][c].caption.empty() ? "" : ": ",
+                     sheet.panels[r][c].caption.c_str());
   }
   writeOutputFile(out.path, encodeStill(outputFormatOf(out.path), image, out.quality), OutputOptions{out.force});
   if (!out.quiet) std::printf("%s\n", out.path.c_str());

@@ -33,6 +33,10 @@ void addSheetOutputOptions(CLI::App& cmd, SheetOutput& out);
 // Refuses (InputError) an output name that is not a still 8-bit picture, before anything is drawn.
 void checkSheetOutput(const SheetOutput& out);
 
+// A panel's caption when it comes out black (every pixel black or the background): "black: " and
+// why no light reaches what it shows (captions.h, whyUnlit); otherwise empty.
+std::string unlitPanelCaption(const Image& image, const Scene& scene);
+
 // Composes and writes the sheet; with verbose, one line per panel naming it by `describe(r, c)`.
 void writeSheet(const Sheet& sheet, const SheetOutput& out, bool verbose,
                 const std::function<std::string(std::size_t, std::size_t)>& describe);

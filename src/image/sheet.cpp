@@ -22,12 +22,35 @@ std::vector<std::string> lines(const std::string& text) {
   return out;
 }
 
-int captionLines(const Sheet& sheet) {
+// A caption's lines: its own ('\n'), each broken between words where it would be wider than `width`.
+std::vector<std::string> captionRows(const std::string& caption, int width) {
+  std::vector<std::string> rows;
+  for (const std::string& line : lines(caption)) {
+    std::istringstream words(line);
+    std::string row;
+    for (std::string word; words >> word;) {
+      const std::string longer = row.empty() ? word : row + " " + word;
+      if (!row.empty() && textWidth(longer, kCaptionSize) > Real(width)) {
+        rows.push_back(row);
+        row = word;
+      } else {
+        row = longer;
+      }
+    }
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+int captionLines(const Sheet& sheet, int width) {
   std::size_t most = 0;
   for (const auto& row : sheet.panels)
-    for (const SheetPanel& p : row) most = std::max(most, lines(p.caption).size());
+    for (const SheetPanel& p : row) most = std::max(most, captionRows(p.caption, width).size());
   return int(most);
 }
+
+// Captions keep a few pixels from the next column's.
+constexpr int kCaptionInset = 8;
 
 int lineHeight(Real size) { return int(std::ceil(size * 1.35f)); }
 
@@ -48,7 +71,8 @@ SheetLayout layoutSheet(const Sheet& sheet) {
     labelColumn = std::max(labelColumn, int(std::ceil(textWidth(sheet.corner, kCaptionSize)))) + kGap + 8;
   const int top = kMargin + (sheet.title.empty() ? 0 : lineHeight(kTitleSize) + 6) +
                   (sheet.columnLabels.empty() ? 0 : lineHeight(kLabelSize) + 4);
-  const int captionBand = captionLines(sheet) * lineHeight(kCaptionSize) + (captionLines(sheet) ? 4 : 0);
+  const int captionCount = captionLines(sheet, l.cellWidth - kCaptionInset);
+  const int captionBand = captionCount * lineHeight(kCaptionSize) + (captionCount ? 4 : 0);
   const int rows = int(sheet.panels.size());
   l.panelOrigin.resize(sheet.panels.size());
   for (int r = 0; r < rows; ++r)
@@ -100,7 +124,7 @@ Image composeSheet(const Sheet& sheet) {
       for (int j = 0; j < p.image.height; ++j)
         std::copy_n(p.image.pixel(0, j), std::size_t(p.image.width) * 4, out.pixel(px, py + j));
       int baseline = rowTop + l.cellHeight + 2;
-      for (const std::string& line : lines(p.caption)) {
+      for (const std::string& line : captionRows(p.caption, l.cellWidth - kCaptionInset)) {
         baseline += lineHeight(kCaptionSize);
         drawText(out, Real(gridLeft + int(c) * (l.cellWidth + kGap)) + Real(l.cellWidth) / 2, Real(baseline - 4), line,
                  kCaptionSize, kDimInk);

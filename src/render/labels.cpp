@@ -1,5 +1,8 @@
 #include "render/labels.h"
 
+#include <illum/captions.h>
+#include <illum/error.h>
+
 #include "image/text.h"
 #include "raster/lines/wide_segment.h"
 
@@ -58,7 +61,15 @@ bool drawLabels(Image& image, const Scene& scene) {
       at = Vec2((clip.x / clip.w + 1) * Real(0.5) * Real(scene.width),
                 (1 - clip.y / clip.w) * Real(0.5) * Real(scene.height) + label.size);
     }
-    drawText(image, at.x, at.y, label.text, label.size, label.color);
+    // A caption is filled in from the scene as drawn; one whose light or object an override took
+    // away (a sheet's light-count axis) has nothing left to describe and is left out.
+    std::string text;
+    try {
+      text = expandCaption(label.text, scene);
+    } catch (const InputError&) {
+      continue;
+    }
+    drawText(image, at.x, at.y, text, label.size, label.color);
   }
   return true;
 }

@@ -1,5 +1,6 @@
 // The built-in scene: GLUT's five solids in five classic materials under three coloured lights,
 // a positional key light with distance attenuation, a directional fill and a spot from behind.
+#include <illum/captions.h>
 #include <illum/scene.h>
 
 #include "scene/mesh_json.h"
@@ -32,38 +33,6 @@ Object object(const std::string& mesh, Mat4 worldFromObject, Material m) {
   source->transform = worldFromObject;
   o.source = std::move(source);
   return o;
-}
-
-std::string describe(LightingModel model) {
-  switch (model) {
-    case LightingModel::BlinnPhong: return "Blinn-Phong: ambient + diffuse (N·L) + specular (N·H)ⁿ";
-    case LightingModel::Phong: return "Phong: ambient + diffuse (N·L) + specular (R·V)ⁿ";
-    case LightingModel::Lambert: return "Lambert: ambient + diffuse (N·L), no specular";
-    case LightingModel::CookTorrance: return "Cook-Torrance: diffuse + D·F·G / (4 (N·L)(N·V))";
-    case LightingModel::Wylie: return "Wylie (1967): intensity ∝ 1/d, no angle";
-    case LightingModel::Bouknight: return "Bouknight (1970): ambient + diffuse (N·L)";
-  }
-  return "";
-}
-
-std::string describe(Shading shading) {
-  switch (shading) {
-    case Shading::Flat: return "flat shading: one colour per triangle, lit at its last vertex";
-    case Shading::Gouraud: return "Gouraud shading: lit per vertex, colours interpolated";
-    case Shading::Phong: return "Phong shading: normals interpolated, lit per pixel";
-  }
-  return "";
-}
-
-// What the picture's second line says: the shading frequency, or the ray tracer that lit it.
-std::string describe(Shading shading, RendererKind renderer) {
-  switch (renderer) {
-    case RendererKind::Raster: return describe(shading);
-    case RendererKind::Whitted: return "Whitted ray tracing (1980): shadows, mirror and refracted rays";
-    case RendererKind::Hall: return "Hall ray tracing (1983): Fresnel-weighted mirrors and glass, filtered light";
-    case RendererKind::Path: return "path tracing (Kajiya 1986): the rendering equation, light bouncing everywhere";
-  }
-  return "";
 }
 
 }  // namespace
@@ -140,11 +109,12 @@ Scene defaultScene(LightingModel model, Shading shading, RendererKind renderer) 
     l.color = {0.92, 0.92, 0.92};
     s.labels.push_back(l);
   };
-  caption(-3.4f, "plastic, n = 60");
-  caption(-1.55f, "gold, n = 51");
-  caption(0.3f, "porcelain, n = 90");
-  caption(2.2f, "matte: no specular");
-  caption(3.7f, "dull, n = 8");
+  // Templates (captions.h): each names the highlight as the model drawing it sees it.
+  caption(-3.4f, "plastic, {object.0.highlight}");
+  caption(-1.55f, "gold, {object.1.highlight}");
+  caption(0.3f, "porcelain, {object.2.highlight}");
+  caption(2.2f, "matte, {object.3.highlight}");
+  caption(3.7f, "dull, {object.4.highlight}");
   const auto title = [&](Real y, const std::string& text, Real size) {
     Label l;
     l.text = text;
@@ -152,8 +122,8 @@ Scene defaultScene(LightingModel model, Shading shading, RendererKind renderer) 
     l.size = size;
     s.labels.push_back(l);
   };
-  title(30, describe(model), 20);
-  title(54, describe(shading, renderer), 16);
+  title(30, "{model.description}", 20);
+  title(54, "{shading.description}", 16);
   title(Real(s.height) - 14,
         "lights: warm key, positional with 1/(a + bd + cd²) · cool fill, directional · magenta spot from behind", 14);
   return s;

@@ -1,5 +1,6 @@
 // The scene file contract, version 1 (docs/scene-format.md): every key, default and rejection.
 #include <illum/error.h>
+#include <illum/captions.h>
 #include <illum/scene.h>
 
 #include <map>
@@ -570,6 +571,12 @@ Scene parseScene(const std::string& text, const std::string& name, const std::fi
   if (j.has("labels")) {
     const JsonReader labels = j.at("labels");
     for (std::size_t i = 0, n = labels.arraySize(); i < n; ++i) s.labels.push_back(readLabel(labels.item(i)));
+    // A caption's placeholders name what the scene has (captions.h).
+    for (std::size_t i = 0; i < s.labels.size(); ++i) try {
+        expandCaption(s.labels[i].text, s);
+      } catch (const InputError& e) {
+        labels.item(i).at("text").fail(e.what());
+      }
   }
   return s;
 }

@@ -154,11 +154,12 @@ def test_progress_is_reported_and_rendering_releases_the_gil():
     counter = threading.Thread(target=count)
     counter.start()
     start = time.monotonic()
-    picture = illum.render(renderer="path", samples=16, resolution=(120, 90), progress=fractions.append)
+    # Long enough (a few tenths of a second) for the other thread to run many times while illum draws.
+    picture = illum.render(renderer="path", samples=64, resolution=(160, 120), progress=fractions.append)
     end = time.monotonic()
     done.set()
     counter.join()
-    assert picture.shape == (90, 120, 4)
+    assert picture.shape == (120, 160, 4)
     assert fractions and fractions == sorted(fractions) and fractions[-1] == pytest.approx(1)
     # The other thread ran while illum drew (it could not, had the GIL been held).
     assert sum(1 for t in ticks if start < t < end) > 5
