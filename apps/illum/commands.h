@@ -9,6 +9,11 @@ namespace illum::cli {
 
 using Command = std::function<int()>;
 
+// What `illum view` does, in `illum --help`'s list and its own help (the viewer is its own program,
+// illum-view, which `illum view` runs).
+inline constexpr const char* kViewSummary =
+    "Show scene or model files (none: the built-in scene) in a window to turn, light and probe (docs/view.md)";
+
 Command addEvalCommand(CLI::App& app);
 Command addRenderCommand(CLI::App& app);
 Command addBenchCommand(CLI::App& app);

@@ -3,7 +3,6 @@
 
 #include "cli_errors.h"
 #include "commands.h"
-#include "view_command.h"
 
 #include <cstdio>
 #include <exception>
@@ -12,6 +11,28 @@
 #include <string>
 #include <vector>
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+
+#include <unistd.h>
+
+namespace {
+
+// `illum view ...` is the viewer's own program, beside this one: run in this process's place.
+int runViewer(const std::vector<std::string>& args) {
+  std::error_code ec;
+  const std::filesystem::path viewer = std::filesystem::read_symlink("/proc/self/exe", ec).parent_path() / "illum-view";
+  std::vector<char*> argv{const_cast<char*>("illum-view")};
+  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  ::execv(viewer.c_str(), argv.data());
+  std::cerr << "illum: error: view: cannot run the viewer " << viewer.string() << ": " << std::strerror(errno)
+            << " (it is installed beside illum)\n";
+  return 1;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"illum: the lighting models of computer graphics, from Wylie (1967) to Kajiya (1986), rendered exactly on the CPU"};
@@ -23,7 +44,7 @@ int main(int argc, char** argv) {
   const illum::cli::Command bench = illum::cli::addBenchCommand(app);
   const illum::cli::Command compare = illum::cli::addCompareCommand(app);
   const illum::cli::Command history = illum::cli::addHistoryCommand(app);
-  const illum::cli::Command view = illum::view::addViewCommand(app);
+  app.add_subcommand("view", illum::cli::kViewSummary)->allow_extras();  // run by runViewer
   const illum::cli::Command thumbnail = illum::cli::addThumbnailCommand(app);
   const illum::cli::Command exercise = illum::cli::addExerciseCommand(app);
 
@@ -31,6 +52,7 @@ int main(int argc, char** argv) {
   // is a mistyped command, never an input.
   const std::vector<std::string> commands = {"eval", "render", "bench", "compare", "history", "view", "thumbnail", "exercise"};
   std::vector<std::string> args(argv + 1, argv + argc);
+  if (!args.empty() && args[0] == "view") return runViewer({args.begin() + 1, args.end()});
   if (!args.empty() && std::find(commands.begin(), commands.end(), args[0]) == commands.end() && !args[0].empty() &&
       args[0][0] != '-') {
     if (const auto message = illum::cli::unknownCommand(args[0], commands)) {
@@ -63,7 +85,6 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("bench")) return bench();
     if (app.got_subcommand("compare")) return compare();
     if (app.got_subcommand("history")) return history();
-    if (app.got_subcommand("view")) return view();
     if (app.got_subcommand("thumbnail")) return thumbnail();
     if (app.got_subcommand("exercise")) return exercise();
     return render();

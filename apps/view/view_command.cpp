@@ -13,8 +13,7 @@ cli::Command addViewCommand(CLI::App& app) {
     std::vector<std::string> inputs;
   };
   auto o = std::make_shared<Options>();
-  CLI::App* cmd = app.add_subcommand(
-      "view", "Show scene or model files (none: the built-in scene) in a window to turn, light and probe (docs/view.md)");
+  CLI::App* cmd = app.add_subcommand("view", cli::kViewSummary);
   cmd->footer(
       "Keys as f3d's: drag to turn, right drag or wheel to zoom, middle drag to pan, click a pixel to\n"
       "see its equation, H for every key. Needs a display; without one, use illum render.");

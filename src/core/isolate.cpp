@@ -16,7 +16,9 @@
 #include <thread>
 #include <utility>
 
+#include <poll.h>
 #include <sys/mman.h>
+#include <sys/syscall.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -335,21 +337,34 @@ IsolationOutcome IsolatedChild::wait() {
   // waits, or shares a busy machine, is held to the same promise), and its resident size (the
   // limit that works under every allocator and sanitizer).
   const auto residentLimit = inherited_ + std::size_t(double(limits_.memoryBytes) * kResidentAllowance);
+  // Between looks, wait on a pidfd (readable once the child has ended) rather than sleep, so that
+  // the parent goes on the moment the child is done; without pidfds (kernels before 5.3), sleep.
   auto pause = std::chrono::microseconds(200);
+  // (By syscall: glibc 2.36's <sys/pidfd.h> declares pidfd_open without C linkage.)
+  const int pidfd = int(::syscall(SYS_pidfd_open, pid_, 0));
   int status = 0;
   std::optional<IsolationOutcome::Kind> killedFor;
   for (;;) {
     const pid_t done = ::waitpid(pid_, &status, WNOHANG);
     if (done == pid_) break;
-    if (done < 0 && errno != EINTR) throw Error(std::string("cannot wait for the importer: ") + std::strerror(errno));
+    if (done < 0 && errno != EINTR) {
+      if (pidfd >= 0) ::close(pidfd);
+      throw Error(std::string("cannot wait for the importer: ") + std::strerror(errno));
+    }
     if (!killedFor) {
       if (steadySeconds() > deadline_ || cpuSeconds(pid_) > limits_.cpuSeconds) killedFor = IsolationOutcome::Kind::TimedOut;
       else if (residentBytes(pid_) > residentLimit) killedFor = IsolationOutcome::Kind::OutOfMemory;
       if (killedFor) ::kill(pid_, SIGKILL);
     }
-    std::this_thread::sleep_for(pause);
+    if (pidfd >= 0) {
+      pollfd ended{pidfd, POLLIN, 0};
+      ::poll(&ended, 1, int(std::chrono::duration_cast<std::chrono::milliseconds>(pause).count()) + 1);
+    } else {
+      std::this_thread::sleep_for(pause);
+    }
     pause = std::min(pause * 2, std::chrono::microseconds(5000));
   }
+  if (pidfd >= 0) ::close(pidfd);
   pid_ = -1;  // reaped
 
   if (killedFor) {

@@ -11,7 +11,7 @@ cmake --install "$build" --prefix "$prefix" >/dev/null
 libdir=$(dirname "$(find "$prefix" -name 'libillum.so' | head -1)")
 
 echo "installed: $(cd "$prefix" && find . -type f -o -type l | sort | tr '\n' ' ')"
-for f in bin/illum include/illum/illum.h include/illum/error.h share/man/man1/illum.1 share/man/man1/illum-render.1 \
+for f in bin/illum bin/illum-view include/illum/illum.h include/illum/error.h share/man/man1/illum.1 share/man/man1/illum-render.1 \
          share/thumbnailers/illum.thumbnailer; do
   [ -e "$prefix/$f" ] || { echo "missing from the install: $f"; exit 1; }
 done
