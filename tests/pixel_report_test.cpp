@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <regex>
 #include <sstream>
 
@@ -115,6 +116,78 @@ TEST_P(PixelReport, StepsReproduceTheLitColour) {
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryShading, PixelReport, testing::Values("flat", "gouraud", "phong"));
+
+int srgbByte(double byte) {
+  const double c = byte / 255;
+  return int(std::lround(255 * (c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1 / 2.4) - 0.055)));
+}
+
+// The chain from the fragment to the file on a model preview (8 samples, sRGB): the resolve's
+// bytes, the display encoding's (IEC 61966-2-1 of them), the file's.
+TEST(PixelChain, ResolveThenDisplayThenTheFile) {
+  TempDir dir;
+  const fs::path out = dir / "duck.png";
+  const auto r = runIllum("render /usr/share/assimp/models/Collada/duck.dae --debug-pixel 500,300 -o " + out.string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("resolve: the mean of the pixel's 8 samples"), std::string::npos) << r.out;
+  const auto resolved = numbersAfter(r.out, "blending included: bytes", 4);
+  const auto displayed = numbersAfter(r.out, "encoding srgb): bytes", 4);
+  ASSERT_EQ(resolved.size(), 4u);
+  ASSERT_EQ(displayed.size(), 4u);
+  for (int c = 0; c < 3; ++c) EXPECT_EQ(int(displayed[std::size_t(c)]), srgbByte(resolved[std::size_t(c)])) << c;
+  const Image image = readPng(out);
+  for (int c = 0; c < 4; ++c) EXPECT_EQ(int(displayed[std::size_t(c)]), int(image.pixel(500, 300)[c])) << c;
+  expectFileBytes({r.out, image}, 500, 300);
+}
+
+// A caption over the pixel is named, and it is why the file's bytes differ from the display step's.
+TEST(PixelChain, ALabelOverThePixelIsNamed) {
+  TempDir dir;
+  const auto r = runIllum("render --debug-pixel 485,25 -o " + (dir / "x.png").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("drawn over it: the label \"Blinn-Phong: ambient + diffuse (N·L) + specular (N·H)ⁿ\""),
+            std::string::npos) << r.out;
+  EXPECT_NE(numbersAfter(r.out, "encoding linear): bytes", 4), numbersAfter(r.out, "in the file: bytes", 4));
+  // Where no label is, none is named.
+  const auto clear = runIllum("render --debug-pixel 480,300 -o " + (dir / "y.png").string());
+  EXPECT_EQ(clear.out.find("drawn over it"), std::string::npos) << clear.out;
+}
+
+// --debug-point: the pixel a point of an object lands on, reported as --debug-pixel reports it;
+// --mark-pixel rings it in the picture and leaves the pixel itself alone.
+TEST(PixelChain, APointOfAnObjectAndItsMark) {
+  TempDir dir;
+  const auto r = runIllum("render --debug-point 0 --mark-pixel -o " + (dir / "marked.png").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(r.out, m, std::regex(R"(--debug-point 0 lands on pixel \((\d+), (\d+)\))"))) << r.out;
+  const int x = std::stoi(m[1]), y = std::stoi(m[2]);
+  EXPECT_NE(r.out.find("pixel (" + std::to_string(x) + ", " + std::to_string(y) + "): object 0,"), std::string::npos) << r.out;
+  const auto plain = runIllum("render --debug-pixel " + std::to_string(x) + "," + std::to_string(y) + " -o " +
+                              (dir / "plain.png").string());
+  const Image marked = readPng(dir / "marked.png"), unmarked = readPng(dir / "plain.png");
+  int changed = 0;
+  for (int j = 0; j < marked.height; ++j)
+    for (int i = 0; i < marked.width; ++i) {
+      const bool differs = !std::equal(marked.pixel(i, j), marked.pixel(i, j) + 4, unmarked.pixel(i, j));
+      changed += differs;
+      if (differs) EXPECT_LE(std::hypot(i - x, j - y), 8) << i << "," << j;
+    }
+  EXPECT_GT(changed, 40);
+  EXPECT_TRUE(std::equal(marked.pixel(x, y), marked.pixel(x, y) + 4, unmarked.pixel(x, y)));
+  const std::uint8_t* ring = marked.pixel(x + 5, y);
+  EXPECT_EQ(int(ring[0]), 255);
+  EXPECT_EQ(int(ring[1]), 0);
+  EXPECT_EQ(int(ring[2]), 255);
+  // Refusals name what is wrong.
+  const auto none = runIllum("render --debug-point 9 -o " + (dir / "z.png").string());
+  EXPECT_EQ(none.exitCode, 2);
+  EXPECT_NE(none.err.find("the scene has 6 objects (0 .. 5)"), std::string::npos) << none.err;
+  const auto alone = runIllum("render --mark-pixel -o " + (dir / "z.png").string());
+  EXPECT_EQ(alone.exitCode, 2);
+  EXPECT_NE(alone.err.find("--mark-pixel"), std::string::npos) << alone.err;
+  EXPECT_FALSE(fs::exists(dir / "z.png"));
+}
 
 }  // namespace
 }  // namespace illum

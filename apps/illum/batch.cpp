@@ -329,6 +329,7 @@ bool isBatch(const RenderOptions& o) {
 
 int runBatch(const RenderOptions& o, const std::vector<BatchJob>& allJobs) {
   if (!o.debugPixel.empty()) throw InputError("--debug-pixel: reports one picture; render one input for it");
+  if (!o.debugPoint.empty()) throw InputError("--debug-point: reports one picture; render one input for it");
   if (o.output == "-") throw InputError("-o -: standard output takes one picture; render one input for it");
   if (o.turntable && o.orbitLight) throw InputError("--turntable and --orbit-light: expected one of them");
   if (o.bitDepth != 8 && o.bitDepth != 16) throw InputError("--bit-depth: expected 8 or 16, got " + std::to_string(o.bitDepth));

@@ -1,5 +1,7 @@
 #include "pixel_report.h"
 
+#include <illum/display.h>
+
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -25,6 +27,29 @@ std::string rgba(const Color4& c) {
 }
 
 int byte(Real c) { return int(std::lround(double(glm::clamp(c, Real(0), Real(1))) * 255)); }
+
+std::string bytes(const std::array<std::uint8_t, 4>& b) {
+  return std::to_string(b[0]) + " " + std::to_string(b[1]) + " " + std::to_string(b[2]) + " " + std::to_string(b[3]);
+}
+
+std::string displayName(const Display& d) {
+  return "tone map " + std::string(toString(d.toneMap)) + ", encoding " + std::string(toString(d.encoding));
+}
+
+// The steps after the fragment: resolve, display, overlays, the file.
+void printChain(std::FILE* out, const Scene& scene, const PixelChain& c, const std::uint8_t* file, bool traced) {
+  if (!traced)
+    std::fprintf(out, "  resolve: %s: bytes %s\n",
+                 c.samples > 1 ? ("the mean of the pixel's " + std::to_string(c.samples) + " samples, blending included").c_str()
+                               : "one sample per pixel, blending included",
+                 bytes(c.resolved).c_str());
+  std::fprintf(out, "  display (%s): bytes %s%s\n", displayName(scene.display).c_str(), bytes(c.displayed).c_str(),
+               scene.display.identity() ? " (unchanged: the equation's values are the bytes)" : "");
+  for (const std::string& over : c.overlays) std::fprintf(out, "  drawn over it: %s\n", over.c_str());
+  const std::array<std::uint8_t, 4> f{file[0], file[1], file[2], file[3]};
+  if (c.overlays.empty() && f != c.displayed)
+    std::fprintf(out, "  (the file's bytes differ from the display step's: an overlay this report does not name)\n");
+}
 
 // The equation (OpenGL 2.1 §2.14.1) at one point, one light at a time, with each light's geometry;
 // computed by the same accumulateLight the renderer uses. Returns the clamped colour.
@@ -79,7 +104,7 @@ Color4 printEquation(std::FILE* out, const Scene& scene, const Material& materia
 
 // A ray tracer's pixel: the primary ray's hit, the equation there without shadows, what each
 // shadow ray found, and what the mirror, glass and see-through rays added.
-void printTracedReport(std::FILE* out, const Scene& scene, const PixelProbe& p, const std::uint8_t* b) {
+void printTracedReport(std::FILE* out, const Scene& scene, const PixelProbe& p, const std::uint8_t* b, const PixelChain* chain) {
   std::fprintf(out, "pixel (%d, %d): object %zu, triangle %zu, %s face; %s; ray traced (%s): lit where the ray through the "
               "pixel's centre meets the surface, with the interpolated normal\n",
               p.x, p.y, p.object, p.triangle, p.frontFacing ? "front" : "back",
@@ -101,21 +126,53 @@ void printTracedReport(std::FILE* out, const Scene& scene, const PixelProbe& p, 
                 rgba(p.texel).c_str());
   std::fprintf(out, "  with the reflected, refracted and see-through rays: %s = bytes %d %d %d %d\n", rgba(p.written).c_str(),
               byte(p.written.r), byte(p.written.g), byte(p.written.b), byte(p.written.a));
+  if (chain) printChain(out, scene, *chain, b, true);
   std::fprintf(out, "  in the file: bytes %d %d %d %d%s\n", b[0], b[1], b[2], b[3],
               samplesPerPixel(scene) > 1 ? " (the mean of every sample of the pixel)" : "");
 }
 
 }  // namespace
 
-void printPixelReport(const Scene& scene, const PixelProbe& p, const Image& image, std::FILE* out) {
+PixelChain tracePixelChain(const Scene& scene, int x, int y) {
+  PixelChain c;
+  c.samples = scene.renderer == RendererKind::Raster ? scene.multisample : samplesPerPixel(scene);
+  // The picture again without what is drawn after it (labels, the axes gizmo) and without the
+  // display encoding: the framebuffer's bytes as resolved.
+  Scene bare = scene;
+  bare.labels.clear();
+  bare.overlays.axes = false;
+  bare.display = Display{};
+  Renderer renderer;
+  Image framebuffer;
+  renderer.render(bare, framebuffer);
+  const std::uint8_t* r = framebuffer.pixel(x, y);
+  c.resolved = {r[0], r[1], r[2], r[3]};
+  Image one(1, 1);
+  std::copy(r, r + 4, one.rgba.begin());
+  if (scene.renderer == RendererKind::Raster) {
+    applyDisplay(one, scene.display, &scene.background);
+  } else {
+    // The tracers encode each pixel's value, not its 8-bit byte: the picture drawn with the display.
+    Scene displayed = bare;
+    displayed.display = scene.display;
+    renderer.render(displayed, framebuffer);
+    std::copy(framebuffer.pixel(x, y), framebuffer.pixel(x, y) + 4, one.rgba.begin());
+  }
+  c.displayed = {one.rgba[0], one.rgba[1], one.rgba[2], one.rgba[3]};
+  c.overlays = overlaysCovering(scene, x, y);
+  return c;
+}
+
+void printPixelReport(const Scene& scene, const PixelProbe& p, const Image& image, std::FILE* out, const PixelChain* chain) {
   const std::uint8_t* b = image.pixel(p.x, p.y);
   if (!p.hit) {
     std::fprintf(out, "pixel (%d, %d): background, no surface drawn here\n", p.x, p.y);
+    if (chain) printChain(out, scene, *chain, b, scene.renderer != RendererKind::Raster);
     std::fprintf(out, "  in the file: bytes %d %d %d %d\n", b[0], b[1], b[2], b[3]);
     return;
   }
   if (scene.renderer != RendererKind::Raster) {
-    printTracedReport(out, scene, p, b);
+    printTracedReport(out, scene, p, b, chain);
     return;
   }
   const char* shading = scene.shading == Shading::Flat      ? "flat shading: lit once, at the triangle's last vertex"
@@ -150,6 +207,7 @@ void printPixelReport(const Scene& scene, const PixelProbe& p, const Image& imag
     std::fprintf(out, "  × texel %s (GL_MODULATE)\n", rgba(p.texel).c_str());
   std::fprintf(out, "  fragment: %s = bytes %d %d %d %d%s\n", rgba(p.written).c_str(), byte(p.written.r), byte(p.written.g),
               byte(p.written.b), byte(p.written.a), p.blended ? ", blended over what was there (source over)" : "");
+  if (chain) printChain(out, scene, *chain, b, false);
   std::fprintf(out, "  in the file: bytes %d %d %d %d\n", b[0], b[1], b[2], b[3]);
 }
 

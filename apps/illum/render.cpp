@@ -29,6 +29,9 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <limits>
+#include <utility>
+#include <cmath>
 
 namespace illum::cli {
 namespace {
@@ -67,6 +70,46 @@ class ProgressLine {
   bool shown_ = false;
 };
 
+// "OBJECT:x,y,z" (a point in the object's own coordinates) or "OBJECT" (the centre of its
+// bounds): the pixel it lands on.
+std::pair<int, int> pixelOfPoint(const Scene& scene, const std::string& text) {
+  const auto colon = text.find(':');
+  const std::size_t n = std::size_t(parseInteger("--debug-point", text.substr(0, colon), 0, 1 << 30));
+  if (n >= scene.objects.size())
+    throw InputError("--debug-point " + text + ": the scene has " + std::to_string(scene.objects.size()) +
+                     " objects (0 .. " + std::to_string(scene.objects.size() - 1) + ")");
+  const Object& object = scene.objects[n];
+  Vec3 local(0);
+  if (colon != std::string::npos) {
+    local = parseVec3("--debug-point", text.substr(colon + 1));
+  } else {
+    Vec3 lo(std::numeric_limits<Real>::max()), hi(std::numeric_limits<Real>::lowest());
+    for (const Vec3& p : object.mesh->positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    if (!object.mesh->positions.empty()) local = (lo + hi) / Real(2);
+  }
+  const Vec4 clip = scene.camera.clipFromView(Real(scene.width) / Real(scene.height)) * scene.camera.viewFromWorld() *
+                    object.worldFromObject * Vec4(local, 1);
+  if (!(clip.w > 0)) throw InputError("--debug-point " + text + ": the point is behind the camera");
+  const Real px = (clip.x / clip.w + 1) / 2 * Real(scene.width), py = (1 - clip.y / clip.w) / 2 * Real(scene.height);
+  if (!(px >= 0 && py >= 0 && px < Real(scene.width) && py < Real(scene.height)))
+    throw InputError("--debug-point " + text + ": the point is outside the picture (at pixel " +
+                     std::to_string(int(std::floor(px))) + ", " + std::to_string(int(std::floor(py))) + ")");
+  return {int(px), int(py)};
+}
+
+// A ring of radius 6 around (x, y), magenta over a dark edge, the pixel itself untouched.
+void markPixel(Image& image, int x, int y) {
+  for (int dy = -8; dy <= 8; ++dy)
+    for (int dx = -8; dx <= 8; ++dx) {
+      const int px = x + dx, py = y + dy;
+      if (px < 0 || py < 0 || px >= image.width || py >= image.height) continue;
+      const double d = std::sqrt(double(dx * dx + dy * dy));
+      std::uint8_t* p = image.pixel(px, py);
+      if (d >= 4.5 && d < 6.5) p[0] = 255, p[1] = 0, p[2] = 255, p[3] = 255;
+      else if ((d >= 3.5 && d < 4.5) || (d >= 6.5 && d < 7.5)) p[0] = p[1] = p[2] = 0, p[3] = 255;
+    }
+}
+
 int renderPicture(const RenderOptions& o) {
   // What the output's name means, before anything is read or drawn.
   const OutputFormat format = outputFormatOf(o.output);
@@ -85,14 +128,24 @@ int renderPicture(const RenderOptions& o) {
   const auto loaded = Clock::now();
   RenderStats stats;
   std::optional<PixelProbe> probe;
-  if (!o.debugPixel.empty() && o.output == "-")
-    throw InputError("--debug-pixel: its report goes to standard output, so it cannot go with -o -");
+  if ((!o.debugPixel.empty() || !o.debugPoint.empty()) && o.output == "-")
+    throw InputError(std::string(o.debugPixel.empty() ? "--debug-point" : "--debug-pixel") +
+                     ": its report goes to standard output, so it cannot go with -o -");
+  if (!o.debugPixel.empty() && !o.debugPoint.empty()) throw InputError("--debug-pixel and --debug-point: one pixel at a time");
+  if (o.markPixel && o.debugPixel.empty() && o.debugPoint.empty())
+    throw InputError("--mark-pixel: marks the pixel --debug-pixel or --debug-point reports: give one of them");
   if (!o.debugPixel.empty()) {
     const auto comma = o.debugPixel.find(',');
     if (comma == std::string::npos) throw InputError("--debug-pixel: expected x,y, got \"" + o.debugPixel + "\"");
     probe.emplace();
     probe->x = parseInteger("--debug-pixel", o.debugPixel.substr(0, comma), 0, scene.width - 1);
     probe->y = parseInteger("--debug-pixel", o.debugPixel.substr(comma + 1), 0, scene.height - 1);
+  }
+  if (!o.debugPoint.empty()) {
+    probe.emplace();
+    const auto [x, y] = pixelOfPoint(scene, o.debugPoint);
+    probe->x = x;
+    probe->y = y;
   }
   // A .exr output gets the linear values, unclamped (OpenEXR); the others the picture's bytes.
   const bool exr = format == OutputFormat::Exr;
@@ -124,6 +177,7 @@ int renderPicture(const RenderOptions& o) {
     if (std::fwrite(png.data(), 1, png.size(), stdout) != png.size() || std::fflush(stdout) != 0)
       throw Error("cannot write the PNG to standard output");
   } else {
+    if (probe && o.markPixel) markPixel(image, probe->x, probe->y);
     const std::array<std::uint8_t, 4> background = backgroundBytes(scene.background, scene.display);
     const std::vector<std::uint8_t> bytes =
         exr    ? encodeExr(linear)
@@ -155,7 +209,12 @@ int renderPicture(const RenderOptions& o) {
   }
   if (toStdout) return 0;
   if (!o.quiet && !isStandardOutput(o.output)) std::printf("%s\n", o.output.c_str());
-  if (probe) printPixelReport(scene, *probe, image);
+  if (probe) {
+    if (!o.debugPoint.empty()) std::printf("--debug-point %s lands on pixel (%d, %d)\n", o.debugPoint.c_str(), probe->x, probe->y);
+    const PixelChain chain = tracePixelChain(scene, probe->x, probe->y);
+    printPixelReport(scene, *probe, image, stdout, &chain);
+    if (o.markPixel) std::printf("  (marked in the picture by a ring around the pixel, which leaves the pixel itself as it is)\n");
+  }
   return 0;
 }
 
@@ -217,7 +276,13 @@ Command addRenderCommand(CLI::App& app) {
   cmd->add_option("--save-scene", o->saveScene,
                   "Also write the scene drawn as a scene file (.json) that `illum render` draws to the same bytes: "
                   "a model preview becomes a scene to edit");
-  cmd->add_option("--debug-pixel", o->debugPixel, "Print every term of the lighting equation at pixel x,y (0,0 top-left)");
+  cmd->add_option("--debug-pixel", o->debugPixel,
+                  "Print every term of the lighting equation at pixel x,y (0,0 top-left), and every step from the "
+                  "fragment to the file's bytes");
+  cmd->add_option("--debug-point", o->debugPoint,
+                  "As --debug-pixel, at the pixel where a point of an object lands: OBJECT:x,y,z (in the object's own "
+                  "coordinates), or OBJECT alone for the centre of its bounds");
+  cmd->add_flag("--mark-pixel", o->markPixel, "Draw a ring around the pixel --debug-pixel or --debug-point reports");
   return [o] { return runRender(*o); };
 }
 

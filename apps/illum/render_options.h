@@ -19,6 +19,8 @@ struct RenderOptions {
   std::vector<std::string> inputs;
   std::string output;  // empty: illum.png for one picture, {stem}.png (turntables {stem}.gif) for a batch
   std::string outputDir, debugPixel, shard, format;
+  std::string debugPoint;   // --debug-point OBJECT[:x,y,z]: the pixel a point of an object lands on
+  bool markPixel = false;   // --mark-pixel: a ring around the reported pixel in the picture
   std::string saveScene;  // --save-scene: the scene drawn, as a scene file
   bool force = false, quiet = false, progress = false, json = false, failFast = false, skipExisting = false;
   int bitDepth = 8, turntable = 0, orbitLight = 0, fps = 15;

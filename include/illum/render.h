@@ -10,6 +10,7 @@
 #include <atomic>
 #include <functional>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace illum {
@@ -96,6 +97,10 @@ class Renderer {
 // the scene's display encoding at full precision, with the scene's labels over it; RGBA, rows top
 // to bottom.
 std::vector<std::uint16_t> picture16(const Scene& scene, const FloatImage& linear);
+
+// What is drawn over pixel (x, y) after the picture (the scene's labels, as their text says, and
+// the axes gizmo), each drawn alone: for `--debug-pixel`'s last step.
+std::vector<std::string> overlaysCovering(const Scene& scene, int x, int y);
 
 // The SIMD instruction set the renderer's kernels run with on this CPU, chosen at run time
 // ("AVX3" is AVX-512, then "AVX2", "SSE4", ...).

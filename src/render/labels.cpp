@@ -74,4 +74,31 @@ bool drawLabels(Image& image, const Scene& scene) {
   return true;
 }
 
+std::vector<std::string> overlaysCovering(const Scene& scene, int x, int y) {
+  std::vector<std::string> over;
+  Image blank(scene.width, scene.height);
+  const auto touched = [&](const Scene& only) {
+    std::fill(blank.rgba.begin(), blank.rgba.end(), std::uint8_t(0));
+    drawLabels(blank, only);
+    const std::uint8_t* p = blank.pixel(x, y);
+    return p[0] || p[1] || p[2] || p[3];
+  };
+  Scene one = scene;
+  one.labels.clear();
+  if (scene.overlays.axes && touched(one)) over.push_back("the axes gizmo");
+  one.overlays.axes = false;
+  for (const Label& label : scene.labels) {
+    one.labels = {label};
+    if (!touched(one)) continue;
+    std::string text;
+    try {
+      text = expandCaption(label.text, scene);
+    } catch (const InputError&) {
+      continue;
+    }
+    over.push_back("the label \"" + text + "\"");
+  }
+  return over;
+}
+
 }  // namespace illum
