@@ -165,6 +165,32 @@ TEST(CliEval, PlotsASweepAndTheLobes) {
   EXPECT_FALSE(std::filesystem::exists(dir / "p.exr"));
 }
 
+// The notes' own conventions beside GL's (seed 001): its shader scales the specular by N·L too and
+// takes the material's ambient alone; its H = (L + V)/2 is not normalised. Closed forms.
+TEST(CliEval, FollowsANotesConventionBesideGls) {
+  const double pi = 3.14159265358979;
+  // L 45° from N, V at 2·10° − 45° = −25°: H's angle to N is 10°, |L + V|/2 = cos 35°.
+  const auto half = nlohmann::json::parse(run("eval --json --model blinn-phong --angle-nl 45 --angle-nh 10 --shininess 20 "
+                                              "--material-specular 1,1,1 --convention note-half-sum").out);
+  const double noh = std::cos(35 * pi / 180) * std::cos(10 * pi / 180);
+  EXPECT_NEAR(half["convention"]["NoH"].get<double>(), noh, 1e-5);
+  EXPECT_NEAR(half["convention"]["specular"][0].get<double>(), std::pow(noh, 20), 1e-5);
+  EXPECT_NEAR(half["specular"][0].get<double>(), std::pow(std::cos(10 * pi / 180), 20), 1e-5);  // GL's
+  EXPECT_EQ(half["convention"]["diffuse"], half["diffuse"]);
+  const auto shader = nlohmann::json::parse(run("eval --json --model blinn-phong --angle-nl 60 --angle-nh 10 --shininess 20 "
+                                                "--material-specular 1,1,1 --convention note-shader").out);
+  EXPECT_NEAR(shader["convention"]["specular"][0].get<double>(), std::pow(std::cos(10 * pi / 180), 20) * 0.5, 1e-5);
+  EXPECT_NEAR(shader["convention"]["ambient"][0].get<double>(), 0.2, 1e-6);  // the material's ambient alone
+  EXPECT_NEAR(shader["convention"]["diffuse"][0].get<double>(), 0.4, 1e-5);  // 0.8 · cos 60°
+  const RunResult table = run("eval --model blinn-phong --angle-nl 60 --angle-nh 10 --shininess 20 --material-specular 1,1,1 "
+                              "--convention note-shader");
+  EXPECT_NE(table.out.find("convention note-shader (seed 001's shader"), std::string::npos) << table.out;
+  EXPECT_NE(table.out.find("Specular      0.3681    0.3681    0.3681   -0.3681 -0.3681 -0.3681"), std::string::npos) << table.out;
+  const RunResult bad = run("eval --convention note-shadr");
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_NE(bad.err.find("did you mean note-shader?"), std::string::npos) << bad.err;
+}
+
 TEST(CliEval, BadInputIsRefusedClearly) {
   const RunResult zero = run("eval --normal 0,0,0");
   EXPECT_EQ(zero.exitCode, 2);

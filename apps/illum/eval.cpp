@@ -5,6 +5,7 @@
 
 #include "cli_values.h"
 #include "commands.h"
+#include "conventions.h"
 #include "eval.h"
 
 #include <cmath>
@@ -166,6 +167,7 @@ struct Evaluation {
   LightingTerms terms;
   LightDetail d;
   Color3 total;
+  std::optional<ConventionTerms> note;  // --convention: the note's terms at the same point
 };
 
 Evaluation evaluate(const EvalOptions& o) {
@@ -239,12 +241,18 @@ Evaluation evaluate(const EvalOptions& o) {
   LightDetail d;
   accumulateLight(terms, light, material, *model, surface, &d);
   const Color3 total = Color3(clampedColor(terms, material));
-  return {*model, g, light, material, terms, d, total};
+  std::optional<ConventionTerms> note;
+  if (!o.convention.empty()) {
+    const std::optional<Convention> c = parseConvention(o.convention);
+    if (!c) badChoice("--convention", o.convention, conventionNames());
+    note = underConvention(*c, terms, light, material, *model, d, g.N, g.V);
+  }
+  return {*model, g, light, material, terms, d, total, note};
 }
 
 // The report as one JSON object: the terms unclamped, the total clamped, the vectors and factors.
 std::string evaluationJson(const Evaluation& e) {
-  const auto& [model, g, light, material, terms, d, total] = e;
+  const auto& [model, g, light, material, terms, d, total, note] = e;
   std::ostringstream json;
     json << "{\"emission\":" << triple(terms.emission) << ",\"ambient\":" << triple(terms.ambient)
             << ",\"diffuse\":" << triple(terms.diffuse) << ",\"specular\":" << triple(terms.specular)
@@ -258,12 +266,20 @@ std::string evaluationJson(const Evaluation& e) {
               << ",\"F\":" << triple(d.F);
   if (model == LightingModel::Phong)
     json << ",\"R\":" << triple(d.R) << ",\"RoV\":" << number(d.RoV) << ",\"lobe\":" << number(d.lobe);
-  json << ",\"attenuation\":" << number(d.attenuation) << ",\"spot\":" << number(d.spot) << "}";
+  json << ",\"attenuation\":" << number(d.attenuation) << ",\"spot\":" << number(d.spot);
+  if (note) {
+    json << ",\"convention\":{\"name\":\"" << note->name << "\",\"emission\":" << triple(note->emission)
+         << ",\"ambient\":" << triple(note->ambient) << ",\"diffuse\":" << triple(note->diffuse)
+         << ",\"specular\":" << triple(note->specular) << ",\"total\":" << triple(note->total);
+    if (note->name == "note-half-sum") json << ",\"NoH\":" << number(note->NoH);
+    json << "}";
+  }
+  json << "}";
   return json.str();
 }
 
 int printEvaluation(const EvalOptions& o, const Evaluation& e) {
-  const auto& [model, g, light, material, terms, d, total] = e;
+  const auto& [model, g, light, material, terms, d, total, note] = e;
   if (o.json) {
     std::cout << evaluationJson(e) << "\n";
     return 0;
@@ -294,6 +310,21 @@ int printEvaluation(const EvalOptions& o, const Evaluation& e) {
   std::printf("\nattenuation %.4f%s; spot factor %.4f%s\n", double(d.attenuation),
               d.positional ? "" : " (directional light)", double(d.spot), light.isSpot() ? "" : " (no cone)");
   explainFactors(light, material, model, d);
+  if (note) {
+    std::printf("\nconvention %s (%s):\n", note->name.c_str(), note->formula.c_str());
+    std::printf("%-10s %9s %9s %9s   %s\n", "", "R", "G", "B", "against GL's");
+    const auto compared = [](const char* name, const Color3& c, const Color3& gl) {
+      std::printf("%-10s %9.4f %9.4f %9.4f   %+.4f %+.4f %+.4f\n", name, double(c.r), double(c.g), double(c.b),
+                  double(c.r - gl.r), double(c.g - gl.g), double(c.b - gl.b));
+    };
+    compared("Emission", note->emission, terms.emission);
+    compared("Ambient", note->ambient, terms.ambient);
+    compared("Diffuse", note->diffuse, terms.diffuse);
+    compared("Specular", note->specular, terms.specular);
+    compared("Total", note->total, total);
+    if (note->name == "note-half-sum" && model == LightingModel::BlinnPhong)
+      std::printf("N·H with H = (L + V)/2: %.4f (GL's, normalised: %.4f)\n", double(note->NoH), double(d.NoH));
+  }
   return 0;
 }
 
@@ -445,6 +476,10 @@ void addEvalOptions(CLI::App& cmd_, EvalOptions& options) {
                   "Also draw FILE.png: each term against the swept value (with a sweep) and the specular lobes of "
                   "Phong and Blinn-Phong for the light's angle and the shininess");
   cmd->add_flag("-q,--quiet", o->quiet, "Print nothing (with --plot: only the figure)");
+  cmd->add_option("--convention", o->convention,
+                  "Also compute the terms as a lecture note does, beside GL's and against them: note-shader (seed "
+                  "001's shader: specular scaled by N·L too, the ambient the material's) or note-half-sum (H = (L+V)/2, "
+                  "not normalised)");
 }
 
 }  // namespace illum::cli

@@ -17,7 +17,8 @@ struct EvalOptions {
   std::string spotDirection, spotExponent, spotCutoff;
   std::string baseColor, metallic, roughness, f0, distribution;  // a physically based material
   bool json = false, quiet = false;
-  std::string plot;  // --plot FILE.png
+  std::string plot;        // --plot FILE.png
+  std::string convention;  // --convention NAME: a lecture note's way beside GL's (conventions.h)
 };
 
 // The options of `illum eval`, on `cmd`.
