@@ -13,6 +13,6 @@ while IFS= read -r line; do
   case "$args" in illustration:*) continue ;; esac
   if [ $# -gt 0 ] && ! printf '%s\n' "$@" | grep -qx "$name"; then continue; fi
   echo "docs/images/$name: illum ${args//OUT/docs/images/$name}"
-  # shellcheck disable=SC2086  # the arguments are words, as written in sources.txt
-  "$illum" ${args//OUT/docs/images/$name} --quiet
+  # The arguments as a shell reads them (quotes and all), as tests/docs_test.cpp runs them.
+  sh -c "\"$illum\" ${args//OUT/docs/images/$name} --quiet"
 done < docs/images/sources.txt
