@@ -51,6 +51,21 @@ void printChain(std::FILE* out, const Scene& scene, const PixelChain& c, const s
     std::fprintf(out, "  (the file's bytes differ from the display step's: an overlay this report does not name)\n");
 }
 
+// A multisampled pixel's samples, each as a pass at its position writes it.
+void printSamples(std::FILE* out, const Scene& scene, const PixelProbe& p) {
+  if (p.samples.empty()) return;
+  std::fprintf(out, "  the pixel's %zu samples, each as a pass at its position draws it%s:\n", p.samples.size(),
+               p.hit ? " (the fragment above is sample 0's)" : "");
+  for (std::size_t i = 0; i < p.samples.size(); ++i) {
+    const PixelProbe::Sample& s = p.samples[i];
+    std::fprintf(out, "    sample %zu at (%+.3f, %+.3f): ", i, double(s.offset.x), double(s.offset.y));
+    const Color4 c = s.hit ? s.written : scene.background;
+    if (s.hit) std::fprintf(out, "object %zu, triangle %zu", s.object, s.triangle);
+    else std::fprintf(out, "background");
+    std::fprintf(out, ": bytes %d %d %d %d%s\n", byte(c.r), byte(c.g), byte(c.b), byte(c.a), s.blended ? " (blended)" : "");
+  }
+}
+
 // The equation (OpenGL 2.1 §2.14.1) at one point, one light at a time, with each light's geometry;
 // computed by the same accumulateLight the renderer uses. Returns the clamped colour.
 Color4 printEquation(std::FILE* out, const Scene& scene, const Material& material, const Vec3& P, const Vec3& N) {
@@ -166,7 +181,9 @@ PixelChain tracePixelChain(const Scene& scene, int x, int y) {
 void printPixelReport(const Scene& scene, const PixelProbe& p, const Image& image, std::FILE* out, const PixelChain* chain) {
   const std::uint8_t* b = image.pixel(p.x, p.y);
   if (!p.hit) {
-    std::fprintf(out, "pixel (%d, %d): background, no surface drawn here\n", p.x, p.y);
+    std::fprintf(out, "pixel (%d, %d): background, no surface drawn here%s\n", p.x, p.y,
+                 p.samples.empty() ? "" : " (at sample 0)");
+    if (scene.renderer == RendererKind::Raster) printSamples(out, scene, p);
     if (chain) printChain(out, scene, *chain, b, scene.renderer != RendererKind::Raster);
     std::fprintf(out, "  in the file: bytes %d %d %d %d\n", b[0], b[1], b[2], b[3]);
     return;
@@ -207,6 +224,7 @@ void printPixelReport(const Scene& scene, const PixelProbe& p, const Image& imag
     std::fprintf(out, "  × texel %s (GL_MODULATE)\n", rgba(p.texel).c_str());
   std::fprintf(out, "  fragment: %s = bytes %d %d %d %d%s\n", rgba(p.written).c_str(), byte(p.written.r), byte(p.written.g),
               byte(p.written.b), byte(p.written.a), p.blended ? ", blended over what was there (source over)" : "");
+  printSamples(out, scene, p);
   if (chain) printChain(out, scene, *chain, b, false);
   std::fprintf(out, "  in the file: bytes %d %d %d %d\n", b[0], b[1], b[2], b[3]);
 }

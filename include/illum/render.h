@@ -60,6 +60,16 @@ struct PixelProbe {
   // Ray tracers: `lit` is the local equation with shadows (× texel), `written` what the ray brought
   // back (with mirror, glass and see-through rays, unclamped), and each light's visibility from here.
   std::vector<Color3> lightVisibility;
+  // Multisampled rasterizer: what a pass at each sample position writes at the pixel, in the
+  // pattern's order (the fields above are sample 0's).
+  struct Sample {
+    Vec2 offset{0};  // from the pixel's centre, in pixels (x right, y down)
+    bool hit = false;
+    std::size_t object = 0, triangle = 0;
+    Color4 written{0};
+    bool blended = false;
+  };
+  std::vector<Sample> samples;
 };
 
 // Renders frame after frame, keeping its working memory (framebuffer, tile bins, triangle
