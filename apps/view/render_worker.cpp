@@ -10,13 +10,14 @@
 namespace illum::view {
 namespace {
 
-// The --debug-pixel report as text (pixel_report.h writes it to a stream).
+// The --debug-pixel report as text (pixel_report.h writes it to a stream), to the file's bytes.
 std::string reportOf(const Scene& scene, const PixelProbe& probe, const Image& image) {
+  const cli::PixelChain chain = cli::tracePixelChain(scene, probe.x, probe.y);
   char* text = nullptr;
   std::size_t size = 0;
   std::FILE* out = open_memstream(&text, &size);
   if (!out) return "";
-  cli::printPixelReport(scene, probe, image, out);
+  cli::printPixelReport(scene, probe, image, out, &chain);
   std::fclose(out);
   std::string report(text, size);
   std::free(text);
