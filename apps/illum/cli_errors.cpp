@@ -2,7 +2,11 @@
 
 #include "cli_values.h"
 
+#include <illum/error.h>
+
 #include <filesystem>
+#include <iostream>
+#include <new>
 #include <regex>
 #include <sstream>
 
@@ -42,6 +46,21 @@ std::optional<std::string> unknownCommand(const std::string& first, const std::v
   const std::optional<std::string> meant = closestName(first, commands);
   return first + ": no such command or file" + (meant ? "; did you mean " + *meant + "?" : "") + " (commands: " + list +
          "; `illum FILE` renders a scene or model file)";
+}
+
+int runReportingErrors(const std::function<int()>& command) {
+  try {
+    return command();
+  } catch (const InputError& e) {
+    std::cerr << "illum: error: " << e.what() << "\n";
+    return 2;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "illum: error: out of memory\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "illum: error: " << e.what() << "\n";
+    return 1;
+  }
 }
 
 std::string explainParseError(const CLI::ParseError& error, const CLI::App& app, const std::string& command) {

@@ -5,6 +5,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -15,6 +16,10 @@ namespace illum::cli {
 // shortcut: an existing file or folder, or what looks like a path or a pattern. A bare word that is
 // neither, like "rendr", is a mistyped command: the message for it, with the closest command.
 std::optional<std::string> unknownCommand(const std::string& first, const std::vector<std::string>& commands);
+
+// Runs a command and maps what it throws to the exit status and a message on stderr: InputError
+// exit 2, everything else (Error, out of memory, ...) exit 1.
+int runReportingErrors(const std::function<int()>& command);
 
 // The message for a parse error of `command` (the subcommand's name, or empty; `app` may be that
 // subcommand itself).

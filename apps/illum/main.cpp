@@ -80,7 +80,7 @@ int main(int argc, char** argv) {
     return 2;
   }
 
-  try {
+  return illum::cli::runReportingErrors([&] {
     if (app.got_subcommand("eval")) return eval();
     if (app.got_subcommand("bench")) return bench();
     if (app.got_subcommand("compare")) return compare();
@@ -88,17 +88,5 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("thumbnail")) return thumbnail();
     if (app.got_subcommand("exercise")) return exercise();
     return render();
-  } catch (const illum::InputError& e) {
-    std::cerr << "illum: error: " << e.what() << "\n";
-    return 2;
-  } catch (const illum::Error& e) {
-    std::cerr << "illum: error: " << e.what() << "\n";
-    return 1;
-  } catch (const std::bad_alloc&) {
-    std::cerr << "illum: error: out of memory\n";
-    return 1;
-  } catch (const std::exception& e) {
-    std::cerr << "illum: error: " << e.what() << "\n";
-    return 1;
-  }
+  });
 }

@@ -6,9 +6,7 @@
 #include "cli_errors.h"
 #include "view_command.h"
 
-#include <exception>
 #include <iostream>
-#include <new>
 #include <string>
 #include <vector>
 #include <algorithm>
@@ -29,16 +27,5 @@ int main(int argc, char** argv) {
     std::cerr << "illum: error: " << illum::cli::explainParseError(e, app, "view") << "\n";
     return 2;
   }
-  try {
-    return view();
-  } catch (const illum::InputError& e) {
-    std::cerr << "illum: error: " << e.what() << "\n";
-    return 2;
-  } catch (const std::bad_alloc&) {
-    std::cerr << "illum: error: out of memory\n";
-    return 1;
-  } catch (const std::exception& e) {
-    std::cerr << "illum: error: " << e.what() << "\n";
-    return 1;
-  }
+  return illum::cli::runReportingErrors(view);
 }
