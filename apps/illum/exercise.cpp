@@ -8,6 +8,7 @@
 #include "cli_values.h"
 #include "commands.h"
 #include "eval.h"
+#include "named_options.h"
 
 #include <nlohmann/json.hpp>
 
@@ -79,10 +80,9 @@ Check evaluateCheck(std::vector<std::pair<std::string, std::string>> options, st
   EvalOptions o;
   CLI::App app;
   addEvalOptions(app, o);
-  std::vector<std::string> args;
-  for (const auto& [name, value] : options) args.insert(args.end(), {name, value});
-  std::reverse(args.begin(), args.end());
-  app.parse(args);
+  NamedOptions named;
+  for (const auto& [name, value] : options) named.push_back({name.substr(2), value});  // without the dashes
+  parseNamedOptions(app, "eval", named);
   return {std::move(options), nlohmann::json::parse(evalJson(o)), std::move(answers)};
 }
 

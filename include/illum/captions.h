@@ -28,9 +28,6 @@ constexpr Real kReadableCaption = 10;
 // placeholder it does not know or a light or object the scene lacks.
 std::string expandCaption(const std::string& text, const Scene& scene);
 
-// Checks every label's placeholders against the scene (InputError "labels[i].text: ...").
-void checkCaptions(const Scene& scene);
-
 // What the lighting model and the shading (or ray tracer) are, in a line each, as the built-in
 // scene's titles say them.
 std::string describeModel(LightingModel model);

@@ -118,14 +118,6 @@ std::string expandCaption(const std::string& text, const Scene& scene) {
   return out;
 }
 
-void checkCaptions(const Scene& scene) {
-  for (std::size_t i = 0; i < scene.labels.size(); ++i) try {
-      expandCaption(scene.labels[i].text, scene);
-    } catch (const InputError& e) {
-      throw InputError("labels[" + std::to_string(i) + "].text: " + e.what());
-    }
-}
-
 std::string describeModel(LightingModel model) {
   switch (model) {
     case LightingModel::BlinnPhong: return "Blinn-Phong: ambient + diffuse (N·L) + specular (N·H)ⁿ";
