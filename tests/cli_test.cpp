@@ -191,6 +191,60 @@ TEST(CliEval, FollowsANotesConventionBesideGls) {
   EXPECT_NE(bad.err.find("did you mean note-shader?"), std::string::npos) << bad.err;
 }
 
+// The renderer follows a note's convention too, by the same equation as eval: a square facing the
+// viewer, lit by a directional light 60° from its normal (N·L = 1/2, GL's N·H = cos 30°, the note's
+// (L + V)/2 gives N·H = 3/4), drawn by the rasterizer under every shading and by the ray tracer.
+TEST(CliRender, FollowsALectureNotesConvention) {
+  TempDir dir;
+  std::ofstream(dir / "square.json") << R"({"width": 64, "height": 64,
+    "lights": [{"position": [0.8660254037844386, 0, 0.5, 0]}],
+    "objects": [{"mesh": {"type": "triangles", "positions": [-3,-3,0, 3,-3,0, 3,3,0, -3,3,0],
+                          "normals": [0,0,1, 0,0,1, 0,0,1, 0,0,1], "indices": [0,1,2, 0,2,3]},
+                 "material": {"ambient": [0.2,0.2,0.2,1], "diffuse": [0.8,0.8,0.8,1], "specular": [1,1,1,1], "shininess": 20}}]})";
+  const double lobe = std::pow(std::cos(30 * 3.14159265358979 / 180), 20);
+  const struct {
+    const char* convention;
+    double value;
+  } expected[] = {{"gl", 0.2 * 0.2 + 0.8 * 0.5 + lobe},                 // global ambient + diffuse + specular
+                  {"note-shader", 0.2 + (0.8 + lobe) * 0.5},            // mat.ambient + (kd + ks·lobe)·N·L
+                  {"note-half-sum", 0.2 * 0.2 + 0.8 * 0.5 + std::pow(0.75, 20)}};
+  for (const auto& [convention, value] : expected)
+    for (const std::string how : {"--shading flat", "--shading gouraud", "--shading phong", "--renderer whitted"}) {
+      const RunResult r = run("render " + (dir / "square.json").string() + " " + how + " --convention " + convention +
+                              " -o " + (dir / "out.png").string());
+      ASSERT_EQ(r.exitCode, 0) << r.err;
+      const int byte = illum::readPng(dir / "out.png").pixel(32, 32)[0];
+      EXPECT_NEAR(byte, value * 255, 0.51) << convention << " " << how;
+    }
+  // The scene file's key says the same as the option.
+  std::string text = slurp(dir / "square.json");
+  text.insert(1, R"("light_model": {"convention": "note-shader"}, )");
+  std::ofstream(dir / "shader.json") << text;
+  ASSERT_EQ(run("render " + (dir / "shader.json").string() + " -o " + (dir / "key.png").string()).exitCode, 0);
+  ASSERT_EQ(run("render " + (dir / "square.json").string() + " --convention note-shader -o " + (dir / "option.png").string()).exitCode, 0);
+  EXPECT_EQ(illum::readPng(dir / "key.png").rgba, illum::readPng(dir / "option.png").rgba);
+  // --debug-pixel shows the note's terms, by name.
+  const RunResult probe = run("render " + (dir / "shader.json").string() + " --debug-pixel 32,32 -o " + (dir / "p.png").string());
+  EXPECT_NE(probe.out.find("convention note-shader"), std::string::npos) << probe.out;
+  EXPECT_NE(probe.out.find("material ambient"), std::string::npos) << probe.out;
+  // A name that is none is refused with the closest one, as a scene key by its JSON path.
+  const RunResult bad = run("render " + (dir / "square.json").string() + " --convention note-sader -o " + (dir / "x.png").string());
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_NE(bad.err.find("did you mean note-shader?"), std::string::npos) << bad.err;
+  text.replace(text.find("note-shader"), 11, "opengl");
+  std::ofstream(dir / "bad.json") << text;
+  const RunResult badKey = run("render " + (dir / "bad.json").string() + " -o " + (dir / "x.png").string());
+  EXPECT_EQ(badKey.exitCode, 2);
+  EXPECT_NE(badKey.err.find("/light_model/convention: expected \"gl\", \"note-shader\" or \"note-half-sum\", got \"opengl\""),
+            std::string::npos) << badKey.err;
+  EXPECT_FALSE(fs::exists(dir / "x.png"));
+  // The path tracer's light is physical: it says so rather than pretend.
+  const RunResult path = run("render " + (dir / "square.json").string() +
+                             " --renderer path --samples 1 --convention note-shader -o " + (dir / "path.png").string());
+  EXPECT_EQ(path.exitCode, 0) << path.err;
+  EXPECT_NE(path.err.find("no lecture note's convention"), std::string::npos) << path.err;
+}
+
 TEST(CliEval, BadInputIsRefusedClearly) {
   const RunResult zero = run("eval --normal 0,0,0");
   EXPECT_EQ(zero.exitCode, 2);

@@ -139,6 +139,33 @@ TEST(CliCompare, CaptionsStayTrueUnderAnAxis) {
   EXPECT_FALSE(std::equal(a.rgba.begin(), a.rgba.begin() + 40 * a.width * 4, b.rgba.begin()));
 }
 
+// A convention is an axis: GL's equation beside a lecture note's, each panel the render with that
+// convention, and a difference panel that says by how much they differ.
+TEST(CliCompare, PutsALecturesConventionBesideGls) {
+  TempDir dir;
+  const std::string scene = (fs::path(ILLUM_EXAMPLES_DIR) / "first_light.json").string();
+  const RunResult r = run("compare " + scene + " --rows convention=gl,note-shader --cols shading=gouraud "
+                          "--diff gl,note-shader -v -o " + (dir / "sheet.png").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const Image sheet = illum::readPng(dir / "sheet.png");
+  const std::vector<Panel> ps = panels(r.err);
+  ASSERT_GE(ps.size(), 2u);
+  for (int row = 0; row < 2; ++row) {
+    const Panel& p = ps[std::size_t(row)];
+    EXPECT_EQ(p.rowLabel, row == 0 ? "gl" : "note-shader");
+    ASSERT_EQ(run("render " + scene + " --shading gouraud --convention " + p.rowLabel + " --resolution " +
+                  std::to_string(p.width) + "," + std::to_string(p.height) + " -o " + (dir / "one.png").string()).exitCode, 0);
+    EXPECT_EQ(crop(sheet, p).rgba, illum::readPng(dir / "one.png").rgba) << p.rowLabel;
+  }
+  EXPECT_NE(crop(sheet, ps[0]).rgba, crop(sheet, ps[1]).rgba);
+  // The note's ambient is the material's whole ambient (0.2), GL's the global 0.2 × 0.2: 0.16 more
+  // wherever neither is clamped, 41 of 255.
+  EXPECT_NE(r.err.find("max 41/255"), std::string::npos) << r.err;
+  const RunResult bad = run("compare --rows convention=gl,opengl -o " + (dir / "x.png").string());
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_NE(bad.err.find("expected gl, note-shader or note-half-sum"), std::string::npos) << bad.err;
+}
+
 // A panel that comes out black says why under it: the floor of attenuation.json has no vertex in a
 // spot's cone, so flat and Gouraud shading light nothing (correct GL), and Phong shading does.
 TEST(CliCompare, BlackPanelsSayWhy) {

@@ -201,15 +201,17 @@ CLI::Validator fileUriInput() {
       "", "file URI");
 }
 
-std::vector<std::string> lightingModelChoices() {
+namespace {
+template <class E, std::size_t N>
+std::vector<std::string> choicesOf(const E (&all)[N]) {
   std::vector<std::string> names;
-  std::string list = lightingModelNames();
-  for (const std::string separator : {" or ", ", "})
-    for (std::size_t at; (at = list.find(separator)) != std::string::npos;) list.replace(at, separator.size(), "|");
-  std::stringstream in(list);
-  for (std::string name; std::getline(in, name, '|');) names.push_back(name);
+  for (const E e : all) names.emplace_back(toString(e));
   return names;
 }
+}  // namespace
+
+std::vector<std::string> lightingModelChoices() { return choicesOf(kLightingModels); }
+std::vector<std::string> conventionChoices() { return choicesOf(kConventions); }
 
 void badChoice(const std::string& option, const std::string& given, const std::vector<std::string>& choices) {
   std::string list;

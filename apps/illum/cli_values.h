@@ -44,6 +44,8 @@ CLI::Validator fileUriInput();
 
 // The lighting models' names, as the options take them.
 std::vector<std::string> lightingModelChoices();
+// The conventions' names (gl and the lecture notes').
+std::vector<std::string> conventionChoices();
 
 [[noreturn]] void badChoice(const std::string& option, const std::string& given, const std::vector<std::string>& choices);
 

@@ -1,11 +1,11 @@
 // `illum eval`: the lighting equation at one surface point for one light, as a table of terms,
 // the way a textbook exercise is solved by hand.
+#include <illum/captions.h>
 #include <illum/error.h>
 #include <illum/lighting.h>
 
 #include "cli_values.h"
 #include "commands.h"
-#include "conventions.h"
 #include "eval.h"
 
 #include <cmath>
@@ -158,6 +158,15 @@ void explainFactors(const EyeLight& light, const Material& material, LightingMod
   }
 }
 
+// The terms at the same point as a lecture note computes them (--convention), by the same code the
+// renderer follows the note with.
+struct NoteTerms {
+  Convention convention;
+  LightingTerms terms;
+  LightDetail d;
+  Color3 total;
+};
+
 // One evaluation: everything the report prints.
 struct Evaluation {
   LightingModel model;
@@ -167,7 +176,7 @@ struct Evaluation {
   LightingTerms terms;
   LightDetail d;
   Color3 total;
-  std::optional<ConventionTerms> note;  // --convention: the note's terms at the same point
+  std::optional<NoteTerms> note;  // --convention: the note's terms at the same point
 };
 
 Evaluation evaluate(const EvalOptions& o) {
@@ -241,11 +250,15 @@ Evaluation evaluate(const EvalOptions& o) {
   LightDetail d;
   accumulateLight(terms, light, material, *model, surface, &d);
   const Color3 total = Color3(clampedColor(terms, material));
-  std::optional<ConventionTerms> note;
+  std::optional<NoteTerms> note;
   if (!o.convention.empty()) {
     const std::optional<Convention> c = parseConvention(o.convention);
-    if (!c) badChoice("--convention", o.convention, conventionNames());
-    note = underConvention(*c, terms, light, material, *model, d, g.N, g.V);
+    if (!c) badChoice("--convention", o.convention, conventionChoices());
+    LightModel noteModel = lightModel;
+    noteModel.convention = *c;
+    NoteTerms& n = note.emplace(NoteTerms{*c, evaluateTerms({}, noteModel, material, *model, surface), {}, {}});
+    accumulateLight(n.terms, light, material, *model, surface, &n.d, *c);
+    n.total = Color3(clampedColor(n.terms, material));
   }
   return {*model, g, light, material, terms, d, total, note};
 }
@@ -268,10 +281,11 @@ std::string evaluationJson(const Evaluation& e) {
     json << ",\"R\":" << triple(d.R) << ",\"RoV\":" << number(d.RoV) << ",\"lobe\":" << number(d.lobe);
   json << ",\"attenuation\":" << number(d.attenuation) << ",\"spot\":" << number(d.spot);
   if (note) {
-    json << ",\"convention\":{\"name\":\"" << note->name << "\",\"emission\":" << triple(note->emission)
-         << ",\"ambient\":" << triple(note->ambient) << ",\"diffuse\":" << triple(note->diffuse)
-         << ",\"specular\":" << triple(note->specular) << ",\"total\":" << triple(note->total);
-    if (note->name == "note-half-sum") json << ",\"NoH\":" << number(note->NoH);
+    const LightingTerms& t = note->terms;
+    json << ",\"convention\":{\"name\":\"" << toString(note->convention) << "\",\"emission\":" << triple(t.emission)
+         << ",\"ambient\":" << triple(t.ambient) << ",\"diffuse\":" << triple(t.diffuse)
+         << ",\"specular\":" << triple(t.specular) << ",\"total\":" << triple(note->total);
+    if (model == LightingModel::BlinnPhong) json << ",\"NoH\":" << number(note->d.NoH);
     json << "}";
   }
   json << "}";
@@ -311,19 +325,23 @@ int printEvaluation(const EvalOptions& o, const Evaluation& e) {
               d.positional ? "" : " (directional light)", double(d.spot), light.isSpot() ? "" : " (no cone)");
   explainFactors(light, material, model, d);
   if (note) {
-    std::printf("\nconvention %s (%s):\n", note->name.c_str(), note->formula.c_str());
+    std::printf("\nconvention %s (%s):\n", std::string(toString(note->convention)).c_str(),
+                describeConvention(note->convention).c_str());
+    if (!follows(model, note->convention))
+      std::printf("(the %s model is the same under it: the note's convention changes blinn-phong, phong and lambert)\n",
+                  std::string(toString(model)).c_str());
     std::printf("%-10s %9s %9s %9s   %s\n", "", "R", "G", "B", "against GL's");
     const auto compared = [](const char* name, const Color3& c, const Color3& gl) {
       std::printf("%-10s %9.4f %9.4f %9.4f   %+.4f %+.4f %+.4f\n", name, double(c.r), double(c.g), double(c.b),
                   double(c.r - gl.r), double(c.g - gl.g), double(c.b - gl.b));
     };
-    compared("Emission", note->emission, terms.emission);
-    compared("Ambient", note->ambient, terms.ambient);
-    compared("Diffuse", note->diffuse, terms.diffuse);
-    compared("Specular", note->specular, terms.specular);
+    compared("Emission", note->terms.emission, terms.emission);
+    compared("Ambient", note->terms.ambient, terms.ambient);
+    compared("Diffuse", note->terms.diffuse, terms.diffuse);
+    compared("Specular", note->terms.specular, terms.specular);
     compared("Total", note->total, total);
-    if (note->name == "note-half-sum" && model == LightingModel::BlinnPhong)
-      std::printf("N·H with H = (L + V)/2: %.4f (GL's, normalised: %.4f)\n", double(note->NoH), double(d.NoH));
+    if (note->convention == Convention::NoteHalfSum && model == LightingModel::BlinnPhong)
+      std::printf("N·H with H = (L + V)/2: %.4f (GL's, normalised: %.4f)\n", double(note->d.NoH), double(d.NoH));
   }
   return 0;
 }

@@ -18,7 +18,7 @@ struct EvalOptions {
   std::string baseColor, metallic, roughness, f0, distribution;  // a physically based material
   bool json = false, quiet = false;
   std::string plot;        // --plot FILE.png
-  std::string convention;  // --convention NAME: a lecture note's way beside GL's (conventions.h)
+  std::string convention;  // --convention NAME: a lecture note's way beside GL's (LightModel::convention)
 };
 
 // The options of `illum eval`, on `cmd`.

@@ -78,18 +78,24 @@ Color4 printEquation(std::FILE* out, const Scene& scene, const Material& materia
                 p.distribution == Microfacet::GGX ? "GGX" : "Beckmann", vec(p.baseColor).c_str(), double(p.metallic),
                 double(p.roughness), vec(p.f0).c_str());
   }
+  if (follows(model, scene.lightModel.convention))
+    std::fprintf(out, "  convention %s (light_model's convention: a lecture note's way, not GL's)\n",
+                 std::string(toString(scene.lightModel.convention)).c_str());
   const SurfaceGeometry surface{P, N, V};
   const Mat4 view = scene.camera.viewFromWorld();
   std::fprintf(out, "  %-22s %9s %9s %9s\n", "", "R", "G", "B");
   const LightingTerms unlit = evaluateTerms({}, scene.lightModel, material, model, surface);
   row(out, "emission", unlit.emission);
-  row(out, "global ambient", unlit.ambient);
+  row(out, follows(model, scene.lightModel.convention) && scene.lightModel.convention == Convention::NoteShader
+               ? "material ambient"
+               : "global ambient",
+      unlit.ambient);
   std::vector<EyeLight> lights;
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {
     const EyeLight& light = lights.emplace_back(toEyeSpace(scene.lights[i], view));
     LightingTerms share;
     LightDetail d;
-    accumulateLight(share, light, material, model, surface, &d);
+    accumulateLight(share, light, material, model, surface, &d, scene.lightModel.convention);
     const std::string name = "light " + std::to_string(i);
     std::fprintf(out, "  %s: %s, L = %s", name.c_str(), d.positional ? "positional" : "directional", vec(d.L).c_str());
     if (d.positional) std::fprintf(out, ", distance %.4f", double(d.distance));

@@ -319,6 +319,9 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o, std::vector<std::string>* i
   cmd.add_option("--resolution", o.resolution, "Image size W,H (models: 1000,600)");
   cmd.add_option("--model", o.model, "Lighting model: " + lightingModelNames());
   cmd.add_option("--shading", o.shading, "Shading frequency: flat, gouraud or phong");
+  cmd.add_option("--convention", o.convention,
+                 "Compute the equation as GL does (gl) or as a lecture note does: note-shader (seed 001's shader: "
+                 "ambient + (diffuse + specular) x Ld·max(N·L,0)) or note-half-sum (H = (L+V)/2, not normalised)");
   cmd.add_option("--renderer", o.renderer, "raster (default), whitted (ray tracing, 1980), hall (1983) or path (path tracing, 1986)");
   cmd.add_flag("--no-shadows", o.noShadows, "Ray tracers: no shadow rays");
   cmd.add_option("--samples", o.samples,
@@ -408,6 +411,9 @@ Scene prepareScene(SceneOptions o, double* loadMs, ModelCache* cache, std::vecto
     shading = parseShading(o.shading);
     if (!shading) badChoice("--shading", o.shading, {"flat", "gouraud", "phong"});
   }
+  std::optional<Convention> convention;
+  if (!o.convention.empty() && !(convention = parseConvention(o.convention)))
+    badChoice("--convention", o.convention, conventionChoices());
   Scene scene;
   std::optional<ImportedModel> model;
   const StdinInput* piped = o.input == "-" ? o.stdinInput.get() : nullptr;
@@ -475,6 +481,10 @@ Scene prepareScene(SceneOptions o, double* loadMs, ModelCache* cache, std::vecto
   }
   if (shading) scene.shading = *shading;
   if (renderer) scene.renderer = *renderer;
+  if (convention) scene.lightModel.convention = *convention;
+  if (scene.lightModel.convention != Convention::GL && scene.renderer == RendererKind::Path)
+    warn(warnings, "convention " + std::string(toString(scene.lightModel.convention)) +
+                       ": the path tracer's light has no lecture note's convention; it is drawn as it is");
   if (model) {
     // Previews of model files are for screens: sRGB, unless --encoding says otherwise; the path
     // tracer's radiance, which has no upper bound, through ACES. (Scene files stay as GL writes.)

@@ -33,6 +33,7 @@ struct SceneOptions {
   std::optional<int> width, height;
   std::string resolution;
   std::string model, shading, background;
+  std::string convention;  // a lecture note's way of computing the equation (LightModel::convention)
   std::string toneMap, encoding;
   std::string renderer;  // raster, whitted or hall
   bool noShadows = false;

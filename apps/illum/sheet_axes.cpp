@@ -16,6 +16,7 @@ const std::map<std::string, std::vector<std::string>>& optionAxes() {
   static const std::map<std::string, std::vector<std::string>> axes = {
       {"model", {"lambert", "phong", "blinn-phong", "cook-torrance"}},
       {"shading", {"flat", "gouraud", "phong"}},
+      {"convention", {"gl", "note-shader", "note-half-sum"}},
       {"renderer", {"raster", "whitted", "hall", "path"}},
       {"samples", {"1", "4", "16", "64"}},
       {"max-depth", {"0", "1", "2", "5"}},
@@ -116,6 +117,7 @@ SheetAxis parseSheetAxis(const std::string& option, const std::string& spec, std
     const std::string what = option + " " + axis.name;
     if (axis.name == "model" && !parseLightingModel(v)) badChoice(what, v, lightingModelChoices());
     if (axis.name == "shading" && !parseShading(v)) badChoice(what, v, {"flat", "gouraud", "phong"});
+    if (axis.name == "convention" && !parseConvention(v)) badChoice(what, v, conventionChoices());
     if (axis.name == "renderer" && !parseRendererKind(v)) badChoice(what, v, {"raster", "whitted", "hall", "path"});
     if (axis.name == "tone-map" && !parseToneMap(v)) badChoice(what, v, {"none", "reinhard", "aces"});
     if (axis.name == "encoding" && !parseEncoding(v)) badChoice(what, v, {"linear", "srgb"});
@@ -137,6 +139,7 @@ void applyToOptions(const SheetAxis& axis, const std::string& value, SceneOption
   const std::string& a = axis.name;
   if (a == "model") o.model = value;
   else if (a == "shading") o.shading = value;
+  else if (a == "convention") o.convention = value;
   else if (a == "renderer") o.renderer = value;
   else if (a == "samples") o.samples = std::stoi(value);
   else if (a == "max-depth") o.maxDepth = std::stoi(value);

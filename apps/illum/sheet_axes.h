@@ -1,7 +1,7 @@
 // The axes of a comparison sheet (`illum compare --rows/--cols`): what varies from one row or
 // column to the next, and how a value changes the scene. An axis is NAME or NAME=v1,v2,... (values
 // that hold commas themselves, such as colours, are separated by ';'):
-//   model, shading, renderer, samples, max-depth, tone-map, encoding, normals, crease-angle,
+//   model, shading, convention, renderer, samples, max-depth, tone-map, encoding, normals, crease-angle,
 //   azimuth, elevation, zoom, light-intensity, view-angle   — what `illum render`'s options set;
 //   shininess, light-count, material.KEY, light.N.KEY          — what a scene file's keys set.
 #pragma once

@@ -3,6 +3,7 @@
 // or the model changes the caption with it (docs/scene-format.md, "labels").
 //
 //   {model}, {model.description}       the scene's lighting model: "phong", "Phong: ambient + ..."
+//   {convention}, {convention.description}  gl or a lecture note's (light_model's convention)
 //   {shading}, {shading.description}   its shading frequency (or ray tracer): "gouraud", "Gouraud shading: ..."
 //   {renderer}                         raster, whitted, hall or path
 //   {light.N.KEY}                      position, ambient, diffuse, specular, attenuation,
@@ -28,9 +29,10 @@ constexpr Real kReadableCaption = 10;
 // placeholder it does not know or a light or object the scene lacks.
 std::string expandCaption(const std::string& text, const Scene& scene);
 
-// What the lighting model and the shading (or ray tracer) are, in a line each, as the built-in
-// scene's titles say them.
-std::string describeModel(LightingModel model);
+// What the lighting model (as the convention computes it), the convention and the shading (or ray
+// tracer) are, in a line each, as the built-in scene's titles say them.
+std::string describeModel(LightingModel model, Convention convention = Convention::GL);
+std::string describeConvention(Convention convention);
 std::string describeShading(Shading shading, RendererKind renderer);
 
 // Why a picture of the scene comes out black where its objects are, when the lights reach none of

@@ -99,11 +99,32 @@ inline Material withVertexColor(Material m, const Color4& c) {
 // The lighting model that draws `m` in a scene whose model is `sceneModel`.
 inline LightingModel modelOf(const Material& m, LightingModel sceneModel) { return m.model.value_or(sceneModel); }
 
-// glLightModel parameters with GL's defaults.
+// How the equation is computed: as OpenGL does (§2.14.1), or as a lecture note does (seed 001):
+//   note-shader    its Blinn-Phong shader, pixel = mat.ambient + (mat.diffuse + specular) ×
+//                  Ld·max(N·L, 0): the specular scaled by the light's diffuse strength and N·L too,
+//                  the ambient the material's alone (no emission, no light or global ambient);
+//   note-half-sum  its H = (L + V) / 2 taken without normalising it: N·H smaller than GL's, so
+//                  (N·H)ⁿ falls off faster (the rest is GL's).
+// A note's convention changes the models the note teaches (blinn-phong, phong, lambert); the
+// others are computed as they are.
+enum class Convention { GL, NoteShader, NoteHalfSum };
+inline constexpr Convention kConventions[] = {Convention::GL, Convention::NoteShader, Convention::NoteHalfSum};
+std::string_view toString(Convention convention);
+std::optional<Convention> parseConvention(std::string_view name);
+// "gl, note-shader or note-half-sum" (each in double quotes with `quoted`), for messages.
+std::string conventionNames(bool quoted = false);
+// Whether `convention` changes what `model` computes.
+inline bool follows(LightingModel model, Convention convention) {
+  return convention != Convention::GL &&
+         (model == LightingModel::BlinnPhong || model == LightingModel::Phong || model == LightingModel::Lambert);
+}
+
+// glLightModel parameters with GL's defaults, and the convention the equation follows.
 struct LightModel {
   Color3 ambient{0.2, 0.2, 0.2};
   bool localViewer = false;
   bool twoSided = false;
+  Convention convention = Convention::GL;
 };
 
 // A light as the equation sees it: in EYE space, as if glLight had been called with
@@ -151,7 +172,7 @@ struct LightDetail {
   Real attenuation = 1;  // 1 / (k_c + k_l·d + k_q·d²)
   Real spot = 1;         // the spot factor, 1 without a cone
   Real NoL = 0;
-  Vec3 H{0};             // blinn-phong: normalize(L + V)
+  Vec3 H{0};             // blinn-phong: normalize(L + V) ((L + V)/2 under note-half-sum)
   Real NoH = 0;
   Vec3 R{0};             // phong: 2N(N·L) − L
   Real RoV = 0;
@@ -166,8 +187,10 @@ struct LightDetail {
 // every intermediate is recorded there too. For one light this is exactly evaluateTerms' sum; for
 // several, evaluateTerms sums the lights before the material's colours multiply them, which may
 // round the last bit differently from adding each light's contribution.
+// Under a note's `convention` (LightModel::convention), as that note computes it.
 void accumulateLight(LightingTerms& terms, const EyeLight& light, const Material& material,
-                     LightingModel model, const SurfaceGeometry& surface, LightDetail* detail = nullptr);
+                     LightingModel model, const SurfaceGeometry& surface, LightDetail* detail = nullptr,
+                     Convention convention = Convention::GL);
 
 // The full equation: emission + global ambient + Σ lights. Terms unclamped.
 LightingTerms evaluateTerms(std::span<const EyeLight> lights, const LightModel& lightModel,

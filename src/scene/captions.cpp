@@ -84,7 +84,9 @@ std::string materialValue(const Material& m, const std::string& key, const std::
 std::string value(const std::string& key, const Scene& scene) {
   const std::vector<std::string> p = split(key);
   if (key == "model") return std::string(toString(scene.model));
-  if (key == "model.description") return describeModel(scene.model);
+  if (key == "model.description") return describeModel(scene.model, scene.lightModel.convention);
+  if (key == "convention") return std::string(toString(scene.lightModel.convention));
+  if (key == "convention.description") return describeConvention(scene.lightModel.convention);
   if (key == "shading") return std::string(toString(scene.shading));
   if (key == "shading.description") return describeShading(scene.shading, scene.renderer);
   if (key == "renderer") return std::string(toString(scene.renderer));
@@ -96,7 +98,8 @@ std::string value(const std::string& key, const Scene& scene) {
     if (p.size() == 3 && p[2] == "highlight") return highlight(o.material, model);
     if (p.size() == 4 && p[2] == "material") return materialValue(o.material, p[3], key);
   }
-  throw InputError("{" + key + "}: expected {model}, {model.description}, {shading}, {shading.description}, {renderer}, "
+  throw InputError("{" + key + "}: expected {model}, {model.description}, {convention}, {convention.description}, "
+                   "{shading}, {shading.description}, {renderer}, "
                    "{light.N.KEY}, {object.N.material.KEY}, {object.N.model} or {object.N.highlight}");
 }
 
@@ -118,7 +121,16 @@ std::string expandCaption(const std::string& text, const Scene& scene) {
   return out;
 }
 
-std::string describeModel(LightingModel model) {
+std::string describeModel(LightingModel model, Convention convention) {
+  if (follows(model, convention) && convention == Convention::NoteShader) {
+    switch (model) {
+      case LightingModel::BlinnPhong: return "Blinn-Phong as seed 001's shader: ambient + (diffuse + specular (N·H)ⁿ)·(N·L)";
+      case LightingModel::Phong: return "Phong as seed 001's shader: ambient + (diffuse + specular (R·V)ⁿ)·(N·L)";
+      default: return "Lambert as seed 001's shader: the material's ambient + diffuse (N·L)";
+    }
+  }
+  if (model == LightingModel::BlinnPhong && convention == Convention::NoteHalfSum)
+    return "Blinn-Phong with seed 001's H = (L + V)/2: ambient + diffuse (N·L) + specular (N·H)ⁿ";
   switch (model) {
     case LightingModel::BlinnPhong: return "Blinn-Phong: ambient + diffuse (N·L) + specular (N·H)ⁿ";
     case LightingModel::Phong: return "Phong: ambient + diffuse (N·L) + specular (R·V)ⁿ";
@@ -126,6 +138,15 @@ std::string describeModel(LightingModel model) {
     case LightingModel::CookTorrance: return "Cook-Torrance: diffuse + D·F·G / (4 (N·L)(N·V))";
     case LightingModel::Wylie: return "Wylie (1967): intensity ∝ 1/d, no angle";
     case LightingModel::Bouknight: return "Bouknight (1970): ambient + diffuse (N·L)";
+  }
+  return "";
+}
+
+std::string describeConvention(Convention convention) {
+  switch (convention) {
+    case Convention::GL: return "OpenGL's equation (2.1, §2.14.1)";
+    case Convention::NoteShader: return "seed 001's shader: pixel = mat.ambient + (mat.diffuse + specular) × Ld·max(N·L, 0)";
+    case Convention::NoteHalfSum: return "seed 001's H = (L + V) / 2, not normalised: (N·H)ⁿ with |H| ≤ 1";
   }
   return "";
 }

@@ -60,6 +60,10 @@ TEST(Captions, PlaceholdersNameLightsAndMaterials) {
   EXPECT_EQ(expandCaption("{light.0.attenuation}, cutoff {light.0.spot_cutoff}°", s), "(0, 0, 1), cutoff 36°");
   EXPECT_EQ(expandCaption("kd = {object.0.material.diffuse}, n = {object.0.material.shininess}", s), "kd = (0.5, 0.25, 1), n = 25");
   EXPECT_EQ(expandCaption("no placeholder", s), "no placeholder");
+  EXPECT_EQ(expandCaption("{convention}", s), "gl");
+  s.lightModel.convention = Convention::NoteShader;
+  EXPECT_EQ(expandCaption("{convention}: {model.description}", s),
+            "note-shader: Blinn-Phong as seed 001's shader: ambient + (diffuse + specular (N·H)ⁿ)·(N·L)");
 }
 
 TEST(Captions, AnUnknownPlaceholderIsRefusedWithWhatThereIs) {

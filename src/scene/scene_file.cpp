@@ -56,10 +56,16 @@ void checkCamera(const JsonReader& j, const Camera& cam, Real aspect) {
 }
 
 void readLightModel(const JsonReader& j, LightModel& lm) {
-  j.expectObject({"ambient", "local_viewer", "two_sided"});
+  j.expectObject({"ambient", "local_viewer", "two_sided", "convention"});
   if (j.has("ambient")) lm.ambient = Color3(j.at("ambient").intensity34());
   if (j.has("local_viewer")) lm.localViewer = j.at("local_viewer").boolean();
   if (j.has("two_sided")) lm.twoSided = j.at("two_sided").boolean();
+  if (j.has("convention")) {
+    const std::string name = j.at("convention").string();
+    const std::optional<Convention> c = parseConvention(name);
+    if (!c) j.at("convention").fail("expected " + conventionNames(true) + ", got \"" + name + "\"");
+    lm.convention = *c;
+  }
 }
 
 Light readLight(const JsonReader& j) {

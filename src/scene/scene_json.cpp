@@ -240,6 +240,8 @@ std::string sceneJson(const Scene& s) {
   j["light_model"] = Json{{"ambient", of(s.lightModel.ambient)},
                           {"local_viewer", s.lightModel.localViewer},
                           {"two_sided", s.lightModel.twoSided}};
+  if (s.lightModel.convention != Convention::GL)
+    j["light_model"]["convention"] = std::string(toString(s.lightModel.convention));
   j["lights"] = Json::array();
   for (const Light& l : s.lights) j["lights"].push_back(light(l));
   j["objects"] = objects(s.objects);

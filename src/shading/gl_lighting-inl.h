@@ -98,11 +98,13 @@ HWY_INLINE Vec3L<V> ToViewer(D d, const Vec3L<V>& P, bool localViewer) {
 }
 
 // Emission and the light model's global ambient: the terms before any light (Wylie's 1967 model
-// has no ambient light).
+// has no ambient light; seed 001's shader has the material's ambient alone, and no emission).
 template <class D, class V = hn::VFromD<D>>
 HWY_INLINE TermsL<V> TermsWithoutLights(D d, const LightModel& lightModel, const Material& material,
                                         const MaterialColorsL<V>& colors, LightingModel model) {
   const Vec3L<V> zero = Broadcast(d, Vec3(0));
+  if (follows(model, lightModel.convention) && lightModel.convention == Convention::NoteShader)
+    return {zero, colors.ambient, zero, zero};
   const Vec3L<V> ambient = model == LightingModel::Wylie ? zero : Mul(Broadcast(d, lightModel.ambient), colors.ambient);
   return {Broadcast(d, Vec3(material.emission)), ambient, zero, zero};
 }
@@ -136,11 +138,12 @@ HWY_INLINE void AccumulateEarlyLight(D d, LightSumsL<V>& sums, const EyeLight& l
 }
 
 // One light's bracket without the material's colours, attenuation and spot applied, added to
-// `sums`; the recorder's terms are the light's share with the material's colours (`colors`).
+// `sums`; the recorder's terms are the light's share with the material's colours (`colors`). A
+// note's `convention` changes the bracket as lighting.h says.
 template <bool kRecord, class D, class V = hn::VFromD<D>>
 HWY_INLINE void AccumulateGlLight(D d, LightSumsL<V>& sums, const EyeLight& light, const Material& material,
-                                  const MaterialColorsL<V>& colors, LightingModel model, const SurfaceL<V>& s,
-                                  LightDetail* record) {
+                                  const MaterialColorsL<V>& colors, LightingModel model, Convention convention,
+                                  const SurfaceL<V>& s, LightDetail* record) {
   // Where is the light.
   const LightSample<V> ls = SampleLight(d, light, s.P, s.N);
   const V scale = ls.attenuation * ls.spot;
@@ -153,11 +156,19 @@ HWY_INLINE void AccumulateGlLight(D d, LightSumsL<V>& sums, const EyeLight& ligh
 
   // How the surface answers: ambient, Lambert's diffuse and the model's specular lobe, the last
   // only where N·L > 0 (f_i = 0: no highlight without direct light).
-  const Vec3L<V> ambient = scale * Broadcast(d, light.ambient);
-  const Vec3L<V> diffuse = (scale * Fd_LambertCosine(NoL)) * Broadcast(d, light.diffuse);
+  const bool noteShader = convention == Convention::NoteShader;
+  const Vec3L<V> ambient = noteShader ? Broadcast(d, Vec3(0)) : scale * Broadcast(d, light.ambient);
+  const V strength = scale * Fd_LambertCosine(NoL);  // the note's "light strength", Ld's factor
+  const Vec3L<V> diffuse = strength * Broadcast(d, light.diffuse);
   const auto lit = NoL > hn::Zero(d);
   V lobe = hn::Zero(d);
-  if (model == LightingModel::BlinnPhong && (kRecord || !hn::AllFalse(d, lit))) {
+  if (model == LightingModel::BlinnPhong && convention == Convention::NoteHalfSum &&
+      (kRecord || !hn::AllFalse(d, lit))) {
+    const Vec3L<V> H = hn::Set(d, Real(0.5)) * (ls.L + s.toViewer);
+    const V NoH = Dot(s.N, H);
+    lobe = hn::IfThenElseZero(lit, Fs_BlinnPhong(d, NoH, material.shininess));
+    if constexpr (kRecord) record->H = Lane0(H), record->NoH = hn::GetLane(NoH);
+  } else if (model == LightingModel::BlinnPhong && (kRecord || !hn::AllFalse(d, lit))) {
     const Vec3L<V> H = ls.L + s.toViewer;
     const V len = Length(H);
     // L = −V (up to rounding) leaves H undefined; illum takes N·H = 0 (so only 0^0 = 1 survives).
@@ -175,7 +186,9 @@ HWY_INLINE void AccumulateGlLight(D d, LightSumsL<V>& sums, const EyeLight& ligh
     lobe = hn::IfThenElseZero(lit, Fs_Phong(d, RoV, material.shininess));
     if constexpr (kRecord) record->R = Lane0(R), record->RoV = hn::GetLane(RoV);
   }
-  const Vec3L<V> specular = (scale * lobe) * Broadcast(d, light.specular);
+  // The note's shader: the highlight, too, is the light's strength (its diffuse colour times N·L).
+  const Vec3L<V> specular =
+      noteShader ? (strength * lobe) * Broadcast(d, light.diffuse) : (scale * lobe) * Broadcast(d, light.specular);
   if constexpr (kRecord) {
     record->lobe = hn::GetLane(lobe);
     if (hn::GetLane(scale) != 0) {
@@ -196,15 +209,16 @@ HWY_INLINE void AccumulateGlLight(D d, LightSumsL<V>& sums, const EyeLight& ligh
 template <bool kRecord, class D, class V = hn::VFromD<D>>
 HWY_INLINE void AccumulateLight(D d, TermsL<V>& terms, LightSumsL<V>& sums, const EyeLight& light,
                                 const Material& material, const PhysicalL<V>& physical,
-                                const MaterialColorsL<V>& colors, LightingModel model, const SurfaceL<V>& s,
-                                LightDetail* record) {
+                                const MaterialColorsL<V>& colors, LightingModel model, Convention convention,
+                                const SurfaceL<V>& s, LightDetail* record) {
   if (model == LightingModel::CookTorrance)
     AccumulateCookTorrance<kRecord>(d, terms.ambient, terms.diffuse, terms.specular, light, physical, colors.diffuse,
                                     s.P, s.N, s.toViewer, record);
   else if (model == LightingModel::Wylie || model == LightingModel::Bouknight)
     AccumulateEarlyLight<kRecord>(d, sums, light, colors, model, s, record);
   else
-    AccumulateGlLight<kRecord>(d, sums, light, material, colors, model, s, record);
+    AccumulateGlLight<kRecord>(d, sums, light, material, colors, model,
+                               follows(model, convention) ? convention : Convention::GL, s, record);
 }
 
 // The lights' `sums` reflected by the material's colours into `terms` (AddReflected), under
@@ -231,13 +245,15 @@ HWY_INLINE TermsL<V> ShadeEquation(D d, std::span<const EyeLight> lights, const 
                                    const Material& material, const MaterialColorsL<V>& colors, LightingModel model,
                                    const SurfaceL<V>& s, const MappedL<V>& mapped = {}) {
   TermsL<V> terms = TermsWithoutLights(d, lightModel, material, colors, model);
-  if (mapped.emission) terms.emission = *mapped.emission;
+  if (mapped.emission && !(follows(model, lightModel.convention) && lightModel.convention == Convention::NoteShader))
+    terms.emission = *mapped.emission;  // (the note's shader has no emission)
   const PhysicalMaterial physicalMaterial = model == LightingModel::CookTorrance ? physicalOf(material) : PhysicalMaterial{};
   const PhysicalL<V> physical = mapped.metallic ? LanePhysical(d, physicalMaterial, *mapped.metallic, *mapped.roughness)
                                                 : UniformPhysical(d, physicalMaterial);
   LightSumsL<V> sums = NoLight(d);
   for (const EyeLight& light : lights)
-    AccumulateLight<false>(d, terms, sums, light, material, physical, colors, model, s, nullptr);
+    AccumulateLight<false>(d, terms, sums, light, material, physical, colors, model, lightModel.convention, s,
+                           nullptr);
   if (!lights.empty()) AddLightSums(d, terms, sums, material, colors, model);
   return terms;
 }

@@ -18,16 +18,23 @@ std::string_view toString(LightingModel model) {
   return "?";
 }
 
-std::string lightingModelNames(bool quoted) {
+namespace {
+
+// "a, b or c" of every name in `all`, in double quotes with `quoted`.
+template <class E, std::size_t N>
+std::string namesOf(const E (&all)[N], bool quoted) {
   std::string list;
-  const std::size_t n = std::size(kLightingModels);
-  for (std::size_t i = 0; i < n; ++i) {
-    if (i > 0) list += i + 1 == n ? " or " : ", ";
-    const std::string name(toString(kLightingModels[i]));
+  for (std::size_t i = 0; i < N; ++i) {
+    if (i > 0) list += i + 1 == N ? " or " : ", ";
+    const std::string name(toString(all[i]));
     list += quoted ? "\"" + name + "\"" : name;
   }
   return list;
 }
+
+}  // namespace
+
+std::string lightingModelNames(bool quoted) { return namesOf(kLightingModels, quoted); }
 
 std::string_view toString(Shading shading) {
   switch (shading) {
@@ -50,6 +57,23 @@ std::optional<Shading> parseShading(std::string_view name) {
   if (name == "phong") return Shading::Phong;
   return std::nullopt;
 }
+
+std::string_view toString(Convention convention) {
+  switch (convention) {
+    case Convention::GL: return "gl";
+    case Convention::NoteShader: return "note-shader";
+    case Convention::NoteHalfSum: return "note-half-sum";
+  }
+  return "?";
+}
+
+std::optional<Convention> parseConvention(std::string_view name) {
+  for (Convention c : kConventions)
+    if (name == toString(c)) return c;
+  return std::nullopt;
+}
+
+std::string conventionNames(bool quoted) { return namesOf(kConventions, quoted); }
 
 EyeLight toEyeSpace(const Light& light, const Mat4& viewFromWorld) {
   EyeLight eye;

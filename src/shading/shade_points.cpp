@@ -264,7 +264,7 @@ HWY_NAMESPACE::MaterialColorsL<V> colors(const Material& m, LightingModel model)
 }  // namespace one
 
 void accumulateLight(LightingTerms& terms, const EyeLight& light, const Material& material, LightingModel model,
-                     const SurfaceGeometry& surface, LightDetail* detail) {
+                     const SurfaceGeometry& surface, LightDetail* detail, Convention convention) {
   auto t = HWY_NAMESPACE::NoTerms(one::d);
   auto sums = HWY_NAMESPACE::NoLight(one::d);
   const auto physical = HWY_NAMESPACE::UniformPhysical(
@@ -272,10 +272,10 @@ void accumulateLight(LightingTerms& terms, const EyeLight& light, const Material
   const auto colors = one::colors(material, model);
   if (detail) {
     *detail = LightDetail{};
-    HWY_NAMESPACE::AccumulateLight<true>(one::d, t, sums, light, material, physical, colors, model,
+    HWY_NAMESPACE::AccumulateLight<true>(one::d, t, sums, light, material, physical, colors, model, convention,
                                          one::surface(surface), detail);
   } else {
-    HWY_NAMESPACE::AccumulateLight<false>(one::d, t, sums, light, material, physical, colors, model,
+    HWY_NAMESPACE::AccumulateLight<false>(one::d, t, sums, light, material, physical, colors, model, convention,
                                           one::surface(surface), nullptr);
   }
   HWY_NAMESPACE::AddLightSums(one::d, t, sums, material, colors, model);

@@ -32,7 +32,7 @@ LightingTerms localTerms(std::span<const EyeLight> lights, const LightModel& lig
   for (const EyeLight& light : lights) {
     LightingTerms one;
     LightDetail detail;
-    accumulateLight(one, light, s.material, model, s.geometry, &detail);
+    accumulateLight(one, light, s.material, model, s.geometry, &detail, lightModel.convention);
     terms.ambient = terms.ambient + one.ambient;  // a light's ambient term reaches every point
     const Real scale = detail.attenuation * detail.spot;
     const bool lit = one.diffuse != Color3(0) || one.specular != Color3(0);

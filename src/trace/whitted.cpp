@@ -158,7 +158,7 @@ Color4 WhittedTracer::shade(const Ray& ray, const RayHit& rayHit, const Path& pa
     for (const EyeLight& light : lights_) {
       LightingTerms unused;
       LightDetail d;
-      accumulateLight(unused, light, material, model, local.geometry, &d);
+      accumulateLight(unused, light, material, model, local.geometry, &d, scene_.lightModel.convention);
       probe->lightVisibility.push_back(scene_.rayTracing.shadows ? shadows.towards(light, d.L, d.distance) : Color3(1));
     }
   }
