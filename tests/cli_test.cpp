@@ -223,6 +223,15 @@ TEST(CliRender, FollowsALectureNotesConvention) {
   ASSERT_EQ(run("render " + (dir / "shader.json").string() + " -o " + (dir / "key.png").string()).exitCode, 0);
   ASSERT_EQ(run("render " + (dir / "square.json").string() + " --convention note-shader -o " + (dir / "option.png").string()).exitCode, 0);
   EXPECT_EQ(illum::readPng(dir / "key.png").rgba, illum::readPng(dir / "option.png").rgba);
+  // Seed 004's world space: V towards the camera, GL's local viewer, byte for byte; not GL's default.
+  std::string local = slurp(dir / "square.json");
+  local.insert(1, R"("light_model": {"local_viewer": true}, )");
+  std::ofstream(dir / "local.json") << local;
+  ASSERT_EQ(run("render " + (dir / "local.json").string() + " -o " + (dir / "local.png").string()).exitCode, 0);
+  ASSERT_EQ(run("render " + (dir / "square.json").string() + " --convention note-world-space -o " + (dir / "world.png").string()).exitCode, 0);
+  ASSERT_EQ(run("render " + (dir / "square.json").string() + " -o " + (dir / "gl.png").string()).exitCode, 0);
+  EXPECT_EQ(illum::readPng(dir / "world.png").rgba, illum::readPng(dir / "local.png").rgba);
+  EXPECT_NE(illum::readPng(dir / "world.png").rgba, illum::readPng(dir / "gl.png").rgba);
   // --debug-pixel shows the note's terms, by name.
   const RunResult probe = run("render " + (dir / "shader.json").string() + " --debug-pixel 32,32 -o " + (dir / "p.png").string());
   EXPECT_NE(probe.out.find("convention note-shader"), std::string::npos) << probe.out;
@@ -235,7 +244,7 @@ TEST(CliRender, FollowsALectureNotesConvention) {
   std::ofstream(dir / "bad.json") << text;
   const RunResult badKey = run("render " + (dir / "bad.json").string() + " -o " + (dir / "x.png").string());
   EXPECT_EQ(badKey.exitCode, 2);
-  EXPECT_NE(badKey.err.find("/light_model/convention: expected \"gl\", \"note-shader\" or \"note-half-sum\", got \"opengl\""),
+  EXPECT_NE(badKey.err.find("/light_model/convention: expected \"gl\", \"note-shader\", \"note-half-sum\" or \"note-world-space\", got \"opengl\""),
             std::string::npos) << badKey.err;
   EXPECT_FALSE(fs::exists(dir / "x.png"));
   // The path tracer's light is physical: it says so rather than pretend.

@@ -327,7 +327,10 @@ int printEvaluation(const EvalOptions& o, const Evaluation& e) {
   if (note) {
     std::printf("\nconvention %s (%s):\n", std::string(toString(note->convention)).c_str(),
                 describeConvention(note->convention).c_str());
-    if (!follows(model, note->convention))
+    if (note->convention == Convention::NoteWorldSpace)
+      std::printf("(the same at one point whose V is given: world space changes V across a surface, from each point "
+                  "to the camera rather than (0, 0, 1); see it with illum render --convention note-world-space)\n");
+    else if (!follows(model, note->convention))
       std::printf("(the %s model is the same under it: the note's convention changes blinn-phong, phong and lambert)\n",
                   std::string(toString(model)).c_str());
     std::printf("%-10s %9s %9s %9s   %s\n", "", "R", "G", "B", "against GL's");

@@ -70,7 +70,7 @@ void printSamples(std::FILE* out, const Scene& scene, const PixelProbe& p) {
 // computed by the same accumulateLight the renderer uses. Returns the clamped colour.
 Color4 printEquation(std::FILE* out, const Scene& scene, const Material& material, const Vec3& P, const Vec3& N) {
   const LightingModel model = modelOf(material, scene.model);
-  const Vec3 V = viewerDirection(P, scene.lightModel.localViewer);
+  const Vec3 V = viewerDirection(P, scene.lightModel);
   std::fprintf(out, "  eye space: P = %s, N = %s, V = %s\n", vec(P).c_str(), vec(N).c_str(), vec(V).c_str());
   if (model == LightingModel::CookTorrance) {
     const PhysicalMaterial p = physicalOf(material);

@@ -321,7 +321,8 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o, std::vector<std::string>* i
   cmd.add_option("--shading", o.shading, "Shading frequency: flat, gouraud or phong");
   cmd.add_option("--convention", o.convention,
                  "Compute the equation as GL does (gl) or as a lecture note does: note-shader (seed 001's shader: "
-                 "ambient + (diffuse + specular) x Ld·max(N·L,0)) or note-half-sum (H = (L+V)/2, not normalised)");
+                 "ambient + (diffuse + specular) x Ld·max(N·L,0)), note-half-sum (H = (L+V)/2, not normalised) or "
+                 "note-world-space (seed 004: V towards the camera's position)");
   cmd.add_option("--renderer", o.renderer, "raster (default), whitted (ray tracing, 1980), hall (1983) or path (path tracing, 1986)");
   cmd.add_flag("--no-shadows", o.noShadows, "Ray tracers: no shadow rays");
   cmd.add_option("--samples", o.samples,

@@ -16,7 +16,7 @@ const std::map<std::string, std::vector<std::string>>& optionAxes() {
   static const std::map<std::string, std::vector<std::string>> axes = {
       {"model", {"lambert", "phong", "blinn-phong", "cook-torrance"}},
       {"shading", {"flat", "gouraud", "phong"}},
-      {"convention", {"gl", "note-shader", "note-half-sum"}},
+      {"convention", {"gl", "note-shader", "note-half-sum", "note-world-space"}},
       {"renderer", {"raster", "whitted", "hall", "path"}},
       {"samples", {"1", "4", "16", "64"}},
       {"max-depth", {"0", "1", "2", "5"}},

@@ -104,17 +104,23 @@ inline LightingModel modelOf(const Material& m, LightingModel sceneModel) { retu
 //                  Ld·max(N·L, 0): the specular scaled by the light's diffuse strength and N·L too,
 //                  the ambient the material's alone (no emission, no light or global ambient);
 //   note-half-sum  its H = (L + V) / 2 taken without normalising it: N·H smaller than GL's, so
-//                  (N·H)ⁿ falls off faster (the rest is GL's).
-// A note's convention changes the models the note teaches (blinn-phong, phong, lambert); the
-// others are computed as they are.
-enum class Convention { GL, NoteShader, NoteHalfSum };
-inline constexpr Convention kConventions[] = {Convention::GL, Convention::NoteShader, Convention::NoteHalfSum};
+//                  (N·H)ⁿ falls off faster (the rest is GL's);
+//   note-world-space  seed 004's lighting in world space, V from each point to the camera's
+//                  position: GL's local viewer (the rigid view transform keeps every angle, so
+//                  the viewer's direction is the whole difference from GL's eye space, where an
+//                  infinite viewer's V is (0, 0, 1) everywhere).
+// The shader and the half sum change the models the note teaches (blinn-phong, phong, lambert);
+// the others are computed as they are. World space changes V for every model.
+enum class Convention { GL, NoteShader, NoteHalfSum, NoteWorldSpace };
+inline constexpr Convention kConventions[] = {Convention::GL, Convention::NoteShader, Convention::NoteHalfSum,
+                                              Convention::NoteWorldSpace};
 std::string_view toString(Convention convention);
 std::optional<Convention> parseConvention(std::string_view name);
 // "gl, note-shader or note-half-sum" (each in double quotes with `quoted`), for messages.
 std::string conventionNames(bool quoted = false);
 // Whether `convention` changes what `model` computes.
 inline bool follows(LightingModel model, Convention convention) {
+  if (convention == Convention::NoteWorldSpace) return true;
   return convention != Convention::GL &&
          (model == LightingModel::BlinnPhong || model == LightingModel::Phong || model == LightingModel::Lambert);
 }
@@ -126,6 +132,10 @@ struct LightModel {
   bool twoSided = false;
   Convention convention = Convention::GL;
 };
+
+// Whether V points from each point to the eye (GL_LIGHT_MODEL_LOCAL_VIEWER, or seed 004's world
+// space) rather than along +z.
+inline bool viewerIsLocal(const LightModel& lm) { return lm.localViewer || lm.convention == Convention::NoteWorldSpace; }
 
 // A light as the equation sees it: in EYE space, as if glLight had been called with
 // GL_MODELVIEW = viewFromWorld, with the cone's cosine precomputed.
@@ -200,7 +210,8 @@ LightingTerms evaluateTerms(std::span<const EyeLight> lights, const LightModel& 
 // The colour GL writes: each channel of the sum clamped to [0,1], alpha from the diffuse material.
 Color4 clampedColor(const LightingTerms& terms, const Material& material);
 
-// The viewer direction GL uses: (0,0,1) for an infinite viewer, normalize(-P) for a local one.
-Vec3 viewerDirection(const Vec3& eyePosition, bool localViewer);
+// The viewer direction GL uses: (0,0,1) for an infinite viewer, normalize(-P) for a local one
+// (viewerIsLocal).
+Vec3 viewerDirection(const Vec3& eyePosition, const LightModel& lightModel);
 
 }  // namespace illum

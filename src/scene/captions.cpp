@@ -147,6 +147,7 @@ std::string describeConvention(Convention convention) {
     case Convention::GL: return "OpenGL's equation (2.1, §2.14.1)";
     case Convention::NoteShader: return "seed 001's shader: pixel = mat.ambient + (mat.diffuse + specular) × Ld·max(N·L, 0)";
     case Convention::NoteHalfSum: return "seed 001's H = (L + V) / 2, not normalised: (N·H)ⁿ with |H| ≤ 1";
+    case Convention::NoteWorldSpace: return "seed 004's world space: V from each point to the camera (GL's local viewer)";
   }
   return "";
 }

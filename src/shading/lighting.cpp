@@ -63,6 +63,7 @@ std::string_view toString(Convention convention) {
     case Convention::GL: return "gl";
     case Convention::NoteShader: return "note-shader";
     case Convention::NoteHalfSum: return "note-half-sum";
+    case Convention::NoteWorldSpace: return "note-world-space";
   }
   return "?";
 }

@@ -221,11 +221,50 @@ TEST(Spot, NoSpotAtCutoff180) {
 }
 
 TEST(Viewer, LocalVersusInfinite) {
-  EXPECT_EQ(viewerDirection(Vec3(3, 4, -5), false), Vec3(0, 0, 1));
-  const Vec3 v = viewerDirection(Vec3(3, 0, -4), true);
-  expectColor(v, {-0.6, 0, 0.8});
+  LightModel infinite, local, worldSpace;
+  local.localViewer = true;
+  worldSpace.convention = Convention::NoteWorldSpace;
+  EXPECT_EQ(viewerDirection(Vec3(3, 4, -5), infinite), Vec3(0, 0, 1));
+  expectColor(viewerDirection(Vec3(3, 0, -4), local), {-0.6, 0, 0.8});
+  // Seed 004's world space: V towards the camera's position, which is the local viewer's.
+  expectColor(viewerDirection(Vec3(3, 0, -4), worldSpace), {-0.6, 0, 0.8});
   // At the eye itself the direction is undefined; the infinite viewer's is taken.
-  EXPECT_EQ(viewerDirection(Vec3(0), true), Vec3(0, 0, 1));
+  EXPECT_EQ(viewerDirection(Vec3(0), local), Vec3(0, 0, 1));
+}
+
+// Seed 001's shader and half sum, closed forms: N = V = +z, a directional light 60° from N.
+TEST(Equation, TheNotesConventions) {
+  const Real c60 = Real(0.5), s60 = std::sqrt(Real(3)) / 2;
+  EyeLight light;
+  light.position = Vec4(s60, 0, c60, 0);
+  light.ambient = Color3(0.3);
+  light.diffuse = Color3(0.5);
+  light.specular = Color3(1);
+  Material m;
+  m.specular = Color4(1);
+  m.emission = Color4(0.1, 0.1, 0.1, 1);
+  m.shininess = 20;
+  const SurfaceGeometry s{Vec3(0), Vec3(0, 0, 1), Vec3(0, 0, 1)};
+  const Real lobe = std::pow(std::cos(glm::radians(Real(30))), Real(20));
+  LightModel lm;
+  lm.convention = Convention::NoteShader;
+  const EyeLight lights[] = {light};
+  const LightingTerms shader = evaluateTerms(lights, lm, m, LightingModel::BlinnPhong, s);
+  expectColor(shader.emission, Color3(0));                   // no emission
+  expectColor(shader.ambient, Color3(0.2));                  // the material's ambient alone
+  expectColor(shader.diffuse, Color3(0.8 * 0.5 * c60));      // kd · Ld·(N·L)
+  expectColor(shader.specular, Color3(lobe * 0.5 * c60));    // ks · (N·H)ⁿ · Ld·(N·L): Ld, not Ls
+  lm.convention = Convention::NoteHalfSum;
+  const LightingTerms half = evaluateTerms(lights, lm, m, LightingModel::BlinnPhong, s);
+  expectColor(half.specular, Color3(std::pow(Real(0.75), Real(20))));  // N·(L + V)/2 = (1/2 + 1)/2
+  expectColor(half.ambient, Color3(0.2 * 0.2 + 0.2 * 0.3));          // GL's ambient terms
+  // The models the note does not teach are as they are.
+  lm.convention = Convention::NoteShader;
+  Material physical = m;
+  const LightingTerms ct = evaluateTerms(lights, lm, physical, LightingModel::CookTorrance, s);
+  lm.convention = Convention::GL;
+  const LightingTerms ctGl = evaluateTerms(lights, lm, physical, LightingModel::CookTorrance, s);
+  EXPECT_EQ(ct.sum(), ctGl.sum());
 }
 
 TEST(Equation, EmissionAndGlobalAmbientAndClamp) {

@@ -37,7 +37,7 @@ HWY_INLINE void LoadMaps(D d, const SurfacePoints& p, std::size_t i, MapLanes<V>
 template <class D, class V = hn::VFromD<D>>
 HWY_INLINE void LitColor(D d, const ShadeSetup& setup, SurfaceL<V>& s, const Real* const* color, const Real* open,
                          V& r, V& g, V& b, V& a, const MappedL<V>& mapped = {}) {
-  s.toViewer = ToViewer(d, s.P, setup.lightModel.localViewer);
+  s.toViewer = ToViewer(d, s.P, viewerIsLocal(setup.lightModel));
   MaterialColorsL<V> colors = UniformColors(d, setup.material, setup.model);
   if (color) {
     const Vec3L<V> c{hn::LoadU(d, color[0]), hn::LoadU(d, color[1]), hn::LoadU(d, color[2])};
@@ -300,8 +300,8 @@ Color4 clampedColor(const LightingTerms& terms, const Material& material) {
   return {hn::GetLane(r), hn::GetLane(g), hn::GetLane(b), hn::GetLane(a)};
 }
 
-Vec3 viewerDirection(const Vec3& eyePosition, bool localViewer) {
-  return HWY_NAMESPACE::Lane0(HWY_NAMESPACE::ToViewer(one::d, one::lanes(eyePosition), localViewer));
+Vec3 viewerDirection(const Vec3& eyePosition, const LightModel& lightModel) {
+  return HWY_NAMESPACE::Lane0(HWY_NAMESPACE::ToViewer(one::d, one::lanes(eyePosition), viewerIsLocal(lightModel)));
 }
 
 Real Fd_LambertCosine(Real NoL) { return hn::GetLane(HWY_NAMESPACE::Fd_LambertCosine(one::lane(NoL))); }

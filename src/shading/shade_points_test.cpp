@@ -81,14 +81,26 @@ std::vector<Real> shadeAll(const ShadeSetup& setup, const Batch& b) {
 
 bool sameBits(Real a, Real b) { return std::memcmp(&a, &b, sizeof(Real)) == 0; }
 
-class EveryModelAndLight : public testing::TestWithParam<std::tuple<LightingModel, int, bool, bool>> {};
+// How the equation is asked for: GL's with an infinite or a local viewer, or a lecture note's way.
+struct Viewing {
+  bool localViewer;
+  Convention convention;
+};
+constexpr Viewing kViewings[] = {{false, Convention::GL},
+                                 {true, Convention::GL},
+                                 {false, Convention::NoteShader},
+                                 {false, Convention::NoteHalfSum},
+                                 {false, Convention::NoteWorldSpace}};
+
+class EveryModelAndLight : public testing::TestWithParam<std::tuple<LightingModel, int, bool, int>> {};
 
 TEST_P(EveryModelAndLight, SimdEqualsOneLaneBitForBit) {
-  const auto [model, kind, colors, localViewer] = GetParam();
+  const auto [model, kind, colors, viewing] = GetParam();
   std::mt19937 rng(1234 + kind);
   const std::vector<EyeLight> lights = lightsOfKind(kind);
   ShadeSetup setup{lights, {}, model, {}};
-  setup.lightModel.localViewer = localViewer;
+  setup.lightModel.localViewer = kViewings[viewing].localViewer;
+  setup.lightModel.convention = kViewings[viewing].convention;
   setup.material.specular = {0.8f, 0.8f, 0.8f, 1};
   setup.material.emission = {0.01f, 0.02f, 0.03f, 1};
   setup.material.shininess = 37;
@@ -108,7 +120,7 @@ TEST_P(EveryModelAndLight, SimdEqualsOneLaneBitForBit) {
     const Vec3 p(b.v[0][i], b.v[1][i], b.v[2][i]), nrm(b.v[3][i], b.v[4][i], b.v[5][i]);
     Material m = setup.material;
     if (colors) m = withVertexColor(m, {b.v[6][i], b.v[7][i], b.v[8][i], b.v[9][i]});
-    const SurfaceGeometry s{p, nrm, viewerDirection(p, localViewer)};
+    const SurfaceGeometry s{p, nrm, viewerDirection(p, setup.lightModel)};
     const Color4 one = clampedColor(evaluateTerms(lights, setup.lightModel, m, model, s), m);
     for (int c = 0; c < 4; ++c)
       ASSERT_TRUE(sameBits(simd[c * n + i], one[c])) << "point " << i << " channel " << c << ": " << simd[c * n + i]
@@ -118,7 +130,8 @@ TEST_P(EveryModelAndLight, SimdEqualsOneLaneBitForBit) {
 
 INSTANTIATE_TEST_SUITE_P(Shading, EveryModelAndLight,
                          testing::Combine(testing::ValuesIn(kLightingModels),
-                                          testing::Values(0, 1, 2, 3), testing::Bool(), testing::Bool()));
+                                          testing::Values(0, 1, 2, 3), testing::Bool(),
+                                          testing::Range(0, int(std::size(kViewings)))));
 
 TEST(ShadePoints, EverySimdTargetGivesTheSameBits) {
   std::mt19937 rng(99);

@@ -126,7 +126,7 @@ Color4 WhittedTracer::shade(const Ray& ray, const RayHit& rayHit, const Path& pa
   local.geometry.position = h.position;
   local.geometry.normal = scene_.lightModel.twoSided && !h.front ? -h.normal : h.normal;
   // GL's viewer for primary rays (infinite unless local_viewer); the ray's origin for the others.
-  local.geometry.toViewer = path.primary ? viewerDirection(h.position, scene_.lightModel.localViewer) : -D;
+  local.geometry.toViewer = path.primary ? viewerDirection(h.position, scene_.lightModel) : -D;
   const Real etaOutside = 1, etaInside = optics.ior;
   HallSurface hall;
   hall.etaViewer = h.front ? etaOutside : etaInside;

@@ -24,7 +24,7 @@ namespace {
 // traces occlusion (as shadePoints scales it: SurfacePoints::ambientOpen).
 Color4 litAt(const FrameContext& frame, const PointMaterial& point, const Vec3& position, const Vec3& normal,
              std::uint64_t seed) {
-  const SurfaceGeometry s{position, normal, viewerDirection(position, frame.lightModel.localViewer)};
+  const SurfaceGeometry s{position, normal, viewerDirection(position, frame.lightModel)};
   LightingTerms terms = evaluateTerms(frame.lights, frame.lightModel, point.material, point.model, s);
   if (frame.occlusion) {
     const Real* P[3] = {&position.x, &position.y, &position.z};
