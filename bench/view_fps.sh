@@ -37,6 +37,7 @@ for i in $(seq "$steps"); do
 done
 xdotool "${args[@]}" mouseup 1
 sleep 1
-xdotool key --window "$window" Escape
+# (The viewer may be gone before the key is let go: BadWindow then is not a failure.)
+xdotool key --window "$window" Escape 2>/dev/null || true
 wait $viewer
 grep "${GREP:-frames shown}" "$work/err" | sed 's/^illum view: //'

@@ -146,7 +146,8 @@ Image Viewer::waitFor(const std::function<bool(const Image&)>& ready) const {
 }
 
 int Viewer::quit() {
-  key("Escape");
+  // Not key(): the viewer may be gone before the key is let go, and xdotool then fails (BadWindow).
+  runShell("DISPLAY=" + display_.name() + " xdotool windowfocus --sync " + window_ + " key --clearmodifiers Escape");
   int status = 0;
   const auto deadline = Clock::now() + std::chrono::seconds(20);
   while (Clock::now() < deadline) {

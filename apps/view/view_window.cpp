@@ -5,6 +5,7 @@
 
 #include "key_map.h"
 #include "panels.h"
+#include "picture_texture.h"
 #include "render_worker.h"
 #include "save_view.h"
 #include "view_state.h"
@@ -37,8 +38,7 @@ const char* kNoDisplay = "no display: illum view needs a window; use illum rende
 struct Window {
   SDL_Window* window = nullptr;
   SDL_Renderer* renderer = nullptr;
-  SDL_Texture* texture = nullptr;
-  int textureWidth = 0, textureHeight = 0;
+  std::unique_ptr<PictureTexture> picture;
   bool imgui = false;
   ~Window() {
     if (imgui) {
@@ -46,7 +46,7 @@ struct Window {
       ImGui_ImplSDL2_Shutdown();
       ImGui::DestroyContext();
     }
-    if (texture) SDL_DestroyTexture(texture);
+    picture.reset();
     if (renderer) SDL_DestroyRenderer(renderer);
     if (window) SDL_DestroyWindow(window);
     // No SDL_Quit: the process ends here, and the window and renderer, which the X server holds
@@ -141,15 +141,16 @@ int runViewer(const std::vector<std::string>& files, const cli::SceneOptions& op
   state.load();  // the first file must draw: its error is the command's
   const Scene& first = state.scene();
   w.window = SDL_CreateWindow("illum view", SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, first.width + kPanelWidth, first.height,
-                              SDL_WINDOW_RESIZABLE);
+                              SDL_WINDOW_RESIZABLE | SDL_WINDOW_HIDDEN);
   if (!w.window) throw InputError(kNoDisplay);
-  // The picture is drawn on the CPU; presenting it is a texture copy and the panels' triangles.
-  // SDL's accelerated renderer does both in less time than its software one, even on Mesa's
-  // llvmpipe (measured: 0.4 ms against 2.7 ms at 1280×720 beside the panels, bench/view_fps.sh),
-  // and the software one stands in where there is no OpenGL; SDL_RENDER_DRIVER chooses.
-  w.renderer = SDL_CreateRenderer(w.window, -1, SDL_RENDERER_ACCELERATED);
-  if (!w.renderer) w.renderer = SDL_CreateRenderer(w.window, -1, SDL_RENDERER_SOFTWARE);
+  // The picture is drawn on the CPU; presenting it is a texture copy and the panels' triangles
+  // (picture_texture.h chooses how).
+  w.renderer = createPresentingRenderer(w.window);
   if (!w.renderer) throw Error(std::string("illum view: no renderer for the window: ") + SDL_GetError());
+  w.picture = std::make_unique<PictureTexture>(w.window, w.renderer);
+  // Shown only now: choosing the renderer may make the window again (SDL does for a GL one), and
+  // what finds the window by its name (a window manager, a test) should find the one that stays.
+  SDL_ShowWindow(w.window);
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini left behind
@@ -337,13 +338,7 @@ int runViewer(const std::vector<std::string>& files, const cli::SceneOptions& op
       fps = seconds > 0 ? 1 / seconds : 0;
       frame = std::move(next);
       haveFrame = true;
-      if (!w.texture || w.textureWidth != frame.image.width || w.textureHeight != frame.image.height) {
-        if (w.texture) SDL_DestroyTexture(w.texture);
-        w.texture = SDL_CreateTexture(w.renderer, SDL_PIXELFORMAT_ABGR8888, SDL_TEXTUREACCESS_STREAMING,
-                                      frame.image.width, frame.image.height);
-        w.textureWidth = frame.image.width, w.textureHeight = frame.image.height;
-      }
-      SDL_UpdateTexture(w.texture, nullptr, frame.image.rgba.data(), frame.image.width * 4);
+      w.picture->update(frame.image);
     }
     const bool current = haveFrame && frame.final && frame.version == state.version();
     if (current && reportPending && frame.probe) {
@@ -380,11 +375,11 @@ int runViewer(const std::vector<std::string>& files, const cli::SceneOptions& op
     ImGui::Render();
     SDL_SetRenderDrawColor(w.renderer, 0, 0, 0, 255);
     SDL_RenderClear(w.renderer);
-    if (w.texture) {
+    if (const PictureTexture& p = *w.picture; p.texture()) {
       // A tracer's quick picture (half the pixels each way) stretched over the picture's place.
-      const bool quick = w.textureWidth * 2 <= state.scene().width || w.textureHeight * 2 <= state.scene().height;
-      const SDL_Rect to{0, 0, quick ? state.scene().width : w.textureWidth, quick ? state.scene().height : w.textureHeight};
-      SDL_RenderCopy(w.renderer, w.texture, nullptr, &to);
+      const bool quick = p.width() * 2 <= state.scene().width || p.height() * 2 <= state.scene().height;
+      const SDL_Rect to{0, 0, quick ? state.scene().width : p.width(), quick ? state.scene().height : p.height()};
+      SDL_RenderCopy(w.renderer, p.texture(), nullptr, &to);
     }
     ImGui_ImplSDLRenderer_RenderDrawData(ImGui::GetDrawData());
     SDL_RenderPresent(w.renderer);

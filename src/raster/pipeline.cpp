@@ -252,7 +252,7 @@ class BinnedFrame {
        for (std::size_t c = range.begin(); c < range.end(); ++c) {
         const auto& [member, first, last] = ranges[c];
         RasterPipeline::State::Chunk& chunk = s_.pool[used_ + (c - c0)];
-        chunk.records.reset(target_.layouts[member->index]);
+        chunk.records.reset(target_.layouts[member->index], last - first);
         chunk.bins.reset(frame_.width, frame_.height);
         const SetupBinning binning{chunk.bins, target_.tiny[member->index] != 0, target_.shadeOwner[member->index]};
         chunk.drawn = setupTriangles(frame_, *member->object, member->index, ofMember(*member), first, last,

@@ -27,23 +27,26 @@ AttributeLayout AttributeLayout::forObject(const FrameContext& frame, const Obje
   return l;
 }
 
-void RecordArena::reset(const AttributeLayout& layout) {
+void RecordArena::reset(const AttributeLayout& layout, std::size_t expected) {
   layout_ = layout;
   count_ = 0;
   const std::size_t bytes = sizeof(DrawRecord) + layout.reals() * sizeof(Real);
-  const std::size_t blocks = (bytes + sizeof(Block) - 1) / sizeof(Block);
-  if (blocks != blocksPerRecord_) capacity_ = 0;  // a different size: the old records are gone anyway
-  blocksPerRecord_ = blocks;
+  // The memory already held serves records of any size, as far as it has room.
+  const std::size_t room = capacity_ * blocksPerRecord_;
+  blocksPerRecord_ = (bytes + sizeof(Block) - 1) / sizeof(Block);
+  capacity_ = room / blocksPerRecord_;
+  if (capacity_ < expected) grow(expected);
+}
+
+void RecordArena::grow(std::size_t capacity) {
+  std::unique_ptr<Block[]> grown(new Block[capacity * blocksPerRecord_]);
+  if (count_) std::memcpy(grown.get(), blocks_.get(), count_ * blocksPerRecord_ * sizeof(Block));
+  blocks_ = std::move(grown);
+  capacity_ = capacity;
 }
 
 DrawRecord& RecordArena::append() {
-  if (count_ == capacity_) {
-    const std::size_t capacity = std::max<std::size_t>(64, 2 * capacity_);
-    std::unique_ptr<Block[]> grown(new Block[capacity * blocksPerRecord_]);
-    if (count_) std::memcpy(grown.get(), blocks_.get(), count_ * blocksPerRecord_ * sizeof(Block));
-    blocks_ = std::move(grown);
-    capacity_ = capacity;
-  }
+  if (count_ == capacity_) grow(std::max<std::size_t>(64, 2 * capacity_));
   return *new (blocks_.get() + count_++ * blocksPerRecord_) DrawRecord;
 }
 

@@ -67,7 +67,9 @@ struct VertexValues {
 // Records do not move once the chunk is set up (it is binned only then).
 class RecordArena {
  public:
-  void reset(const AttributeLayout& layout);
+  // Empties the arena for records of `layout`, with room for `expected` of them at once (a chunk's
+  // triangle count: growing by doubling would copy the records and touch the memory twice).
+  void reset(const AttributeLayout& layout, std::size_t expected = 0);
   // A record to fill; drop() takes back the last one.
   DrawRecord& append();
   void drop() { --count_; }
@@ -78,6 +80,7 @@ class RecordArena {
   const AttributeLayout& layout() const { return layout_; }
 
  private:
+  void grow(std::size_t capacity);
   struct alignas(16) Block {
     std::byte bytes[16];
   };
