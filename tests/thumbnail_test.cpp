@@ -119,5 +119,25 @@ TEST(Thumbnailer, TakesAFileManagersArguments) {
   EXPECT_EQ(missing.exitCode, 2);
 }
 
+// A thumbnail is what `illum render` previews, square and transparent around the model; one whose
+// model has more triangles than it has pixels is lit per vertex (its triangles are smaller than
+// pixels), unless --shading says otherwise. The duck's 4,212 triangles: Phong's at 96², Gouraud's at 32².
+TEST(Thumbnailer, IsTheRenderersPreviewLitPerVertexWhenTrianglesAreSmallerThanPixels) {
+  TempDir dir;
+  const std::string duck = (kModels / "Collada/duck.dae").string();
+  const auto same = [&](const std::string& thumbnail, const std::string& render) {
+    const test::RunResult t = test::runIllum("thumbnail " + duck + " " + (dir / "t.png").string() + " " + thumbnail);
+    const test::RunResult r = test::runIllum("render " + duck + " --no-background -o " + (dir / "r.png").string() + " " + render);
+    EXPECT_EQ(t.exitCode, 0) << t.err;
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    return readPng(dir / "t.png").rgba == readPng(dir / "r.png").rgba;
+  };
+  EXPECT_TRUE(same("96", "--resolution 96,96"));
+  EXPECT_FALSE(same("96", "--resolution 96,96 --shading gouraud"));
+  EXPECT_TRUE(same("32", "--resolution 32,32 --shading gouraud"));
+  EXPECT_FALSE(same("32", "--resolution 32,32"));
+  EXPECT_TRUE(same("32 --shading phong", "--resolution 32,32"));
+}
+
 }  // namespace
 }  // namespace illum

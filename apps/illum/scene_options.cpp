@@ -481,6 +481,13 @@ Scene prepareScene(SceneOptions o, double* loadMs, ModelCache* cache, std::vecto
     for (Object& object : scene.objects) object.material.model.reset();
   }
   if (shading) scene.shading = *shading;
+  // Triangles smaller than pixels: Gouraud's interpolated colours and Phong's per-pixel lighting
+  // agree to within what the eye sees (2CylinderEngine's 121k triangles at 256²: PSNR 56 dB, the
+  // largest difference 29 of 255 at a few silhouette pixels), and a record of lit colours is
+  // smaller and needs no shading per pixel.
+  if (model && !shading && o.denseMeshesPerVertex &&
+      model->triangleCount > std::uint64_t(scene.width) * std::uint64_t(scene.height))
+    scene.shading = Shading::Gouraud;
   if (renderer) scene.renderer = *renderer;
   if (convention) scene.lightModel.convention = *convention;
   if (scene.lightModel.convention != Convention::GL && scene.renderer == RendererKind::Path)

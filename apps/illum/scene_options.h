@@ -50,6 +50,9 @@ struct SceneOptions {
   std::optional<double> viewAngle, azimuth, elevation, zoom, lightIntensity, creaseAngle;
   bool orthographic = false;
   std::string normals;
+  // A thumbnail's: a model file with more triangles than the picture has pixels is lit per vertex
+  // (Gouraud) unless --shading says otherwise.
+  bool denseMeshesPerVertex = false;
   bool verbose = false;
   int threads = 0;  // worker threads for rendering; 0: every core
   Limits limits;

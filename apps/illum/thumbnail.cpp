@@ -33,6 +33,7 @@ int runThumbnail(ThumbnailOptions o) {
   if (r.output.empty()) throw InputError("thumbnail: expected INPUT OUTPUT SIZE (illum thumbnail %i %o %s)");
   r.scene.resolution = std::to_string(o.size) + "," + std::to_string(o.size);
   r.scene.noBackground = true;
+  r.scene.denseMeshesPerVertex = true;
   r.quiet = true;
   if (r.scene.limits.maxSeconds == 0) r.scene.limits.maxSeconds = kThumbnailSeconds;
   if (r.scene.limits.maxMemoryMiB == 0) r.scene.limits.maxMemoryMiB = kThumbnailMiB;
@@ -47,7 +48,8 @@ Command addThumbnailCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "thumbnail", "A file manager's thumbnail of a model or scene file: illum thumbnail INPUT OUTPUT SIZE (%i %o %s)");
   cmd->footer(
-      "The model as `illum render` previews it, SIZE pixels square, transparent around it, quiet; its import limited\n"
+      "The model as `illum render` previews it, SIZE pixels square, transparent around it, quiet (lit per vertex when it\n"
+      "has more triangles than the thumbnail has pixels, unless --shading says otherwise); its import limited\n"
       "to 5 s, 1 GiB and 5 million triangles unless --max-time, --max-memory or --max-triangles say otherwise.\n"
       "OUTPUT's extension says its format (.png unless told). Installed as illum.thumbnailer (docs/cli.md).");
   addSceneOptions(*cmd, o->render.scene, nullptr);

@@ -71,6 +71,10 @@ void scenePanel(ViewState& state) {
   Shading shading = s.shading;
   if (combo("shading (--shading)", shading, std::array{Shading::Flat, Shading::Gouraud, Shading::Phong}))
     state.edit().shading = shading;
+  // GL's equation or a lecture note's way of computing it (lighting.h).
+  Convention convention = s.lightModel.convention;
+  if (combo("convention (--convention)", convention, std::to_array(kConventions)))
+    state.edit().lightModel.convention = convention;
   if (s.renderer == RendererKind::Raster) {
     int samples = s.multisample;
     const std::array counts{1, 4, 8, 16};

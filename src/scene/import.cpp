@@ -279,12 +279,13 @@ void checkFaces(const aiScene& scene, const fs::path& path) {
     const aiMesh& m = *scene.mMeshes[i];
     for (unsigned f = 0; f < m.mNumFaces; ++f) {
       const aiFace& face = m.mFaces[f];
-      const std::string where = path.string() + ": mesh \"" + m.mName.C_Str() + "\" face " + std::to_string(f);
+      // (The message is made only for a face that fails: a model has a hundred thousand good ones.)
+      const auto where = [&] { return path.string() + ": mesh \"" + m.mName.C_Str() + "\" face " + std::to_string(f); };
       if (face.mNumIndices == 0 || !face.mIndices)
-        throw InputError(where + " has no vertices (is the file truncated?)");
+        throw InputError(where() + " has no vertices (is the file truncated?)");
       for (unsigned c = 0; c < face.mNumIndices; ++c)
         if (face.mIndices[c] >= m.mNumVertices)
-          throw InputError(where + ": index " + std::to_string(face.mIndices[c]) + " is out of range (" +
+          throw InputError(where() + ": index " + std::to_string(face.mIndices[c]) + " is out of range (" +
                            std::to_string(m.mNumVertices) + " vertices)");
     }
   }

@@ -34,6 +34,8 @@ void expectSameScene(const Scene& a, const Scene& b) {
   EXPECT_EQ(a.camera.far, b.camera.far);
   EXPECT_EQ(a.lightModel.ambient, b.lightModel.ambient);
   EXPECT_EQ(a.lightModel.twoSided, b.lightModel.twoSided);
+  EXPECT_EQ(a.lightModel.localViewer, b.lightModel.localViewer);
+  EXPECT_EQ(a.lightModel.convention, b.lightModel.convention);
   EXPECT_EQ(a.rayTracing.environment, b.rayTracing.environment);
   EXPECT_EQ(a.display.encoding, b.display.encoding);
   ASSERT_EQ(a.lights.size(), b.lights.size());
@@ -86,7 +88,9 @@ TEST(SceneJson, ChangedLightsCameraAndMaterialsAreWhatIsWritten) {
   scene.objects[0].material.emission = {2, 1, 0.5f, 1};  // brighter than white: a colour and a strength
   scene.ambientOcclusion.enabled = true;
   scene.ambientOcclusion.distance = 0.4f;
+  scene.lightModel.convention = Convention::NoteHalfSum;  // a lecture note's way, saved by name
   expectSameScene(scene, parse(sceneJson(scene)));
+  EXPECT_NE(sceneJson(scene).find("\"convention\": \"note-half-sum\""), std::string::npos);
   EXPECT_EQ(parse(sceneJson(scene)).ambientOcclusion.distance, 0.4f);
 }
 
