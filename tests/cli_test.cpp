@@ -254,6 +254,19 @@ TEST(CliRender, FollowsALectureNotesConvention) {
   EXPECT_NE(path.err.find("no lecture note's convention"), std::string::npos) << path.err;
 }
 
+// Highway's start-up timer measurement (3.6 ms a process with Debian's libhwy 1.0.3) is the CLI's
+// no-op: the dynamic linker binds libhwy's call to the executable's definition (hwy_startup.cpp).
+TEST(CliStart, HighwaysTimerMeasurementIsSkipped) {
+  const RunResult r = illum::test::runShell("LD_DEBUG=bindings " + std::string(ILLUM_CLI) + " --version");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  std::istringstream lines(r.err);  // the dynamic linker's report
+  bool bound = false;
+  for (std::string line; std::getline(lines, line);)
+    if (line.find("libhwy") != std::string::npos && line.find("_ZN3hwy8platform15TimerResolutionEv") != std::string::npos)
+      bound = line.find("to " + std::string(ILLUM_CLI) + " ") != std::string::npos;
+  EXPECT_TRUE(bound) << r.err.substr(0, 2000);
+}
+
 TEST(CliEval, BadInputIsRefusedClearly) {
   const RunResult zero = run("eval --normal 0,0,0");
   EXPECT_EQ(zero.exitCode, 2);
