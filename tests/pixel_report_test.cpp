@@ -197,7 +197,9 @@ TEST(PixelChain, APointOfAnObjectAndItsMark) {
     for (int i = 0; i < marked.width; ++i) {
       const bool differs = !std::equal(marked.pixel(i, j), marked.pixel(i, j) + 4, unmarked.pixel(i, j));
       changed += differs;
-      if (differs) EXPECT_LE(std::hypot(i - x, j - y), 8) << i << "," << j;
+      if (differs) {
+        EXPECT_LE(std::hypot(i - x, j - y), 8) << i << "," << j;
+      }
     }
   EXPECT_GT(changed, 40);
   EXPECT_TRUE(std::equal(marked.pixel(x, y), marked.pixel(x, y) + 4, unmarked.pixel(x, y)));

@@ -54,7 +54,7 @@ PictureTexture::PictureTexture(SDL_Window* window, SDL_Renderer* renderer) : ren
   // software renderer's window surface is usually XRGB (RGB888) or ARGB8888, R and B swapped.
   format_ = software && (surface == SDL_PIXELFORMAT_RGB888 || surface == SDL_PIXELFORMAT_ARGB8888)
                 ? surface
-                : SDL_PIXELFORMAT_ABGR8888;
+                : Uint32(SDL_PIXELFORMAT_ABGR8888);
 }
 
 PictureTexture::~PictureTexture() {

@@ -25,6 +25,9 @@ Vec3 rotateAbout(const Vec3& v, Real degrees, const Vec3& axis) {
 
 std::vector<Vec3> worldPoints(const std::vector<Object>& objects) {
   std::vector<Vec3> points;
+  std::size_t count = 0;
+  for (const Object& o : objects) count += o.mesh->positions.size();
+  points.reserve(count);
   for (const Object& o : objects)
     for (const Vec3& p : o.mesh->positions) points.push_back(Vec3(o.worldFromObject * Vec4(p, 1)));
   return points;
