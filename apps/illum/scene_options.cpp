@@ -12,6 +12,8 @@
 #include <nlohmann/json.hpp>
 #include <sys/resource.h>
 #include <tbb/info.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <chrono>
@@ -183,9 +185,16 @@ void overrideMaterials(const SceneOptions& o, std::vector<Object>& objects) {
 
 // The model the options name; one on standard input is read as --format says, its textures
 // looked for in the working folder, and its messages name it "standard input".
+// While the child reads the file, this process's worker threads are started (the render needs
+// them next; the child, forked before, never runs them).
+ImportedModel finishWhileWarming(PendingImport pending) {
+  tbb::parallel_for(0, tbb::this_task_arena::max_concurrency(), [](int) {});
+  return pending.finish();
+}
+
 ImportedModel importModelFor(const SceneOptions& o) {
   ImportOptions options = importOptions(o);
-  if (o.input != "-") return importModel(o.input, options);
+  if (o.input != "-") return finishWhileWarming(startImport(o.input, options));
   options.format = o.stdinInput->format();
   options.companionDir = std::filesystem::current_path();
   try {
