@@ -9,7 +9,9 @@
 #include <csignal>
 #include <cstdlib>
 #include <cstring>
+#include <fcntl.h>
 #include <fstream>
+#include <mutex>
 #include <new>
 #include <optional>
 #include <sstream>
@@ -194,7 +196,7 @@ IsolationOutcome outcomeOf(int code, int resultFd) {
 }
 
 [[noreturn]] void childMain(const std::function<void(IsolatedWriter&)>& work, const IsolationLimits& limits,
-                            int resultFd, int logFd) {
+                            int resultFd, int logFd, int doneFd) {
   // What the importer prints (assertions, sanitizer reports) is kept for the parent's message.
   ::dup2(logFd, STDOUT_FILENO);
   ::dup2(logFd, STDERR_FILENO);
@@ -211,7 +213,32 @@ IsolationOutcome outcomeOf(int code, int resultFd) {
     const auto data = rlim_t(dataBytes() + limits.memoryBytes);
     setLimit(RLIMIT_DATA, data, data);
   }
-  ::_exit(runWork(work, resultFd));
+  const int code = runWork(work, resultFd);
+  // The result is whole: the parent may go on with it while this process's memory is torn down
+  // (a few milliseconds for an importer's hundred megabytes).
+  const auto byte = static_cast<unsigned char>(code);
+  while (::write(doneFd, &byte, 1) < 0 && errno == EINTR) {
+  }
+  ::_exit(code);
+}
+
+// Children whose work is done and that are still exiting, reaped when they have (never waited
+// for: the parent has gone on without them).
+std::mutex exitingMutex;
+std::vector<pid_t> exiting;
+
+void reapExited() {
+  const std::lock_guard lock(exitingMutex);
+  std::erase_if(exiting, [](pid_t pid) {
+    int status = 0;
+    const pid_t r = ::waitpid(pid, &status, WNOHANG);
+    return r == pid || (r < 0 && errno == ECHILD);
+  });
+}
+
+void letExit(pid_t pid) {
+  const std::lock_guard lock(exitingMutex);
+  exiting.push_back(pid);
 }
 
 }  // namespace
@@ -280,12 +307,23 @@ IsolatedChild startIsolated(const std::function<void(IsolatedWriter&)>& work, co
     child.inProcessCode_ = runWork(work, child.resultFd_);
     return child;
   }
+  reapExited();
+  int done[2];
+  if (::pipe2(done, O_CLOEXEC) != 0) throw Error(std::string("cannot start the isolated importer: ") + std::strerror(errno));
   std::fflush(nullptr);  // nothing buffered is written twice
   child.inherited_ = residentBytes(::getpid());
   child.deadline_ = steadySeconds() + (limits.wallSeconds > 0 ? limits.wallSeconds : limits.cpuSeconds);
   const pid_t pid = ::fork();
-  if (pid < 0) throw Error(std::string("cannot start the isolated importer: ") + std::strerror(errno));
-  if (pid == 0) childMain(work, limits, child.resultFd_, child.logFd_);
+  if (pid < 0) {
+    ::close(done[0]), ::close(done[1]);
+    throw Error(std::string("cannot start the isolated importer: ") + std::strerror(errno));
+  }
+  if (pid == 0) {
+    ::close(done[0]);
+    childMain(work, limits, child.resultFd_, child.logFd_, done[1]);
+  }
+  ::close(done[1]);
+  child.doneFd_ = done[0];
   child.pid_ = pid;
   return child;
 }
@@ -302,6 +340,7 @@ IsolatedChild& IsolatedChild::operator=(IsolatedChild&& other) noexcept {
     pid_ = std::exchange(other.pid_, -1);
     resultFd_ = std::exchange(other.resultFd_, -1);
     logFd_ = std::exchange(other.logFd_, -1);
+    doneFd_ = std::exchange(other.doneFd_, -1);
     limits_ = other.limits_;
     deadline_ = other.deadline_;
     inherited_ = other.inherited_;
@@ -321,7 +360,7 @@ void IsolatedChild::release() {
     }
     pid_ = -1;
   }
-  for (int* fd : {&resultFd_, &logFd_})
+  for (int* fd : {&resultFd_, &logFd_, &doneFd_})
     if (*fd >= 0) ::close(std::exchange(*fd, -1));
 }
 
@@ -344,9 +383,22 @@ IsolationOutcome IsolatedChild::wait() {
   const int pidfd = int(::syscall(SYS_pidfd_open, pid_, 0));
   int status = 0;
   std::optional<IsolationOutcome::Kind> killedFor;
+  std::optional<int> reported;  // the exit code the child sent before exiting
   for (;;) {
     const pid_t done = ::waitpid(pid_, &status, WNOHANG);
     if (done == pid_) break;
+    if (!killedFor && doneFd_ >= 0) {
+      pollfd notice{doneFd_, POLLIN, 0};
+      unsigned char code = 0;
+      if (::poll(&notice, 1, 0) == 1) {
+        const ssize_t n = ::read(doneFd_, &code, 1);
+        if (n == 1) {
+          reported = code;
+          break;
+        }
+        if (n == 0) ::close(std::exchange(doneFd_, -1));  // ended without a word: its exit status tells
+      }
+    }
     if (done < 0 && errno != EINTR) {
       if (pidfd >= 0) ::close(pidfd);
       throw Error(std::string("cannot wait for the importer: ") + std::strerror(errno));
@@ -357,14 +409,19 @@ IsolationOutcome IsolatedChild::wait() {
       if (killedFor) ::kill(pid_, SIGKILL);
     }
     if (pidfd >= 0) {
-      pollfd ended{pidfd, POLLIN, 0};
-      ::poll(&ended, 1, int(std::chrono::duration_cast<std::chrono::milliseconds>(pause).count()) + 1);
+      pollfd ended[2] = {{pidfd, POLLIN, 0}, {doneFd_, POLLIN, 0}};
+      ::poll(ended, doneFd_ >= 0 ? 2 : 1, int(std::chrono::duration_cast<std::chrono::milliseconds>(pause).count()) + 1);
     } else {
       std::this_thread::sleep_for(pause);
     }
     pause = std::min(pause * 2, std::chrono::microseconds(5000));
   }
   if (pidfd >= 0) ::close(pidfd);
+  if (reported) {
+    // Its work is done and handed back; it is reaped once it has exited (reapExited).
+    letExit(std::exchange(pid_, -1));
+    return outcomeOf(*reported, resultFd_);
+  }
   pid_ = -1;  // reaped
 
   if (killedFor) {

@@ -89,6 +89,7 @@ class IsolatedChild {
 
   int pid_ = -1;
   int resultFd_ = -1, logFd_ = -1;
+  int doneFd_ = -1;  // the child writes its exit code here once its result is whole, before it exits
   IsolationLimits limits_;
   double deadline_ = 0;          // steady-clock seconds
   std::size_t inherited_ = 0;    // the parent's resident size at the fork

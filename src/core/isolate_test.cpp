@@ -9,7 +9,9 @@
 #include <cstdlib>
 #include <cstring>
 #include <list>
+#include <thread>
 
+#include <sys/wait.h>
 #include <unistd.h>
 
 namespace illum {
@@ -29,6 +31,20 @@ TEST(Isolate, HandsBackWhatTheWorkWrote) {
   const IsolationOutcome o = runIsolated([](IsolatedWriter& w) { w.write("hello", 5); }, smallLimits());
   ASSERT_EQ(o.kind, Kind::Finished) << o.message;
   EXPECT_EQ(std::string(o.payload.begin(), o.payload.end()), "hello");
+}
+
+// The outcome comes as soon as the child's result is whole, before the child has finished
+// exiting; the children left exiting are reaped when the next one starts: none accumulates.
+TEST(Isolate, ChildrenLeftExitingAreReaped) {
+  for (int i = 0; i < 20; ++i)
+    ASSERT_EQ(runIsolated([](IsolatedWriter& w) { w.write("x", 1); }, smallLimits()).kind, Kind::Finished);
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));  // every one of them has exited
+  ASSERT_EQ(runIsolated([](IsolatedWriter& w) { w.write("y", 1); }, smallLimits()).kind, Kind::Finished);
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  // Only the last child is left to reap: the twenty were reaped when it started.
+  int status = 0, zombies = 0;
+  while (::waitpid(-1, &status, WNOHANG) > 0) ++zombies;
+  EXPECT_EQ(zombies, 1);
 }
 
 TEST(Isolate, InputErrorIsARefusalWithItsMessage) {
