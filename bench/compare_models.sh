@@ -48,14 +48,14 @@ for model in "${models[@]}"; do
   triangles=
   for ((r = 0; r < rounds; ++r)); do
     for s in 1 4 8; do
-      out=$("$illum" bench "$model" --samples "$s" --frames "$frames" --threads "$threads")
+      out=$("$illum" bench "$model" --samples "$s" --frames "$frames" --threads "$threads" --environment none)
       ours[$s]+=" $(field ms_per_frame <<<"$out")"
       triangles=$(field triangles <<<"$out")
       if [ "$s" != 8 ]; then
         theirs[$s]+=" $(LP_NUM_THREADS=$threads "$peer" "$model" --samples "$s" --frames "$frames" | field ms_per_frame)"
       fi
     done
-    geometry+=("$("$illum" bench "$model" --samples 1 --geometry-only --frames "$frames" --threads "$threads" | field ms_per_frame)")
+    geometry+=("$("$illum" bench "$model" --samples 1 --geometry-only --frames "$frames" --threads "$threads" --environment none | field ms_per_frame)")
   done
   i1=$(median ${ours[1]}) i4=$(median ${ours[4]}) i8=$(median ${ours[8]})
   l1=$(median ${theirs[1]}) l4=$(median ${theirs[4]}) g=$(median "${geometry[@]}")

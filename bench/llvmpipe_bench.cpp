@@ -48,6 +48,7 @@ int main(int argc, char** argv) {
       illum::cli::SceneOptions o;
       o.input = argv[1];
       o.width = width, o.height = height, o.samples = samples, o.shading = shading;
+      o.environment = "none";  // the GLSL peer has no image-based light: both draw the light rig alone
       scene = illum::cli::prepareScene(o);
     } else {
       scene = illum::loadSceneFile(argv[1]);

@@ -355,6 +355,15 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o, std::vector<std::string>* i
   cmd.add_flag("--denoise", o.denoise,
                "Path tracer: filter the picture with the feature-guided denoiser [models: on; scenes: their \"denoise\"]");
   cmd.add_flag("--no-denoise", o.noDenoise, "Path tracer: no denoiser, even where the scene file or a preview would use it");
+  cmd.add_option("--environment", o.environment,
+                 "Light every renderer by an environment: a latitude-longitude Radiance .hdr map, studio (illum's "
+                 "built-in), or none [models with physically based materials: studio, for those materials alone]");
+  cmd.add_option("--environment-rotation", o.environmentRotation, "Turn the environment about the up axis, degrees [0]")
+      ->check(finiteRange(-360, 360));
+  cmd.add_option("--environment-intensity", o.environmentIntensity, "Scale the environment's radiance [1]")
+      ->check(finiteRange(0, 1e6));
+  cmd.add_option("--environment-background", o.environmentBackground,
+                 "Show the environment behind the scene: sharp, blurred or none [--environment FILE: sharp; else none]");
   cmd.add_option("--up", o.up, "Model files: the up axis, +Y, -Y, +Z, -Z, +X or -X [the file's: +Z for STL and 3DS, FBX's metadata, else +Y]");
   cmd.add_option("--color", o.color, "Model files: draw every surface in this colour R,G,B or #rrggbb");
   cmd.add_option("--opacity", o.opacity, "Model files: every surface's opacity, 0 to 1");
@@ -394,6 +403,50 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o, std::vector<std::string>* i
   cmd.add_option("--threads", o.threads, "Worker threads (default: every core); the picture is the same for any count")
       ->check(wholeRange(1, 1024));
   cmd.add_flag("-v,--verbose", o.verbose, "Print model statistics, bounds, times and peak memory on stderr");
+}
+
+// The environment the options ask for, and a model preview's default: illum's studio lights its
+// physically based materials (metals need surroundings to reflect), classic ones keep their look.
+void applyEnvironmentOptions(const SceneOptions& o, Scene& scene, bool preview) {
+  EnvironmentUse& use = scene.environment;
+  const auto usePhysical = [&] {
+    return std::any_of(scene.objects.begin(), scene.objects.end(),
+                       [&](const Object& object) { return modelOf(object.material, scene.model) == LightingModel::CookTorrance; });
+  };
+  if (o.environment == "none") {
+    scene.rayTracing.environmentMap.reset();
+    scene.rayTracing.environment = Color3(0);
+    use = {};
+  } else if (o.environment == "studio") {
+    scene.rayTracing.environmentMap = studioEnvironment();
+    scene.rayTracing.environment = Color3(1);
+    use.studio = true;
+    use.lighting = EnvironmentLighting::All;
+  } else if (!o.environment.empty()) {
+    try {
+      scene.rayTracing.environmentMap = EnvironmentMapFile::open(o.environment, o.limits);
+    } catch (const InputError& e) {
+      throw InputError(std::string("--environment: expected a readable Radiance .hdr image, \"studio\" or \"none\"; ") +
+                       e.what());
+    }
+    scene.files.push_back(o.environment);
+    scene.rayTracing.environment = Color3(1);
+    use.studio = false;
+    use.lighting = EnvironmentLighting::All;
+    use.background = EnvironmentBackground::Sharp;
+  } else if (preview && o.studioForPhysicallyBased && usePhysical()) {
+    scene.rayTracing.environmentMap = studioEnvironment();
+    scene.rayTracing.environment = Color3(1);
+    use.studio = true;
+    use.lighting = EnvironmentLighting::PhysicallyBased;
+  }
+  if (o.environmentRotation) use.rotation = Real(*o.environmentRotation);
+  if (o.environmentIntensity) scene.rayTracing.environment = Color3(Real(*o.environmentIntensity));
+  if (!o.environmentBackground.empty()) {
+    const auto background = parseEnvironmentBackground(o.environmentBackground);
+    if (!background) badChoice("--environment-background", o.environmentBackground, {"sharp", "blurred", "none"});
+    use.background = *background;
+  }
 }
 
 Scene prepareScene(SceneOptions o, double* loadMs, ModelCache* cache, std::vector<std::string>* warnings) {
@@ -561,6 +614,7 @@ Scene prepareScene(SceneOptions o, double* loadMs, ModelCache* cache, std::vecto
     scene.lights = cameraLightRig(scene.camera, intensity, rig, true);
     scene.lightModel.ambient = cameraRigAmbient(intensity, rig, true);
   }
+  applyEnvironmentOptions(o, scene, model.has_value());
   if (o.denoise && o.noDenoise) throw InputError("--denoise and --no-denoise: expected one of them, not both");
   if (model && scene.renderer == RendererKind::Path) scene.rayTracing.denoise = true;  // previews look clean
   if (o.denoise || o.noDenoise) scene.rayTracing.denoise = o.denoise;

@@ -42,6 +42,9 @@ struct SceneOptions {
   bool edges = false, grid = false, axes = false;
   bool ambientOcclusion = false, noAmbientOcclusion = false;
   bool denoise = false, noDenoise = false;
+  // Image-based lighting: a .hdr map, "studio" (illum's built-in) or "none", and how it is used.
+  std::string environment, environmentBackground;
+  std::optional<double> environmentRotation, environmentIntensity;
   std::optional<double> pointSize, lineWidth;
   // Model files (f3d's names).
   std::string up, cameraPosition, cameraFocalPoint, cameraViewUp, color;
@@ -53,6 +56,9 @@ struct SceneOptions {
   // A thumbnail's: a model file with more triangles than the picture has pixels is lit per vertex
   // (Gouraud) unless --shading says otherwise.
   bool denseMeshesPerVertex = false;
+  // A preview's physically based materials lit by the studio environment unless --environment says
+  // otherwise (a thumbnail goes without: the studio's light costs more than its whole budget).
+  bool studioForPhysicallyBased = true;
   bool verbose = false;
   int threads = 0;  // worker threads for rendering; 0: every core
   Limits limits;

@@ -34,6 +34,7 @@ int runThumbnail(ThumbnailOptions o) {
   r.scene.resolution = std::to_string(o.size) + "," + std::to_string(o.size);
   r.scene.noBackground = true;
   r.scene.denseMeshesPerVertex = true;
+  r.scene.studioForPhysicallyBased = false;
   r.quiet = true;
   if (r.scene.limits.maxSeconds == 0) r.scene.limits.maxSeconds = kThumbnailSeconds;
   if (r.scene.limits.maxMemoryMiB == 0) r.scene.limits.maxMemoryMiB = kThumbnailMiB;

@@ -7,6 +7,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <memory>
 #include <optional>
 
 namespace illum {
@@ -126,11 +127,16 @@ inline bool follows(LightingModel model, Convention convention) {
 }
 
 // glLightModel parameters with GL's defaults, and the convention the equation follows.
+struct EyeImageLight;
 struct LightModel {
   Color3 ambient{0.2, 0.2, 0.2};
   bool localViewer = false;
   bool twoSided = false;
   Convention convention = Convention::GL;
+  // An environment map's image-based light, as the renderer drawing a frame sets it (the scene's
+  // "environment_lighting"): physically based materials take their ambient and a reflection of the
+  // map from it, and GL materials, where it lights them, take it in place of `ambient`.
+  std::shared_ptr<const EyeImageLight> environment;
 };
 
 // Whether V points from each point to the eye (GL_LIGHT_MODEL_LOCAL_VIEWER, or seed 004's world

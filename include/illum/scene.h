@@ -148,6 +148,30 @@ struct RayTracing {
   bool denoise = false;
 };
 
+// What the environment (RayTracing::environment and environmentMap) does besides lighting the
+// path tracer's escaping paths: image-based lighting in the rasterizer and the Whitted and Hall
+// tracers ("environment_lighting": physically based materials only, or classic ones too, where it
+// takes the global ambient's place), turned about +Y ("environment_rotation", degrees, every
+// renderer), and shown behind the scene ("environment_background"; the scene's background colour
+// otherwise).
+enum class EnvironmentLighting { None, PhysicallyBased, All };
+enum class EnvironmentBackground { None, Sharp, Blurred };
+std::string_view toString(EnvironmentLighting lighting);
+std::string_view toString(EnvironmentBackground background);
+std::optional<EnvironmentLighting> parseEnvironmentLighting(std::string_view name);
+std::optional<EnvironmentBackground> parseEnvironmentBackground(std::string_view name);
+// illum's studio: a neutral, procedural environment (a sky gradient over a darker floor, a soft
+// key, a fill and a rim), made once per process. Model previews light physically based materials
+// with it, so that metals have surroundings to reflect.
+std::shared_ptr<const EnvironmentMapFile> studioEnvironment();
+struct EnvironmentUse {
+  EnvironmentLighting lighting = EnvironmentLighting::None;
+  Real rotation = 0;
+  EnvironmentBackground background = EnvironmentBackground::None;
+  // The environment map is illum's built-in studio ("studio_environment"), not a file.
+  bool studio = false;
+};
+
 // The multisample counts the rasterizer takes.
 constexpr bool isMultisampleCount(int n) { return n == 1 || n == 4 || n == 8 || n == 16; }
 
@@ -162,6 +186,7 @@ int samplesPerPixel(const Scene& scene);
 struct Scene {
   RendererKind renderer = RendererKind::Raster;
   RayTracing rayTracing;
+  EnvironmentUse environment;
   int width = 640;
   int height = 480;
   Color4 background{0, 0, 0, 1};

@@ -1,5 +1,7 @@
 #include "raster/frame_context.h"
 
+#include "scene/environment_use.h"
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -14,6 +16,7 @@ FrameContext FrameContext::fromScene(const Scene& scene) {
   // Lights are given in world space: GL would see glLight called with GL_MODELVIEW = the view.
   for (const Light& l : scene.lights) f.lights.push_back(toEyeSpace(l, f.viewFromWorld));
   f.lightModel = scene.lightModel;
+  f.lightModel.environment = eyeImageLight(scene, f.viewFromWorld);
   f.model = scene.model;
   f.shading = scene.shading;
   f.blend = scene.blend;

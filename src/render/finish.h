@@ -8,10 +8,13 @@
 namespace illum {
 
 // The rasterizer's linear 8-bit picture finished: its linear values copied to `linear` if asked,
-// the scene's display encoding applied, then the scene's labels and gizmo drawn over it.
-void finishRasterPicture(const Scene& scene, RenderStats& stats, Image& image, FloatImage* linear);
+// the scene's display encoding applied, the environment laid behind it when it was drawn over a
+// transparent background for that (environment_behind.h), then the scene's labels and gizmo.
+void finishRasterPicture(const Scene& scene, RenderStats& stats, Image& image, FloatImage* linear,
+                         bool environmentBehind = false);
 
-// The ray tracers encode their own pixels from the float means (ray_tracer.h): only the labels.
-void finishTracedPicture(const Scene& scene, RenderStats& stats, Image& image);
+// The ray tracers encode their own pixels from the float means (ray_tracer.h): the environment
+// behind, where asked, and the labels.
+void finishTracedPicture(const Scene& scene, RenderStats& stats, Image& image, bool environmentBehind = false);
 
 }  // namespace illum

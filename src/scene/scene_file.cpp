@@ -7,6 +7,7 @@
 
 #include <illum/import.h>
 #include "core/input_file.h"
+#include "scene/environment_use.h"
 #include "scene/json_reader.h"
 #include "scene/mesh_json.h"
 
@@ -476,7 +477,8 @@ Scene parseScene(const std::string& text, const std::string& name, const std::fi
   j.expectObject({"version", "width", "height", "background", "model", "shading", "camera",
                   "light_model", "lights", "objects", "labels", "blend", "renderer", "max_depth", "shadows",
                   "samples", "environment", "environment_map", "tone_map", "encoding", "multisample", "overlays", "ambient_occlusion",
-                  "point_size", "line_width", "denoise"});
+                  "point_size", "line_width", "denoise", "environment_lighting", "environment_rotation",
+                  "environment_background", "studio_environment"});
   Scene s;
   if (j.has("version") && j.at("version").integer(0, std::numeric_limits<int>::max()) != 1)
     j.at("version").fail("expected version 1");
@@ -546,6 +548,8 @@ Scene parseScene(const std::string& text, const std::string& name, const std::fi
   if (j.has("shadows")) s.rayTracing.shadows = j.at("shadows").boolean();
   if (j.has("denoise")) s.rayTracing.denoise = j.at("denoise").boolean();
   if (j.has("samples")) s.rayTracing.samples = j.at("samples").integer(1, kMaxSamples);
+  if (j.has("studio_environment") && j.has("environment_map") && j.at("studio_environment").boolean())
+    j.at("studio_environment").fail("expected either an \"environment_map\" file or the studio, not both");
   if (j.has("environment_map")) {
     const std::filesystem::path file = baseDir / j.at("environment_map").string();
     try {
@@ -556,7 +560,25 @@ Scene parseScene(const std::string& text, const std::string& name, const std::fi
     }
     s.rayTracing.environment = Color3(1);
   }
+  if (j.has("studio_environment") && j.at("studio_environment").boolean()) {
+    s.rayTracing.environmentMap = studioEnvironment();
+    s.rayTracing.environment = Color3(1);
+    s.environment.studio = true;
+  }
   if (j.has("environment")) s.rayTracing.environment = Color3(j.at("environment").intensity34());
+  if (j.has("environment_lighting")) {
+    const std::string l = j.at("environment_lighting").string();
+    const auto lighting = parseEnvironmentLighting(l);
+    if (!lighting) j.at("environment_lighting").fail("expected \"none\", \"physically_based\" or \"all\", got \"" + l + "\"");
+    s.environment.lighting = *lighting;
+  }
+  if (j.has("environment_rotation")) s.environment.rotation = j.at("environment_rotation").number(Real(-360), Real(360));
+  if (j.has("environment_background")) {
+    const std::string b = j.at("environment_background").string();
+    const auto background = parseEnvironmentBackground(b);
+    if (!background) j.at("environment_background").fail("expected \"none\", \"sharp\" or \"blurred\", got \"" + b + "\"");
+    s.environment.background = *background;
+  }
   if (j.has("camera")) {
     readCamera(j.at("camera"), s.camera);
     checkCamera(j, s.camera, Real(s.width) / Real(s.height));

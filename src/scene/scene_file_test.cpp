@@ -386,3 +386,29 @@ TEST(SceneFile, ModelFilesAreKeptForTheNextScene) {
 
 }  // namespace
 }  // namespace illum
+
+namespace illum {
+namespace {
+
+TEST(SceneFile, EnvironmentKeysAreReadAndCheckedByName) {
+  const Scene s = test::parse(R"({"studio_environment": true, "environment_lighting": "physically_based",
+                                   "environment_rotation": -45, "environment_background": "blurred"})");
+  EXPECT_TRUE(s.environment.studio);
+  EXPECT_EQ(s.rayTracing.environmentMap, studioEnvironment());
+  EXPECT_EQ(s.environment.lighting, EnvironmentLighting::PhysicallyBased);
+  EXPECT_EQ(s.environment.rotation, -45);
+  EXPECT_EQ(s.environment.background, EnvironmentBackground::Blurred);
+  EXPECT_EQ(test::parse("{}").environment.lighting, EnvironmentLighting::None);
+  EXPECT_NE(test::errorOf(R"({"environment_lighting": "yes"})").find(
+                "/environment_lighting: expected \"none\", \"physically_based\" or \"all\", got \"yes\""),
+            std::string::npos)
+      << test::errorOf(R"({"environment_lighting": "yes"})");
+  EXPECT_NE(test::errorOf(R"({"environment_background": "sharpest"})").find("expected \"none\", \"sharp\" or \"blurred\""),
+            std::string::npos);
+  EXPECT_NE(test::errorOf(R"({"environment_rotation": 720})").find("/environment_rotation"), std::string::npos);
+  EXPECT_NE(test::errorOf(R"({"studio_environment": true, "environment_map": "sky.hdr"})").find("not both"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace illum

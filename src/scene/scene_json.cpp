@@ -219,8 +219,13 @@ std::string sceneJson(const Scene& s) {
   j["shadows"] = s.rayTracing.shadows;
   j["denoise"] = s.rayTracing.denoise;
   if (s.rayTracing.samples) j["samples"] = *s.rayTracing.samples;
-  if (s.rayTracing.environmentMap)
+  if (s.environment.studio)
+    j["studio_environment"] = true;
+  else if (s.rayTracing.environmentMap)
     j["environment_map"] = std::filesystem::absolute(s.rayTracing.environmentMap->path()).lexically_normal().string();
+  j["environment_lighting"] = std::string(toString(s.environment.lighting));
+  j["environment_rotation"] = number(s.environment.rotation);
+  j["environment_background"] = std::string(toString(s.environment.background));
   j["environment"] = of(s.rayTracing.environment);
   j["tone_map"] = std::string(toString(s.display.toneMap));
   j["encoding"] = std::string(toString(s.display.encoding));

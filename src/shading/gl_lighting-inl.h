@@ -20,6 +20,7 @@
 
 #include "shading/brdf-inl.h"
 #include "shading/cook_torrance-inl.h"
+#include "shading/image_light.h"
 #include "shading/light_sample-inl.h"
 
 HWY_BEFORE_NAMESPACE();
@@ -107,6 +108,42 @@ HWY_INLINE TermsL<V> TermsWithoutLights(D d, const LightModel& lightModel, const
     return {zero, colors.ambient, zero, zero};
   const Vec3L<V> ambient = model == LightingModel::Wylie ? zero : Mul(Broadcast(d, lightModel.ambient), colors.ambient);
   return {Broadcast(d, Vec3(material.emission)), ambient, zero, zero};
+}
+
+// An environment's image-based light (image_light.h) at each lane, lane by lane through its one
+// scalar evaluation, so that every route and every SIMD target gives the same bits. Under a
+// classic model it takes the global ambient's place (GL's a_cs becomes the irradiance E/π about
+// N); a physically based material takes its diffuse part, (1 − metallic)·base ⊙ E/π, as its
+// ambient term and the split sum's reflection of the map as specular.
+template <class D, class V = hn::VFromD<D>>
+HWY_INLINE void AddImageLight(D d, TermsL<V>& terms, const EyeImageLight& env, LightingModel model,
+                              const MaterialColorsL<V>& colors, const PhysicalL<V>& physical, const SurfaceL<V>& s) {
+  const bool physicallyBased = model == LightingModel::CookTorrance;
+  if (model == LightingModel::Wylie || (!physicallyBased && !env.lightsClassic)) return;
+  constexpr std::size_t kMax = hn::MaxLanes(d);
+  HWY_ALIGN Real nx[kMax], ny[kMax], nz[kMax], vx[kMax], vy[kMax], vz[kMax], metal[kMax], alpha[kMax];
+  HWY_ALIGN Real ax[kMax], ay[kMax], az[kMax], sx[kMax], sy[kMax], sz[kMax];
+  hn::Store(s.N.x, d, nx), hn::Store(s.N.y, d, ny), hn::Store(s.N.z, d, nz);
+  hn::Store(colors.ambient.x, d, ax), hn::Store(colors.ambient.y, d, ay), hn::Store(colors.ambient.z, d, az);
+  if (physicallyBased) {
+    hn::Store(s.toViewer.x, d, vx), hn::Store(s.toViewer.y, d, vy), hn::Store(s.toViewer.z, d, vz);
+    hn::Store(physical.metallic, d, metal), hn::Store(physical.alpha, d, alpha);
+  }
+  const Vec3 materialF0 = Lane0(physical.f0);  // the material's own: the same in every lane
+  for (std::size_t i = 0; i < hn::Lanes(d); ++i) {
+    const Vec3 N(nx[i], ny[i], nz[i]), base(ax[i], ay[i], az[i]);
+    const Vec3 irradiance = env.irradianceOverPi(N);
+    Vec3 ambient = base * irradiance, specular(0);
+    if (physicallyBased) {
+      const Vec3 f0 = (1 - metal[i]) * materialF0 + metal[i] * base;
+      ambient *= 1 - metal[i];
+      specular = env.specular(N, Vec3(vx[i], vy[i], vz[i]), f0, std::sqrt(alpha[i]));
+    }
+    ax[i] = ambient.x, ay[i] = ambient.y, az[i] = ambient.z;
+    sx[i] = specular.x, sy[i] = specular.y, sz[i] = specular.z;
+  }
+  terms.ambient = {hn::Load(d, ax), hn::Load(d, ay), hn::Load(d, az)};
+  if (physicallyBased) terms.specular = terms.specular + Vec3L<V>{hn::Load(d, sx), hn::Load(d, sy), hn::Load(d, sz)};
 }
 
 // The two models before Gouraud's, one light at a time:
@@ -245,11 +282,13 @@ HWY_INLINE TermsL<V> ShadeEquation(D d, std::span<const EyeLight> lights, const 
                                    const Material& material, const MaterialColorsL<V>& colors, LightingModel model,
                                    const SurfaceL<V>& s, const MappedL<V>& mapped = {}) {
   TermsL<V> terms = TermsWithoutLights(d, lightModel, material, colors, model);
-  if (mapped.emission && !(follows(model, lightModel.convention) && lightModel.convention == Convention::NoteShader))
-    terms.emission = *mapped.emission;  // (the note's shader has no emission)
+  const bool noteShader = follows(model, lightModel.convention) && lightModel.convention == Convention::NoteShader;
+  if (mapped.emission && !noteShader) terms.emission = *mapped.emission;  // (the note's shader has no emission)
   const PhysicalMaterial physicalMaterial = model == LightingModel::CookTorrance ? physicalOf(material) : PhysicalMaterial{};
   const PhysicalL<V> physical = mapped.metallic ? LanePhysical(d, physicalMaterial, *mapped.metallic, *mapped.roughness)
                                                 : UniformPhysical(d, physicalMaterial);
+  if (lightModel.environment && !noteShader)
+    AddImageLight(d, terms, *lightModel.environment, model, colors, physical, s);
   LightSumsL<V> sums = NoLight(d);
   for (const EyeLight& light : lights)
     AccumulateLight<false>(d, terms, sums, light, material, physical, colors, model, lightModel.convention, s,

@@ -1,5 +1,7 @@
 #include "trace/path_tracer.h"
 
+#include "scene/environment_use.h"
+
 #include "shading/brdf.h"
 #include "trace/optics.h"
 #include "trace/path_bsdf.h"
@@ -20,7 +22,7 @@ Real maxComponent(const Color3& c) { return std::max({c.r, c.g, c.b}); }
 
 PathTracer::PathTracer(const Scene& scene, const RayScene& rays) : scene_(scene), rays_(rays), area_(scene, rays) {
   const Mat4 viewFromWorld = scene.camera.viewFromWorld();
-  worldFromView_ = glm::transpose(Mat3(viewFromWorld));  // a rotation: its inverse is its transpose
+  worldFromView_ = environmentFromEye(scene, viewFromWorld);  // a rotation: its inverse is its transpose
   for (const Light& l : scene.lights) lights_.push_back(toEyeSpace(l, viewFromWorld));
   if (scene.rayTracing.environmentMap) environmentMap_ = &scene.rayTracing.environmentMap->map();
   if (environmentMap_ && luminance(scene.rayTracing.environment) > 0) {

@@ -47,7 +47,7 @@ class PathTracer {
   AreaLights area_;
   const EnvironmentMap* environmentMap_ = nullptr;     // the scene's, decoded when this tracer is made
   std::optional<EnvironmentLight> environmentLight_;  // an environment map, sampled as a light
-  Mat3 worldFromView_{1};
+  Mat3 worldFromView_{1};  // to the environment map's space: the view undone, then its rotation
 };
 
 }  // namespace illum

@@ -1,5 +1,7 @@
 #include "trace/whitted.h"
 
+#include "scene/environment_use.h"
+
 #include "trace/local_light.h"
 #include "trace/optics.h"
 #include "trace/surface_hit.h"
@@ -84,6 +86,9 @@ WhittedTracer::WhittedTracer(const Scene& scene, const RayScene& rays)
     : scene_(scene), rays_(rays), hall_(scene.renderer == RendererKind::Hall) {
   const Mat4 viewFromWorld = scene.camera.viewFromWorld();
   for (const Light& l : scene.lights) lights_.push_back(toEyeSpace(l, viewFromWorld));
+  lightModel_ = scene.lightModel;
+  lightModel_.environment = eyeImageLight(scene, viewFromWorld);
+  environmentFromEye_ = environmentFromEye(scene, viewFromWorld);
 }
 
 Color4 WhittedTracer::primary(const Ray& ray, const RayHit* hit, const RayCone& cone, RayCounts& counts,
@@ -102,7 +107,12 @@ Color4 WhittedTracer::trace(const Ray& ray, const Path& path, RayCounts& counts)
   ++counts.secondary;
   --*path.budget;
   RayHit hit;
-  if (!rays_.intersect(ray, hit)) return scene_.background;
+  if (!rays_.intersect(ray, hit)) {
+    // A mirror or refracted ray that leaves the scene sees the environment where it lights it.
+    if (lightModel_.environment)
+      return {environmentRadiance(scene_, environmentFromEye_, glm::normalize(ray.direction), false), 1};
+    return scene_.background;
+  }
   return shade(ray, hit, path, counts);
 }
 
@@ -124,9 +134,9 @@ Color4 WhittedTracer::shade(const Ray& ray, const RayHit& rayHit, const Path& pa
   LocalSurface local;
   local.material = material;
   local.geometry.position = h.position;
-  local.geometry.normal = scene_.lightModel.twoSided && !h.front ? -h.normal : h.normal;
+  local.geometry.normal = lightModel_.twoSided && !h.front ? -h.normal : h.normal;
   // GL's viewer for primary rays (infinite unless local_viewer); the ray's origin for the others.
-  local.geometry.toViewer = path.primary ? viewerDirection(h.position, scene_.lightModel) : -D;
+  local.geometry.toViewer = path.primary ? viewerDirection(h.position, lightModel_) : -D;
   const Real etaOutside = 1, etaInside = optics.ior;
   HallSurface hall;
   hall.etaViewer = h.front ? etaOutside : etaInside;
@@ -137,7 +147,7 @@ Color4 WhittedTracer::shade(const Ray& ray, const RayHit& rayHit, const Path& pa
   // (cook-torrance's own highlight already carries Fresnel's F).
   const bool hallSurface = hall_ && model != LightingModel::CookTorrance && (optics.reflects() || optics.transmits());
   const ShadowRays shadows(rays_, h, hall_, counts);
-  const LightingTerms terms = localTerms(lights_, scene_.lightModel, model, local,
+  const LightingTerms terms = localTerms(lights_, lightModel_, model, local,
                                          scene_.rayTracing.shadows ? &shadows : nullptr, hallSurface ? &hall : nullptr);
   Color4 color = clampedColor(terms, material);
   color *= point.modulation();
@@ -158,7 +168,7 @@ Color4 WhittedTracer::shade(const Ray& ray, const RayHit& rayHit, const Path& pa
     for (const EyeLight& light : lights_) {
       LightingTerms unused;
       LightDetail d;
-      accumulateLight(unused, light, material, model, local.geometry, &d, scene_.lightModel.convention);
+      accumulateLight(unused, light, material, model, local.geometry, &d, lightModel_.convention);
       probe->lightVisibility.push_back(scene_.rayTracing.shadows ? shadows.towards(light, d.L, d.distance) : Color3(1));
     }
   }

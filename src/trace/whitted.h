@@ -45,6 +45,8 @@ class WhittedTracer {
   const Scene& scene_;
   const RayScene& rays_;
   std::vector<EyeLight> lights_;
+  LightModel lightModel_;  // the scene's, with its environment's image-based light for this view
+  Mat3 environmentFromEye_{1};
   bool hall_;
 };
 
