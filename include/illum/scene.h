@@ -164,6 +164,9 @@ std::optional<EnvironmentBackground> parseEnvironmentBackground(std::string_view
 // key, a fill and a rim), made once per process. Model previews light physically based materials
 // with it, so that metals have surroundings to reflect.
 std::shared_ptr<const EnvironmentMapFile> studioEnvironment();
+// Computes the image-based light of `map` ahead of the first frame that needs it (a process that
+// waits for a model file to be read makes the studio's then), kept as every frame would keep it.
+void prepareImageLight(const std::shared_ptr<const EnvironmentMapFile>& map);
 struct EnvironmentUse {
   EnvironmentLighting lighting = EnvironmentLighting::None;
   Real rotation = 0;

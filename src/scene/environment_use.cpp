@@ -125,6 +125,8 @@ std::shared_ptr<const EyeImageLight> eyeImageLight(const Scene& scene, const Mat
   return eye;
 }
 
+void prepareImageLight(const std::shared_ptr<const EnvironmentMapFile>& map) { imageLightOf(map); }
+
 std::shared_ptr<const EnvironmentMapFile> studioEnvironment() {
   static const std::shared_ptr<const EnvironmentMapFile> studio = EnvironmentMapFile::of(makeStudio());
   return studio;

@@ -20,7 +20,7 @@
 
 #include "shading/brdf-inl.h"
 #include "shading/cook_torrance-inl.h"
-#include "shading/image_light.h"
+#include "shading/image_light-inl.h"
 #include "shading/light_sample-inl.h"
 
 HWY_BEFORE_NAMESPACE();
@@ -110,40 +110,35 @@ HWY_INLINE TermsL<V> TermsWithoutLights(D d, const LightModel& lightModel, const
   return {Broadcast(d, Vec3(material.emission)), ambient, zero, zero};
 }
 
-// An environment's image-based light (image_light.h) at each lane, lane by lane through its one
-// scalar evaluation, so that every route and every SIMD target gives the same bits. Under a
-// classic model it takes the global ambient's place (GL's a_cs becomes the irradiance E/π about
-// N); a physically based material takes its diffuse part, (1 − metallic)·base ⊙ E/π, as its
-// ambient term and the split sum's reflection of the map as specular.
+// An environment's image-based light (image_light.h) at each lane. Under a classic model it takes
+// the global ambient's place (GL's a_cs becomes the irradiance E/π about N); a physically based
+// material takes its diffuse part, (1 − metallic)·base ⊙ E/π, as its ambient term, and the split
+// sum's reflection of the map, prefiltered(R, roughness) ⊙ (f0·A + B), as specular.
 template <class D, class V = hn::VFromD<D>>
 HWY_INLINE void AddImageLight(D d, TermsL<V>& terms, const EyeImageLight& env, LightingModel model,
                               const MaterialColorsL<V>& colors, const PhysicalL<V>& physical, const SurfaceL<V>& s) {
   const bool physicallyBased = model == LightingModel::CookTorrance;
   if (model == LightingModel::Wylie || (!physicallyBased && !env.lightsClassic)) return;
-  constexpr std::size_t kMax = hn::MaxLanes(d);
-  HWY_ALIGN Real nx[kMax], ny[kMax], nz[kMax], vx[kMax], vy[kMax], vz[kMax], metal[kMax], alpha[kMax];
-  HWY_ALIGN Real ax[kMax], ay[kMax], az[kMax], sx[kMax], sy[kMax], sz[kMax];
-  hn::Store(s.N.x, d, nx), hn::Store(s.N.y, d, ny), hn::Store(s.N.z, d, nz);
-  hn::Store(colors.ambient.x, d, ax), hn::Store(colors.ambient.y, d, ay), hn::Store(colors.ambient.z, d, az);
-  if (physicallyBased) {
-    hn::Store(s.toViewer.x, d, vx), hn::Store(s.toViewer.y, d, vy), hn::Store(s.toViewer.z, d, vz);
-    hn::Store(physical.metallic, d, metal), hn::Store(physical.alpha, d, alpha);
+  const ImageLight& light = *env.light;
+  const Vec3L<V> scale = Broadcast(d, env.scale);
+  const Vec3L<V> irradiance = Mul(scale, IrradianceOverPi(d, light, Rotated(d, env.mapFromEye, s.N)));
+  if (!physicallyBased) {
+    terms.ambient = Mul(colors.ambient, irradiance);
+    return;
   }
-  const Vec3 materialF0 = Lane0(physical.f0);  // the material's own: the same in every lane
-  for (std::size_t i = 0; i < hn::Lanes(d); ++i) {
-    const Vec3 N(nx[i], ny[i], nz[i]), base(ax[i], ay[i], az[i]);
-    const Vec3 irradiance = env.irradianceOverPi(N);
-    Vec3 ambient = base * irradiance, specular(0);
-    if (physicallyBased) {
-      const Vec3 f0 = (1 - metal[i]) * materialF0 + metal[i] * base;
-      ambient *= 1 - metal[i];
-      specular = env.specular(N, Vec3(vx[i], vy[i], vz[i]), f0, std::sqrt(alpha[i]));
-    }
-    ax[i] = ambient.x, ay[i] = ambient.y, az[i] = ambient.z;
-    sx[i] = specular.x, sy[i] = specular.y, sz[i] = specular.z;
-  }
-  terms.ambient = {hn::Load(d, ax), hn::Load(d, ay), hn::Load(d, az)};
-  if (physicallyBased) terms.specular = terms.specular + Vec3L<V>{hn::Load(d, sx), hn::Load(d, sy), hn::Load(d, sz)};
+  const V one = hn::Set(d, Real(1));
+  const V metallic = physical.metallic, dielectric = one - metallic;
+  terms.ambient = Mul(dielectric * colors.ambient, irradiance);
+  // Interpolated normals can turn a little away from the viewer: N·V stays just above 0, as the lights' lobe keeps it.
+  const V NoV = hn::Max(Dot(s.N, s.toViewer), hn::Set(d, Real(1e-4)));
+  const Vec3L<V> R = (hn::Set(d, Real(2)) * NoV) * s.N - s.toViewer;
+  const V roughness = hn::Sqrt(physical.alpha);  // the perceptual roughness MicrofacetAlpha squared
+  V A, B;
+  SplitSum(d, NoV, roughness, A, B);
+  const Vec3L<V> f0 = dielectric * physical.f0 + metallic * colors.diffuse;
+  const Vec3L<V> reflectance = A * f0 + Vec3L<V>{B, B, B};
+  const Vec3L<V> reflected = Prefiltered(d, light, Rotated(d, env.mapFromEye, R), roughness);
+  terms.specular = terms.specular + Mul(Mul(scale, reflected), reflectance);
 }
 
 // The two models before Gouraud's, one light at a time:

@@ -1,4 +1,8 @@
+// The image light's tables, made once per map, and its one-lane queries (the templates of
+// image_light-inl.h on one lane of the static target, the bits of every other).
 #include "shading/image_light.h"
+
+#include "shading/image_light-inl.h"
 
 #include <tbb/parallel_for.h>
 
@@ -87,19 +91,6 @@ LatLongImage copyOf(const EnvironmentMap& map) {
   return image;
 }
 
-// The real spherical harmonics of bands 0 to 2 at unit d.
-std::array<Real, 9> shBasis(const Vec3& d) {
-  return {Real(0.282095),
-          Real(0.488603) * d.y,
-          Real(0.488603) * d.z,
-          Real(0.488603) * d.x,
-          Real(1.092548) * d.x * d.y,
-          Real(1.092548) * d.y * d.z,
-          Real(0.315392) * (3 * d.z * d.z - 1),
-          Real(1.092548) * d.x * d.z,
-          Real(0.546274) * (d.x * d.x - d.y * d.y)};
-}
-
 // The nine harmonics integrated exactly over the texel of column x, row y of a width × height
 // latitude-longitude image (θ from +Y, φ as latLongDirection), so that a map's projection is exact
 // for its piecewise-constant texels: a uniform map has no band 1 or 2 at all.
@@ -134,70 +125,124 @@ std::array<double, 9> shOverTexel(int x, int y, int width, int height) {
           0.546274 * (s3 * sn2 - c2s * one)};
 }
 
-// A mip pyramid of the map, for filtered importance sampling (Křivánek and Colbert 2008): a
-// sample that stands for a larger solid angle than a texel reads a coarser level.
+// A square octahedral image (image_light-inl.h's OctahedralUv) of linear RGB.
+struct Octahedral {
+  int size = 0;
+  std::vector<Vec3> texels;  // rows of v, columns of u
+  const Vec3& texel(int x, int y) const { return texels[std::size_t(y) * std::size_t(size) + std::size_t(x)]; }
+  Vec3 bilinear(const Vec2& uv) const {
+    const Real x = std::clamp(uv.x * Real(size) - Real(0.5), Real(-1), Real(size)),
+               y = std::clamp(uv.y * Real(size) - Real(0.5), Real(-1), Real(size));
+    const int x0 = int(std::floor(x)), y0 = int(std::floor(y));
+    const Real fx = x - Real(x0), fy = y - Real(y0);
+    const auto at = [&](int i, int j) { return texel(std::clamp(i, 0, size - 1), std::clamp(j, 0, size - 1)); };
+    return (1 - fy) * ((1 - fx) * at(x0, y0) + fx * at(x0 + 1, y0)) + fy * ((1 - fx) * at(x0, y0 + 1) + fx * at(x0 + 1, y0 + 1));
+  }
+};
+
+// OctahedralUv on one direction.
+Vec2 octahedralUv(const Vec3& d) {
+  const Real s = std::abs(d.x) + std::abs(d.y) + std::abs(d.z);
+  Real px = d.x / s, pz = d.z / s;
+  if (d.y < 0) {
+    const Real fx = (1 - std::abs(pz)) * (px < 0 ? -1 : 1), fz = (1 - std::abs(px)) * (pz < 0 ? -1 : 1);
+    px = fx, pz = fz;
+  }
+  return {px * Real(0.5) + Real(0.5), pz * Real(0.5) + Real(0.5)};
+}
+
+// The unit direction at (u, v) of the octahedral square: OctahedralUv's inverse.
+Vec3 octahedralDirection(Real u, Real v) {
+  const Real px = 2 * u - 1, pz = 2 * v - 1;
+  Vec3 d(px, 1 - std::abs(px) - std::abs(pz), pz);
+  if (d.y < 0) d.x = (1 - std::abs(pz)) * (px < 0 ? -1 : 1), d.z = (1 - std::abs(px)) * (pz < 0 ? -1 : 1);
+  return glm::normalize(d);
+}
+
+Octahedral halved(const Octahedral& src) {
+  Octahedral dst{std::max(1, src.size / 2), {}};
+  dst.texels.resize(std::size_t(dst.size) * std::size_t(dst.size));
+  for (int y = 0; y < dst.size; ++y)
+    for (int x = 0; x < dst.size; ++x)
+      dst.texels[std::size_t(y) * std::size_t(dst.size) + std::size_t(x)] =
+          Real(0.25) * (src.texel(2 * x, 2 * y) + src.texel(2 * x + 1, 2 * y) + src.texel(2 * x, 2 * y + 1) +
+                        src.texel(2 * x + 1, 2 * y + 1));
+  return dst;
+}
+
+// A mip pyramid of the map on the octahedron, for filtered importance sampling (Křivánek and
+// Colbert 2008): a sample that stands for a larger solid angle than a texel reads a coarser level.
 struct Pyramid {
-  std::vector<LatLongImage> levels;
+  std::vector<Octahedral> levels;
   Vec3 at(const Vec3& d, Real lod) const {
     const Real l = std::clamp(lod, Real(0), Real(levels.size() - 1));
     const int l0 = int(l);
     const int l1 = std::min(l0 + 1, int(levels.size()) - 1);
     const Real f = l - Real(l0);
-    const Vec2 uv = latLongPosition(d);
-    const Vec3 a = levels[std::size_t(l0)].at(uv);
-    return f > 0 ? (1 - f) * a + f * levels[std::size_t(l1)].at(uv) : a;
+    const Vec2 uv = octahedralUv(d);
+    const Vec3 a = levels[std::size_t(l0)].bilinear(uv);
+    return f > 0 ? (1 - f) * a + f * levels[std::size_t(l1)].bilinear(uv) : a;
   }
 };
 
 // The map seen through the GGX lobe of `roughness` about each texel's direction (N = V = R),
 // the samples weighted by N·L as Karis's prefilter weighs them.
-LatLongImage prefilter(const Pyramid& source, Real roughness, int width, int height) {
-  constexpr int kSamples = 32;
+Octahedral prefilter(const Pyramid& source, Real roughness, int size) {
+  // A narrow lobe reads fine levels of the pyramid, where fewer samples cover it without gaps.
+  const int kSamples = roughness < Real(0.5) ? 16 : 32;
   const Real alpha = alphaOf(roughness);
-  const LatLongImage& base = source.levels.front();
-  const Real texelSolidAngle = 4 * kPi / (Real(base.width) * Real(base.height));
-  LatLongImage out{width, height, std::vector<float>(std::size_t(width) * std::size_t(height) * 3)};
-  tbb::parallel_for(0, height, [&](int y) {
-    for (int x = 0; x < width; ++x) {
-      const Vec3 n = latLongDirection(Real(x) + Real(0.5), Real(y) + Real(0.5), width, height);
+  const Octahedral& base = source.levels.front();
+  const Real texelSolidAngle = 4 * kPi / (Real(base.size) * Real(base.size));
+  // The lobe's samples about +Z, the same for every texel (V = N): the half vector, and the level
+  // of detail the pyramid is read at for the solid angle each stands for.
+  struct LobeSample {
+    Vec3 h;
+    Real lod;
+  };
+  std::vector<LobeSample> lobe;
+  for (int i = 0; i < kSamples; ++i) {
+    const Vec3 h = sampleGgxHalfVector(i, kSamples, alpha);
+    if (2 * h.z * h.z - 1 <= 0) continue;                // N·L = 2 (N·H)² − 1: below the surface
+    const Real pdf = ggxDistribution(h.z, alpha) / 4;  // D·(N·H)/(4 V·H), N·H = V·H
+    lobe.push_back({h, Real(0.5) * std::log2(1 / (Real(kSamples) * pdf) / texelSolidAngle) + 1});
+  }
+  Octahedral out{size, std::vector<Vec3>(std::size_t(size) * std::size_t(size))};
+  tbb::parallel_for(0, size, [&](int y) {
+    for (int x = 0; x < size; ++x) {
+      const Vec3 n = octahedralDirection((Real(x) + Real(0.5)) / Real(size), (Real(y) + Real(0.5)) / Real(size));
       Vec3 t, b;
       frameAbout(n, t, b);
       Vec3 sum(0);
       Real weight = 0;
-      for (int i = 0; i < kSamples; ++i) {
-        const Vec3 h = sampleGgxHalfVector(i, kSamples, alpha);
-        const Vec3 H = h.x * t + h.y * b + h.z * n;
-        const Real VoH = h.z;  // V = N
-        const Vec3 L = 2 * VoH * H - n;
-        const Real NoL = glm::dot(n, L);
-        if (NoL <= 0) continue;
-        const Real pdf = ggxDistribution(h.z, alpha) / 4;  // D·(N·H)/(4 V·H), N·H = V·H
-        const Real sampleSolidAngle = 1 / (Real(kSamples) * pdf);
-        const Real lod = Real(0.5) * std::log2(sampleSolidAngle / texelSolidAngle) + 1;
-        sum += NoL * source.at(glm::normalize(L), lod);
+      for (const LobeSample& s : lobe) {
+        const Vec3 H = s.h.x * t + s.h.y * b + s.h.z * n;
+        const Vec3 L = 2 * s.h.z * H - n;  // V = N, so V·H = N·H
+        const Real NoL = 2 * s.h.z * s.h.z - 1;
+        sum += NoL * source.at(L, s.lod);
         weight += NoL;
       }
-      const Vec3 c = weight > 0 ? sum / weight : source.at(n, 0);
-      float* p = out.rgb.data() + 3 * (std::size_t(y) * std::size_t(width) + std::size_t(x));
-      p[0] = float(c.x), p[1] = float(c.y), p[2] = float(c.z);
+      out.texels[std::size_t(y) * std::size_t(size) + std::size_t(x)] = weight > 0 ? sum / weight : source.at(n, 0);
     }
   });
   return out;
 }
 
+// The split sum's table, A and B as two planes of kSplitSumTableSize² entries.
 struct DfgTable {
-  static constexpr int kSize = 32;
-  std::array<Vec2, kSize * kSize> entries;  // [roughness row][N·V column]
+  static constexpr int kSize = kSplitSumTableSize;
+  std::array<std::array<Real, kSize * kSize>, 2> planes;
   DfgTable() {
     constexpr int kSamples = 64;
-    for (int j = 0; j < kSize; ++j)
+    for (int j = 0; j < kSize; ++j) {
+      const Real alpha = alphaOf(Real(j) / Real(kSize - 1));
+      std::array<Vec3, kSamples> halfVectors;
+      for (int s = 0; s < kSamples; ++s) halfVectors[std::size_t(s)] = sampleGgxHalfVector(s, kSamples, alpha);
       for (int i = 0; i < kSize; ++i) {
         const Real NoV = std::max(Real(i) / Real(kSize - 1), Real(1e-3));
-        const Real alpha = alphaOf(Real(j) / Real(kSize - 1));
         const Vec3 V(std::sqrt(1 - NoV * NoV), 0, NoV);
         Real a = 0, b = 0;
         for (int s = 0; s < kSamples; ++s) {
-          const Vec3 H = sampleGgxHalfVector(s, kSamples, alpha);
+          const Vec3& H = halfVectors[std::size_t(s)];
           const Real VoH = glm::dot(V, H);
           const Vec3 L = 2 * VoH * H - V;
           const Real NoL = L.z, NoH = H.z;
@@ -208,10 +253,17 @@ struct DfgTable {
           a += (1 - fc) * g;
           b += fc * g;
         }
-        entries[std::size_t(j * kSize + i)] = {a / kSamples, b / kSamples};
+        planes[0][std::size_t(j * kSize + i)] = a / kSamples;
+        planes[1][std::size_t(j * kSize + i)] = b / kSamples;
       }
+    }
   }
 };
+
+const DfgTable& dfgTable() {
+  static const DfgTable table;
+  return table;
+}
 
 std::uint64_t contentHash(const EnvironmentMap& map) {
   std::uint64_t h = 0x9E3779B97F4A7C15ull ^ (std::uint64_t(map.width()) << 32 | std::uint32_t(map.height()));
@@ -256,15 +308,14 @@ Vec3 latLongDirection(Real x, Real y, int width, int height) {
 }
 
 ImageLight::ImageLight(const EnvironmentMap& map) {
-  Pyramid pyramid;
-  pyramid.levels.push_back(copyOf(map));
-  while (pyramid.levels.front().width > 256) pyramid.levels.front() = halved(pyramid.levels.front());
-  while (pyramid.levels.back().width > 4) pyramid.levels.push_back(halved(pyramid.levels.back()));
+  std::vector<LatLongImage> latLong{copyOf(map)};
+  while (latLong.front().width > 256) latLong.front() = halved(latLong.front());
+  while (latLong.back().width > 64) latLong.push_back(halved(latLong.back()));
 
   // Irradiance: the radiance projected on the nine harmonics from a level of about 64 × 32, then
   // convolved with the clamped cosine and divided by π.
-  const LatLongImage* small = &pyramid.levels.front();
-  for (const LatLongImage& level : pyramid.levels)
+  const LatLongImage* small = &latLong.front();
+  for (const LatLongImage& level : latLong)
     if (level.width >= 64) small = &level;
   std::array<glm::dvec3, 9> projected{};
   for (int y = 0; y < small->height; ++y)
@@ -276,11 +327,27 @@ ImageLight::ImageLight(const EnvironmentMap& map) {
   constexpr double kBandOverPi[3] = {1, 2.0 / 3, 0.25};
   for (std::size_t k = 0; k < 9; ++k) sh_[k] = Vec3(projected[k] * kBandOverPi[k == 0 ? 0 : k < 4 ? 1 : 2]);
 
-  // Specular: the sharpest level is the map itself (at most 256 wide), then a lobe per roughness.
-  levels_[0] = pyramid.levels.front();
-  constexpr int kWidths[kLevels] = {0, 64, 32, 32, 16, 16};
-  for (int k = 1; k < kLevels; ++k)
-    levels_[std::size_t(k)] = prefilter(pyramid, Real(k) / Real(kLevels - 1), kWidths[k], kWidths[k] / 2);
+  // Specular: the map on the octahedron (128², about the latitude-longitude base's density), its
+  // pyramid, then a lobe per roughness, all levels in one atlas.
+  Pyramid octahedral;
+  Octahedral sharp{128, std::vector<Vec3>(128 * 128)};
+  const LatLongImage& base = latLong.front();
+  for (int y = 0; y < sharp.size; ++y)
+    for (int x = 0; x < sharp.size; ++x)
+      sharp.texels[std::size_t(y) * 128 + std::size_t(x)] =
+          base.bilinear(octahedralDirection((Real(x) + Real(0.5)) / 128, (Real(y) + Real(0.5)) / 128));
+  octahedral.levels.push_back(sharp);
+  while (octahedral.levels.back().size > 4) octahedral.levels.push_back(halved(octahedral.levels.back()));
+  constexpr int kSizes[kLevels] = {128, 64, 32, 32, 16, 16};
+  RealIndex offset = 0;
+  for (int k = 0; k < kLevels; ++k) {
+    const Octahedral level = k == 0 ? sharp : prefilter(octahedral, Real(k) / Real(kLevels - 1), kSizes[k]);
+    levelSize_[std::size_t(k)] = level.size;
+    levelOffset_[std::size_t(k)] = offset;
+    offset += RealIndex(level.size) * RealIndex(level.size);
+    for (const Vec3& t : level.texels)
+      for (int c = 0; c < 3; ++c) atlas_[std::size_t(c)].push_back(t[c]);
+  }
 }
 
 std::shared_ptr<const ImageLight> ImageLight::of(const EnvironmentMap& map) {
@@ -295,41 +362,28 @@ std::shared_ptr<const ImageLight> ImageLight::of(const EnvironmentMap& map) {
   return light;
 }
 
+namespace one {
+namespace hn = hwy::HWY_NAMESPACE;
+using D = hn::CappedTag<Real, 1>;
+constexpr D d;
+}  // namespace one
+
 Vec3 ImageLight::irradianceOverPi(const Vec3& n) const {
-  const std::array<Real, 9> basis = shBasis(n);
-  Vec3 e(0);
-  for (std::size_t k = 0; k < 9; ++k) e += basis[k] * sh_[k];
-  return glm::max(e, Vec3(0));  // nine terms can ring below zero opposite a bright sun
+  return HWY_NAMESPACE::Lane0(HWY_NAMESPACE::IrradianceOverPi(one::d, *this, HWY_NAMESPACE::Broadcast(one::d, n)));
 }
 
 Vec3 ImageLight::prefiltered(const Vec3& r, Real roughness) const {
-  const Real level = std::clamp(roughness, Real(0), Real(1)) * Real(kLevels - 1);
-  const int l0 = std::min(int(level), kLevels - 1), l1 = std::min(l0 + 1, kLevels - 1);
-  const Real f = level - Real(l0);
-  const Vec2 uv = latLongPosition(r);
-  const Vec3 a = levels_[std::size_t(l0)].at(uv);
-  return f > 0 ? (1 - f) * a + f * levels_[std::size_t(l1)].at(uv) : a;
+  return HWY_NAMESPACE::Lane0(
+      HWY_NAMESPACE::Prefiltered(one::d, *this, HWY_NAMESPACE::Broadcast(one::d, r), hwy::HWY_NAMESPACE::Set(one::d, roughness)));
 }
+
+const Real* splitSumTable(int which) { return dfgTable().planes[std::size_t(which)].data(); }
 
 Vec2 splitSumDfg(Real NoV, Real roughness) {
-  static const DfgTable table;
-  constexpr int n = DfgTable::kSize;
-  const Real x = std::clamp(NoV, Real(0), Real(1)) * (n - 1), y = std::clamp(roughness, Real(0), Real(1)) * (n - 1);
-  const int x0 = std::min(int(x), n - 2), y0 = std::min(int(y), n - 2);
-  const Real fx = x - Real(x0), fy = y - Real(y0);
-  const auto at = [&](int i, int j) { return table.entries[std::size_t(j * n + i)]; };
-  return (1 - fy) * ((1 - fx) * at(x0, y0) + fx * at(x0 + 1, y0)) + fy * ((1 - fx) * at(x0, y0 + 1) + fx * at(x0 + 1, y0 + 1));
-}
-
-Vec3 EyeImageLight::irradianceOverPi(const Vec3& eyeNormal) const {
-  return scale * light->irradianceOverPi(glm::normalize(mapFromEye * eyeNormal));
-}
-
-Vec3 EyeImageLight::specular(const Vec3& N, const Vec3& toViewer, const Vec3& f0, Real roughness) const {
-  const Real NoV = std::max(glm::dot(N, toViewer), Real(1e-4));
-  const Vec3 R = 2 * NoV * N - toViewer;
-  const Vec2 dfg = splitSumDfg(NoV, roughness);
-  return scale * light->prefiltered(glm::normalize(mapFromEye * R), roughness) * (f0 * dfg.x + Vec3(dfg.y));
+  namespace hn = hwy::HWY_NAMESPACE;
+  hn::VFromD<one::D> a, b;
+  HWY_NAMESPACE::SplitSum(one::d, hn::Set(one::d, NoV), hn::Set(one::d, roughness), a, b);
+  return {hn::GetLane(a), hn::GetLane(b)};
 }
 
 }  // namespace illum

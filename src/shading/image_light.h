@@ -14,6 +14,8 @@
 #include <illum/real.h>
 
 #include <array>
+#include <cstdint>
+#include <type_traits>
 #include <memory>
 #include <vector>
 
@@ -36,6 +38,9 @@ Vec2 latLongPosition(const Vec3& d);
 // centres at half-integers).
 Vec3 latLongDirection(Real x, Real y, int width, int height);
 
+// Signed integers as wide as Real: the lanes' texel indices.
+using RealIndex = std::conditional_t<sizeof(Real) == 4, std::int32_t, std::int64_t>;
+
 class ImageLight {
  public:
   // The number of prefiltered levels: roughness k/(kLevels − 1) at level k.
@@ -49,19 +54,29 @@ class ImageLight {
   // E(n)/π for unit n in the map's space: the radiance a white Lambertian surface facing n reflects.
   Vec3 irradianceOverPi(const Vec3& n) const;
   // The nine coefficients of E/π, per channel, in the order (l, m) = (0,0) (1,−1) (1,0) (1,1)
-  // (2,−2) (2,−1) (2,0) (2,1) (2,2).
+  // (2,−2) (2,−1) (2,0) (2,1) (2,2), with x, y, z the map's axes.
   const std::array<Vec3, 9>& irradianceSh() const { return sh_; }
-  // The map prefiltered by the GGX lobe of perceptual `roughness` ∈ [0, 1], towards unit r.
+  // The map prefiltered by the GGX lobe of perceptual `roughness` ∈ [0, 1], towards r.
   Vec3 prefiltered(const Vec3& r, Real roughness) const;
+
+  // The prefiltered levels, each an octahedral square (image_light-inl.h's OctahedralUv) of
+  // levelSizes()[k]² texels from levelOffsets()[k] on, in one atlas per channel.
+  const Real* atlas(int channel) const { return atlas_[std::size_t(channel)].data(); }
+  const RealIndex* levelSizes() const { return levelSize_.data(); }
+  const RealIndex* levelOffsets() const { return levelOffset_.data(); }
 
  private:
   std::array<Vec3, 9> sh_{};
-  std::array<LatLongImage, kLevels> levels_;
+  std::array<std::vector<Real>, 3> atlas_;
+  std::array<RealIndex, kLevels> levelSize_{}, levelOffset_{};
 };
 
 // The split sum's second factor: (A, B) with ∫ f·cos over the hemisphere = f0·A + B for the GGX
-// lobe of perceptual `roughness` (α = roughness², as MicrofacetAlpha) with Smith's correlated
-// visibility and Schlick's Fresnel, at N·V; from a 32 × 32 table made once, bilinear between entries.
+// lobe of perceptual roughness (α = roughness², as MicrofacetAlpha) with Smith's correlated
+// visibility and Schlick's Fresnel, at N·V; a table of kSplitSumTableSize² entries over N·V
+// (columns) and roughness (rows), made once, read bilinearly (image_light-inl.h's SplitSum).
+constexpr int kSplitSumTableSize = 32;
+const Real* splitSumTable(int which);  // 0: A, 1: B
 Vec2 splitSumDfg(Real NoV, Real roughness);
 
 // An image light as one frame's renderer sees it: its rotation from eye space to the map's space,
@@ -72,10 +87,6 @@ struct EyeImageLight {
   Mat3 mapFromEye{1};
   Color3 scale{1};
   bool lightsClassic = true;
-  // What it adds to a physically based point (N, V unit, in eye space): the diffuse part's E/π,
-  // and the specular part, prefiltered radiance × (f0·A + B), both times `scale`.
-  Vec3 irradianceOverPi(const Vec3& eyeNormal) const;
-  Vec3 specular(const Vec3& eyeNormal, const Vec3& toViewer, const Vec3& f0, Real roughness) const;
 };
 
 }  // namespace illum

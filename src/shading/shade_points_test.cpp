@@ -1,6 +1,7 @@
 // The SIMD equation against the one-lane equation, and every SIMD target against every other:
 // the same bits, for every model, light kind and option. And the lanes' power function against
 // std::pow.
+#include "shading/image_light.h"
 #include "shading/shade_points.h"
 
 #include <illum/lighting.h>
@@ -82,15 +83,30 @@ std::vector<Real> shadeAll(const ShadeSetup& setup, const Batch& b) {
 bool sameBits(Real a, Real b) { return std::memcmp(&a, &b, sizeof(Real)) == 0; }
 
 // How the equation is asked for: GL's with an infinite or a local viewer, or a lecture note's way.
+// With `environment`, an image-based light (a sky of two bright spots over a dark floor, turned).
 struct Viewing {
   bool localViewer;
   Convention convention;
+  bool environment = false;
 };
 constexpr Viewing kViewings[] = {{false, Convention::GL},
                                  {true, Convention::GL},
                                  {false, Convention::NoteShader},
                                  {false, Convention::NoteHalfSum},
-                                 {false, Convention::NoteWorldSpace}};
+                                 {false, Convention::NoteWorldSpace},
+                                 {true, Convention::GL, true}};
+
+std::shared_ptr<const EyeImageLight> testImageLight() {
+  std::vector<Vec3> texels;
+  for (int y = 0; y < 32; ++y)
+    for (int x = 0; x < 64; ++x)
+      texels.push_back(y < 16 ? Vec3(Real(0.2) + Real(x % 7 == 0) * 3, Real(0.4), Real(y == 5) * 5) : Vec3(Real(0.05)));
+  auto eye = std::make_shared<EyeImageLight>();
+  eye->light = ImageLight::of(EnvironmentMap(64, 32, texels));
+  eye->mapFromEye = Mat3(0.6f, 0, 0.8f, 0, 1, 0, -0.8f, 0, 0.6f);
+  eye->scale = {1.5f, 1, 0.7f};
+  return eye;
+}
 
 class EveryModelAndLight : public testing::TestWithParam<std::tuple<LightingModel, int, bool, int>> {};
 
@@ -101,6 +117,7 @@ TEST_P(EveryModelAndLight, SimdEqualsOneLaneBitForBit) {
   ShadeSetup setup{lights, {}, model, {}};
   setup.lightModel.localViewer = kViewings[viewing].localViewer;
   setup.lightModel.convention = kViewings[viewing].convention;
+  if (kViewings[viewing].environment) setup.lightModel.environment = testImageLight();
   setup.material.specular = {0.8f, 0.8f, 0.8f, 1};
   setup.material.emission = {0.01f, 0.02f, 0.03f, 1};
   setup.material.shininess = 37;
@@ -146,6 +163,7 @@ TEST(ShadePoints, EverySimdTargetGivesTheSameBits) {
   p.metallic = 0.4f;
   p.roughness = 0.3f;
   glFromPhysical(physical.material, p);
+  physical.lightModel.environment = testImageLight();
   ShadeSetup beckmann = physical;
   p.distribution = Microfacet::Beckmann;
   glFromPhysical(beckmann.material, p);
