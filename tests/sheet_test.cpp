@@ -168,6 +168,30 @@ TEST(CliCompare, PutsALecturesConventionBesideGls) {
 
 // A panel that comes out black says why under it: the floor of attenuation.json has no vertex in a
 // spot's cone, so flat and Gouraud shading light nothing (correct GL), and Phong shading does.
+// A sheet shows every panel through one display: a path-traced preview's panel takes the sheet's
+// sRGB without the ACES tone map its own render would add, so that it compares with the raster's.
+TEST(CliCompare, EveryPanelGoesThroughTheSheetsOneDisplay) {
+  TempDir dir;
+  const std::string duck = "/usr/share/assimp/models/Collada/duck.dae";
+  const RunResult r = run("compare " + duck + " --rows renderer=raster,path --cols shading=phong --samples 4"
+                          " --resolution 80,60 -v -o " + (dir / "sheet.png").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const Image sheet = illum::readPng(dir / "sheet.png");
+  const std::vector<Panel> ps = panels(r.err);
+  ASSERT_EQ(ps.size(), 2u);
+  const RunResult path = run("render " + duck + " --renderer path --samples 4 --tone-map none --resolution 80,60 -o " +
+                             (dir / "path.png").string());
+  ASSERT_EQ(path.exitCode, 0) << path.err;
+  EXPECT_EQ(crop(sheet, ps[1]).rgba, illum::readPng(dir / "path.png").rgba);
+  const RunResult aces = run("render " + duck + " --renderer path --samples 4 --resolution 80,60 -o " +
+                             (dir / "aces.png").string());
+  ASSERT_EQ(aces.exitCode, 0) << aces.err;
+  EXPECT_NE(crop(sheet, ps[1]).rgba, illum::readPng(dir / "aces.png").rgba) << "the render alone is tone-mapped";
+  // The corners are background in both panels, the same bytes.
+  const Image raster = crop(sheet, ps[0]), traced = crop(sheet, ps[1]);
+  for (int c = 0; c < 4; ++c) EXPECT_EQ(raster.pixel(0, 0)[c], traced.pixel(0, 0)[c]);
+}
+
 TEST(CliCompare, BlackPanelsSayWhy) {
   TempDir dir;
   const RunResult r = run("compare " + (fs::path(ILLUM_EXAMPLES_DIR) / "attenuation.json").string() +

@@ -65,7 +65,10 @@ Sheet compareSheet(const CompareOptions& o, ModelCache* models) {
   checkSheetPixels((rows.values.size() + (diffRows ? 1 : 0)) * (cols.values.size() + (diffCols ? 1 : 0)), base, first);
 
   Sheet sheet;
-  sheet.title = inputName(o.scene) + " · rows: " + rows.name + " · columns: " + cols.name;
+  // One display for every panel, unless the display is what the sheet compares.
+  const bool oneDisplay = rows.name != "tone-map" && rows.name != "encoding" && cols.name != "tone-map" && cols.name != "encoding";
+  sheet.title = inputName(o.scene) + " · rows: " + rows.name + " · columns: " + cols.name +
+                (oneDisplay ? " · " + displayCaption(first.display) : "");
   sheet.corner = rows.name + " \\ " + cols.name;
   sheet.rowLabels = rows.values;
   sheet.columnLabels = cols.values;
@@ -81,6 +84,7 @@ Sheet compareSheet(const CompareOptions& o, ModelCache* models) {
       Scene scene = prepareScene(cell, nullptr, &cache);
       applyToScene(rows, rows.values[r], scene);
       applyToScene(cols, cols.values[c], scene);
+      if (oneDisplay) scene.display = first.display;
       Image image;
       renderer.render(scene, image);
       captions[r].push_back(unlitPanelCaption(image, scene));

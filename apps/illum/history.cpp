@@ -67,7 +67,7 @@ Sheet historySheet(const SceneOptions& o, ModelCache* models) {
   defaultPanelSize(base, first);
   checkSheetPixels(std::size(kSteps), base, first);
   Sheet sheet;
-  sheet.title = "Lighting from Wylie (1967) to Kajiya (1986): " + inputName(o);
+  sheet.title = "Lighting from Wylie (1967) to Kajiya (1986): " + inputName(o) + " · " + displayCaption(first.display);
   Renderer renderer;
   int index = 0;
   for (const Step& step : kSteps) {
@@ -78,6 +78,7 @@ Sheet historySheet(const SceneOptions& o, ModelCache* models) {
     cell.verbose = false;
     Scene scene = prepareScene(cell, nullptr, &cache);
     if (std::string(step.model) == "wylie") lightFromTheEye(scene);
+    scene.display = first.display;  // the Kajiya panel's radiance through the sheet's one transform
     Image image;
     renderer.render(scene, image);
     if (index % kColumns == 0) sheet.panels.emplace_back();

@@ -35,6 +35,12 @@ void checkSheetPixels(std::size_t panels, const SceneOptions& o, const Scene& fi
                      "with --max-pixels)");
 }
 
+std::string displayCaption(const Display& display) {
+  std::string text = display.encoding == Encoding::Srgb ? "display: sRGB" : "display: linear";
+  text += display.toneMap == ToneMap::None ? ", no tone map" : ", " + std::string(toString(display.toneMap)) + " tone map";
+  return text;
+}
+
 std::string inputName(const SceneOptions& o) {
   if (o.memoryScene) return "the scene given";
   return o.input.empty() ? "the built-in scene" : std::filesystem::path(o.input).filename().string();

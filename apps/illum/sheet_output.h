@@ -23,6 +23,11 @@ void checkSheetPixels(std::size_t panels, const SceneOptions& o, const Scene& fi
 // "the built-in scene", or the input file's name.
 std::string inputName(const SceneOptions& o);
 
+// A sheet shows its panels through one transform from radiance to bytes, the one the options give
+// the sheet's scene (`first`): a path-traced panel of a preview takes it instead of its own ACES,
+// so that panels compare. The title says which ("display: sRGB, no tone map").
+std::string displayCaption(const Display& display);
+
 struct SheetOutput {
   std::string path;
   bool force = false, quiet = false;

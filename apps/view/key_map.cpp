@@ -51,7 +51,7 @@ const std::vector<KeyHelp>& keyHelp() {
       {"G", "grid (--grid)"},
       {"A", "anti-aliasing: 8 samples or 1 (--samples)"},
       {"Q", "ambient occlusion (--ambient-occlusion)"},
-      {"F", "environment lighting (not yet: illum has none)"},
+      {"F", "environment lighting (the scene's map, or illum's studio)"},
       {"Z", "frame rate and the last frame's time"},
       {"Tab", "the panels"},
       {"H, ?", "this list"},

@@ -94,6 +94,20 @@ void scenePanel(ViewState& state) {
     bool shadows = s.rayTracing.shadows;
     if (ImGui::Checkbox("shadows (--no-shadows)", &shadows)) state.edit().rayTracing.shadows = shadows;
   }
+  bool environment = s.environment.lighting == EnvironmentLighting::All;
+  if (ImGui::Checkbox("environment lighting (--environment, F)", &environment)) state.toggleEnvironment();
+  if (s.rayTracing.environmentMap) {
+    float rotation = float(s.environment.rotation);
+    if (ImGui::SliderFloat("rotation (--environment-rotation)", &rotation, -180, 180, "%.0f°"))
+      state.edit().environment.rotation = Real(rotation);
+    float intensity = float(s.rayTracing.environment.g);
+    if (ImGui::SliderFloat("intensity (--environment-intensity)", &intensity, 0, 4, "%.2f"))
+      state.edit().rayTracing.environment = Color3(Real(intensity));
+    EnvironmentBackground background = s.environment.background;
+    const std::array backgrounds{EnvironmentBackground::None, EnvironmentBackground::Sharp, EnvironmentBackground::Blurred};
+    if (combo("background (--environment-background)", background, backgrounds))
+      state.edit().environment.background = background;
+  }
   bool edges = s.overlays.edges, grid = s.overlays.grid, axes = s.overlays.axes;
   if (ImGui::Checkbox("edges (E)", &edges)) state.toggleEdges();
   ImGui::SameLine();

@@ -71,6 +71,14 @@ void ViewState::load() {
     next.overlays = scene_.overlays;
     next.multisample = scene_.multisample;
     next.ambientOcclusion.enabled = scene_.ambientOcclusion.enabled;
+    if (scene_.environment.lighting == EnvironmentLighting::All && next.environment.lighting != EnvironmentLighting::All) {
+      if (!next.rayTracing.environmentMap) {
+        next.rayTracing.environmentMap = scene_.rayTracing.environmentMap;
+        next.rayTracing.environment = scene_.rayTracing.environment;
+        next.environment.studio = scene_.environment.studio;
+      }
+      next.environment.lighting = EnvironmentLighting::All;
+    }
   }
   model_ = cli::isModelInput(o.input);
   lightsFollow_ = model_;
@@ -172,6 +180,21 @@ void ViewState::toggleOcclusion() {
     scene_.lights = cameraLightRig(scene_.camera, intensity, encoding, scene_.ambientOcclusion.enabled);
     scene_.lightModel.ambient = cameraRigAmbient(intensity, encoding, scene_.ambientOcclusion.enabled);
     rig();
+  }
+  ++version_;
+}
+
+void ViewState::toggleEnvironment() {
+  EnvironmentUse& use = scene_.environment;
+  if (use.lighting == EnvironmentLighting::All) {
+    use.lighting = EnvironmentLighting::None;
+  } else {
+    if (!scene_.rayTracing.environmentMap) {
+      scene_.rayTracing.environmentMap = studioEnvironment();
+      scene_.rayTracing.environment = Color3(1);
+      use.studio = true;
+    }
+    use.lighting = EnvironmentLighting::All;
   }
   ++version_;
 }

@@ -87,6 +87,9 @@ class ViewState {
   void toggleGrid();
   void toggleAntiAliasing();  // A: 8 samples (a preview's) or 1
   void toggleOcclusion();     // Q
+  // F: environment lighting for every material, by the scene's map or illum's studio, or off
+  // (as f3d's F turns its HDRI lighting on and off).
+  void toggleEnvironment();
   Toggles& toggles() { return toggles_; }
 
   // The terms of the equation drawn (all by default).

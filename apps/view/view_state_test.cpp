@@ -120,6 +120,28 @@ TEST(ViewState, TogglesAndEveryChangeIsANewVersion) {
   EXPECT_EQ(s.probe()->first, 10);
 }
 
+// F: the studio lights every material (an STL has no map of its own), then nothing; the picture
+// changes and comes back; the toggle outlives the file.
+TEST(ViewState, FTurnsEnvironmentLightingOnAndOff) {
+  const std::string duck = std::string(kModels) + "/Collada/duck.dae", spider = std::string(kModels) + "/STL/Spider_binary.stl";
+  ViewState s({spider, duck}, viewOptions(96, 64));
+  s.load();
+  EXPECT_EQ(s.scene().environment.lighting, EnvironmentLighting::None);
+  const Image before = renderScene(s.drawn());
+  const std::uint64_t v = s.version();
+  s.toggleEnvironment();
+  EXPECT_GT(s.version(), v);
+  EXPECT_EQ(s.scene().environment.lighting, EnvironmentLighting::All);
+  EXPECT_EQ(s.scene().rayTracing.environmentMap, studioEnvironment());
+  EXPECT_NE(renderScene(s.drawn()).rgba, before.rgba);
+  EXPECT_TRUE(s.step(1));
+  EXPECT_EQ(s.scene().environment.lighting, EnvironmentLighting::All);
+  EXPECT_TRUE(s.step(1));
+  s.toggleEnvironment();
+  EXPECT_EQ(s.scene().environment.lighting, EnvironmentLighting::None);
+  EXPECT_EQ(renderScene(s.drawn()).rgba, before.rgba);
+}
+
 TEST(ViewState, StepsThroughFilesAndKeepsToggles) {
   const std::string duck = std::string(kModels) + "/Collada/duck.dae", spider = std::string(kModels) + "/STL/Spider_binary.stl";
   ViewState s({duck, spider}, viewOptions(160, 120));

@@ -287,7 +287,7 @@ int runViewer(const std::vector<std::string>& files, const cli::SceneOptions& op
               case Action::FrameRate: state.toggles().frameRate = !state.toggles().frameRate; break;
               case Action::AntiAliasing: state.toggleAntiAliasing(); break;
               case Action::Occlusion: state.toggleOcclusion(); break;
-              case Action::Environment: say(panels, "F: illum has no environment lighting yet"); break;
+              case Action::Environment: state.toggleEnvironment(); break;
               case Action::Help: state.toggles().help = !state.toggles().help; break;
               case Action::Panels: {
                 // The window grows or shrinks by the panels: the picture keeps its size.
