@@ -67,8 +67,8 @@ Sheet compareSheet(const CompareOptions& o, ModelCache* models) {
   Sheet sheet;
   // One display for every panel, unless the display is what the sheet compares.
   const bool oneDisplay = rows.name != "tone-map" && rows.name != "encoding" && cols.name != "tone-map" && cols.name != "encoding";
-  sheet.title = inputName(o.scene) + " · rows: " + rows.name + " · columns: " + cols.name +
-                (oneDisplay ? " · " + displayCaption(first.display) : "");
+  sheet.title = inputName(o.scene) + " · rows: " + rows.name + " · columns: " + cols.name;
+  if (oneDisplay) sheet.subtitle = displayCaption(first.display);
   sheet.corner = rows.name + " \\ " + cols.name;
   sheet.rowLabels = rows.values;
   sheet.columnLabels = cols.values;

@@ -67,7 +67,8 @@ Sheet historySheet(const SceneOptions& o, ModelCache* models) {
   defaultPanelSize(base, first);
   checkSheetPixels(std::size(kSteps), base, first);
   Sheet sheet;
-  sheet.title = "Lighting from Wylie (1967) to Kajiya (1986): " + inputName(o) + " · " + displayCaption(first.display);
+  sheet.title = "Lighting from Wylie (1967) to Kajiya (1986): " + inputName(o);
+  sheet.subtitle = displayCaption(first.display);
   Renderer renderer;
   int index = 0;
   for (const Step& step : kSteps) {

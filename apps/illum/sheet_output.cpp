@@ -36,6 +36,7 @@ void checkSheetPixels(std::size_t panels, const SceneOptions& o, const Scene& fi
 }
 
 std::string displayCaption(const Display& display) {
+  if (display.identity()) return "display: linear, as GL writes it";
   std::string text = display.encoding == Encoding::Srgb ? "display: sRGB" : "display: linear";
   text += display.toneMap == ToneMap::None ? ", no tone map" : ", " + std::string(toString(display.toneMap)) + " tone map";
   return text;

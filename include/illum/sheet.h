@@ -18,6 +18,7 @@ struct SheetPanel {
 
 struct Sheet {
   std::string title;                     // over everything; empty: none
+  std::string subtitle;                  // under the title, smaller (what every panel shares); empty: none
   std::string corner;                    // over the row labels (what the rows and columns are)
   std::vector<std::string> rowLabels;    // beside each row; empty: no label column
   std::vector<std::string> columnLabels; // over each column; empty: no label row

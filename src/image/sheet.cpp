@@ -70,6 +70,7 @@ SheetLayout layoutSheet(const Sheet& sheet) {
   if (!sheet.rowLabels.empty())
     labelColumn = std::max(labelColumn, int(std::ceil(textWidth(sheet.corner, kCaptionSize)))) + kGap + 8;
   const int top = kMargin + (sheet.title.empty() ? 0 : lineHeight(kTitleSize) + 6) +
+                  (sheet.subtitle.empty() ? 0 : lineHeight(kCaptionSize) + 4) +
                   (sheet.columnLabels.empty() ? 0 : lineHeight(kLabelSize) + 4);
   const int captionCount = captionLines(sheet, l.cellWidth - kCaptionInset);
   const int captionBand = captionCount * lineHeight(kCaptionSize) + (captionCount ? 4 : 0);
@@ -86,6 +87,8 @@ SheetLayout layoutSheet(const Sheet& sheet) {
   l.height = top + rows * (l.cellHeight + captionBand) + std::max(0, rows - 1) * kGap + kMargin;
   if (!sheet.title.empty())
     l.width = std::max(l.width, 2 * kMargin + int(std::ceil(textWidth(sheet.title, kTitleSize))));
+  if (!sheet.subtitle.empty())
+    l.width = std::max(l.width, 2 * kMargin + int(std::ceil(textWidth(sheet.subtitle, kCaptionSize))));
   return l;
 }
 
@@ -98,6 +101,11 @@ Image composeSheet(const Sheet& sheet) {
     y += lineHeight(kTitleSize);
     drawText(out, Real(l.width) / 2, Real(y - 6), sheet.title, kTitleSize, kInk);
     y += 6;
+  }
+  if (!sheet.subtitle.empty()) {
+    y += lineHeight(kCaptionSize);
+    drawText(out, Real(l.width) / 2, Real(y - 4), sheet.subtitle, kCaptionSize, kDimInk);
+    y += 4;
   }
   // The first column's left edge: where the grid starts.
   int gridLeft = kMargin;
