@@ -767,9 +767,26 @@ TEST(CliRender, AnEnvironmentLightsTheSceneAndIsShownBehindIt) {
   ASSERT_EQ(studioAgain.exitCode, 0) << studioAgain.err;
   EXPECT_EQ(slurp(dir / "s.png"), slurp(dir / "s2.png"));
 
+  // The same sky as an OpenEXR map draws the same bytes.
+  {
+    illum::FloatImage sky{16, 8, std::vector<float>(16 * 8 * 4, 0.5f), {}};
+    const std::vector<std::uint8_t> exr = illum::encodeExr(sky);
+    std::ofstream(dir / "grey.exr", std::ios::binary).write(reinterpret_cast<const char*>(exr.data()), std::streamsize(exr.size()));
+  }
+  const RunResult fromExr = run("render --resolution 64,48 --environment " + (dir / "grey.exr").string() + " -o " +
+                                (dir / "e.png").string());
+  ASSERT_EQ(fromExr.exitCode, 0) << fromExr.err;
+  EXPECT_EQ(slurp(dir / "e.png"), slurp(dir / "a.png"));
+  {
+    std::ofstream(dir / "cut.exr", std::ios::binary) << slurp(dir / "grey.exr").substr(0, 40);
+  }
+  const RunResult cut = run("render --environment " + (dir / "cut.exr").string() + " -o " + (dir / "m.png").string());
+  EXPECT_EQ(cut.exitCode, 2);
+  EXPECT_NE(cut.err.find("cut.exr: not a readable OpenEXR image"), std::string::npos) << cut.err;
+
   const RunResult missing = run("render --environment " + (dir / "none.hdr").string() + " -o " + (dir / "m.png").string());
   EXPECT_EQ(missing.exitCode, 2);
-  EXPECT_NE(missing.err.find("--environment: expected a readable Radiance .hdr image"), std::string::npos) << missing.err;
+  EXPECT_NE(missing.err.find("--environment: expected a readable Radiance .hdr or OpenEXR .exr image"), std::string::npos) << missing.err;
   const RunResult badBackground = run("render" + env + " --environment-background blury -o " + (dir / "m.png").string());
   EXPECT_EQ(badBackground.exitCode, 2);
   EXPECT_NE(badBackground.err.find("blurred"), std::string::npos) << badBackground.err;

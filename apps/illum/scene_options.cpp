@@ -430,7 +430,7 @@ void applyEnvironmentOptions(const SceneOptions& o, Scene& scene, bool preview) 
     try {
       scene.rayTracing.environmentMap = EnvironmentMapFile::open(o.environment, o.limits);
     } catch (const InputError& e) {
-      throw InputError(std::string("--environment: expected a readable Radiance .hdr image, \"studio\" or \"none\"; ") +
+      throw InputError(std::string("--environment: expected a readable Radiance .hdr or OpenEXR .exr image, \"studio\" or \"none\"; ") +
                        e.what());
     }
     scene.files.push_back(o.environment);

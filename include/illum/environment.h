@@ -17,8 +17,9 @@ namespace illum {
 class EnvironmentMap {
  public:
   EnvironmentMap(int width, int height, const std::vector<Vec3>& texels);
-  // Decodes a Radiance .hdr (RGBE) file's bytes with stb_image, after checkRadianceHdr. Throws
-  // InputError naming `name`.
+  // Decodes a Radiance .hdr (RGBE) file's bytes with stb_image, after checkRadianceHdr, or an
+  // OpenEXR file's R, G and B (known by its magic number) with OpenEXR, its size checked against
+  // the limits before any pixel is read. Throws InputError naming `name`.
   static EnvironmentMap decode(const std::string& bytes, const std::string& name, const Limits& limits);
   // Reads `path` through the input gate (regular files only, sized before reading), then decode().
   static EnvironmentMap load(const std::filesystem::path& path, const Limits& limits);

@@ -3,6 +3,11 @@
 
 #include "core/input_file.h"
 
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfIO.h>
+#include <ImfInputFile.h>
 #include <stb_image.h>
 
 #include <algorithm>
@@ -52,6 +57,88 @@ class HdrReader {
   const std::string& name_;
   std::size_t pos_ = 0;
 };
+
+// OpenEXR's magic number: the first four bytes of every EXR file.
+bool isOpenExr(const std::string& bytes) {
+  return bytes.size() >= 4 && std::uint8_t(bytes[0]) == 0x76 && std::uint8_t(bytes[1]) == 0x2f &&
+         std::uint8_t(bytes[2]) == 0x31 && std::uint8_t(bytes[3]) == 0x01;
+}
+
+// An Imf::IStream over bytes already read through the input gate.
+class ExrBytes final : public Imf::IStream {
+ public:
+  ExrBytes(const std::string& bytes, const std::string& name) : Imf::IStream(name.c_str()), bytes_(bytes) {}
+  bool read(char c[], int n) override {
+    if (n < 0 || position_ + std::uint64_t(n) > bytes_.size()) throw std::runtime_error("the file ends early");
+    std::memcpy(c, bytes_.data() + position_, std::size_t(n));
+    position_ += std::uint64_t(n);
+    return position_ < bytes_.size();
+  }
+  uint64_t tellg() override { return position_; }
+  void seekg(uint64_t pos) override { position_ = pos; }
+
+ private:
+  const std::string& bytes_;
+  std::uint64_t position_ = 0;
+};
+
+// An OpenEXR map's size from its header, refused unless it has R, G and B channels and at most
+// limits.maxPixels pixels (checked before any pixel is read).
+HdrSize checkOpenExrHeader(const Imf::Header& header, const std::string& name, const Limits& limits) {
+  const Imath::Box2i window = header.dataWindow();
+  const std::int64_t w = std::int64_t(window.max.x) - window.min.x + 1, h = std::int64_t(window.max.y) - window.min.y + 1;
+  if (w <= 0 || h <= 0) throw InputError(name + ": an OpenEXR environment map of no pixels");
+  if (std::uint64_t(w) * std::uint64_t(h) > limits.maxPixels)
+    throw InputError(name + ": an OpenEXR environment map of " + std::to_string(w) + "×" + std::to_string(h) +
+                     " pixels, more than the limit of " + std::to_string(limits.maxPixels) + " (raise it with --max-pixels)");
+  for (const char* c : {"R", "G", "B"})
+    if (!header.channels().findChannel(c))
+      throw InputError(name + ": an OpenEXR environment map needs R, G and B channels; it has no " + c);
+  return {int(w), int(h)};
+}
+
+HdrSize checkOpenExr(const std::string& bytes, const std::string& name, const Limits& limits) {
+  try {
+    ExrBytes stream(bytes, name);
+    Imf::InputFile file(stream);
+    return checkOpenExrHeader(file.header(), name, limits);
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw InputError(name + ": not a readable OpenEXR image: " + e.what());
+  }
+}
+
+// The map's R, G and B as floats, rows top to bottom.
+std::shared_ptr<const float> decodeOpenExr(const std::string& bytes, const std::string& name, const Limits& limits,
+                                           HdrSize& size) {
+  try {
+    ExrBytes stream(bytes, name);
+    Imf::InputFile file(stream);
+    size = checkOpenExrHeader(file.header(), name, limits);
+    const Imath::Box2i window = file.header().dataWindow();
+    std::shared_ptr<float> rgb(new float[3 * std::size_t(size.width) * std::size_t(size.height)](),
+                               std::default_delete<float[]>());
+    Imf::FrameBuffer frame;
+    // Slices addressed from the data window's origin, as OpenEXR expects.
+    char* origin = reinterpret_cast<char*>(rgb.get()) -
+                   (std::ptrdiff_t(window.min.x) + std::ptrdiff_t(window.min.y) * size.width) * std::ptrdiff_t(3 * sizeof(float));
+    const char* names[3] = {"R", "G", "B"};
+    for (int c = 0; c < 3; ++c)
+      frame.insert(names[c], Imf::Slice(Imf::FLOAT, origin + c * sizeof(float), 3 * sizeof(float),
+                                        std::size_t(3) * sizeof(float) * std::size_t(size.width)));
+    file.setFrameBuffer(frame);
+    file.readPixels(window.min.y, window.max.y);
+    float* p = rgb.get();
+    for (std::size_t i = 0; i < 3 * std::size_t(size.width) * std::size_t(size.height); ++i)
+      if (!std::isfinite(p[i]) || p[i] < 0) p[i] = 0;  // radiance is finite and never negative
+    return rgb;
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw InputError(name + ": cannot decode the OpenEXR environment map: " + e.what());
+  }
+}
 
 }  // namespace
 
@@ -113,6 +200,11 @@ EnvironmentMap::EnvironmentMap(int width, int height, const std::vector<Vec3>& t
 }
 
 EnvironmentMap EnvironmentMap::decode(const std::string& bytes, const std::string& name, const Limits& limits) {
+  if (isOpenExr(bytes)) {
+    HdrSize exrSize;
+    std::shared_ptr<const float> rgb = decodeOpenExr(bytes, name, limits, exrSize);
+    return EnvironmentMap(exrSize.width, exrSize.height, std::move(rgb));
+  }
   const HdrSize size = checkRadianceHdr(bytes, name, limits);
   int w = 0, h = 0, channels = 0;
   float* data = stbi_loadf_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), int(bytes.size()), &w, &h, &channels, 3);
@@ -128,7 +220,9 @@ EnvironmentMap EnvironmentMap::decode(const std::string& bytes, const std::strin
 namespace {
 
 // A Radiance file is at most 4 bytes a pixel plus its header.
-std::uint64_t largestHdrFile(const Limits& limits) { return 4 * limits.maxPixels + (1 << 16); }
+// A map's file is at most its pixels' bytes: RGBE's four, or an uncompressed OpenEXR's 32-bit RGBA
+// with its line offsets.
+std::uint64_t largestHdrFile(const Limits& limits) { return 24 * limits.maxPixels + (1 << 16); }
 
 }  // namespace
 
@@ -153,7 +247,8 @@ std::shared_ptr<const EnvironmentMapFile> EnvironmentMapFile::open(const std::fi
   file->path_ = path;
   file->bytes_ = readInputFile(path, largestHdrFile(limits), {"environment map", "--max-pixels"});
   file->limits_ = limits;
-  file->size_ = checkRadianceHdr(file->bytes_, path.string(), limits);
+  file->size_ = isOpenExr(file->bytes_) ? checkOpenExr(file->bytes_, path.string(), limits)
+                                        : checkRadianceHdr(file->bytes_, path.string(), limits);
   return file;
 }
 

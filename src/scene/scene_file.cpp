@@ -556,7 +556,7 @@ Scene parseScene(const std::string& text, const std::string& name, const std::fi
       s.rayTracing.environmentMap = EnvironmentMapFile::open(file, limits);
       s.files.push_back(file);
     } catch (const InputError& e) {
-      j.at("environment_map").fail(std::string("expected a readable Radiance .hdr image; ") + e.what());
+      j.at("environment_map").fail(std::string("expected a readable Radiance .hdr or OpenEXR .exr image; ") + e.what());
     }
     s.rayTracing.environment = Color3(1);
   }
