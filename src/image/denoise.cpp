@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdlib>
+#include <memory>
 #include <vector>
 
 #ifndef ILLUM_DENOISE_ONCE
@@ -35,11 +36,28 @@ constexpr float kFarNormal = 1e10f;
 // and a tap kPad to its right still ends inside its own row (and inside the planes at the last).
 constexpr int kVectorSlack = 64;
 
-// The planes the passes read and write, each padded by kPad on every side.
-struct Planes {
+// A plane of floats padded by kPad on every side, left uninitialised until its rows are written
+// (in parallel: the first touch of its pages is shared by the threads, and nothing is zeroed twice).
+struct Plane {
+  std::unique_ptr<float[]> values;
+  float* data() { return values.get(); }
+  const float* data() const { return values.get(); }
+};
+
+struct Layout {
   int width, height, stride;
-  std::vector<float> color[3], luminance, normal[3], albedo[3], variance;
   std::size_t at(int x, int y) const { return std::size_t(y + kPad) * std::size_t(stride) + std::size_t(x + kPad); }
+  std::size_t size() const { return std::size_t(stride) * std::size_t(height + 2 * kPad); }
+};
+
+// What a pass reads and writes: the colour and its variance.
+struct Planes {
+  Plane color[3], variance;
+};
+
+// What guides every pass: the first hit's normal and albedo.
+struct Guides {
+  Plane normal[3], albedo[3];
 };
 
 }  // namespace
@@ -68,8 +86,8 @@ HWY_INLINE V ExpNegative(D d, V x) {
 }
 
 // One pass over rows [y0, y1): `in` filtered into `out` (colour and variance planes), taps `step`
-// pixels apart.
-void FilterRows(const Planes& in, Planes& out, int step, int y0, int y1) {
+// pixels apart, the luminance of each tap computed from its colour.
+void FilterRows(const Layout& layout, const Guides& guides, const Planes& in, Planes& out, int step, int y0, int y1) {
   const hn::ScalableTag<float> d;
   using V = hn::VFromD<decltype(d)>;
   const int lanes = int(hn::Lanes(d));
@@ -83,28 +101,29 @@ void FilterRows(const Planes& in, Planes& out, int step, int y0, int y1) {
   };
   const V kR = hn::Set(d, 0.2126f), kG = hn::Set(d, 0.7152f), kB = hn::Set(d, 0.0722f);
   const auto luminanceOf = [&](const V (&c)[3]) { return hn::Add(hn::Add(hn::Mul(kR, c[0]), hn::Mul(kG, c[1])), hn::Mul(kB, c[2])); };
+  const std::ptrdiff_t stride = layout.stride;
   for (int y = y0; y < y1; ++y)
-    for (int x = 0; x < in.width; x += lanes) {  // the last vector's rest lands in the padding
-      const std::size_t p = in.at(x, y);
+    for (int x = 0; x < layout.width; x += lanes) {  // the last vector's rest lands in the padding
+      const std::size_t p = layout.at(x, y);
       V c[3], n[3], a[3];
       for (int k = 0; k < 3; ++k) {
         c[k] = hn::LoadU(d, in.color[k].data() + p);
-        n[k] = hn::LoadU(d, in.normal[k].data() + p);
-        a[k] = hn::LoadU(d, in.albedo[k].data() + p);
+        n[k] = hn::LoadU(d, guides.normal[k].data() + p);
+        a[k] = hn::LoadU(d, guides.albedo[k].data() + p);
       }
-      const V l = hn::LoadU(d, in.luminance.data() + p);
+      const V l = luminanceOf(c);
       const V invColor2 = hn::Div(hn::Set(d, 1.0f), hn::Add(hn::Mul(sigmaColor2, hn::LoadU(d, in.variance.data() + p)), epsilon));
       V sumW = hn::Zero(d), sumV = hn::Zero(d), sum[3] = {hn::Zero(d), hn::Zero(d), hn::Zero(d)};
       for (int dy = -2; dy <= 2; ++dy)
         for (int dx = -2; dx <= 2; ++dx) {
-          const std::size_t q = std::size_t(std::ptrdiff_t(p) + std::ptrdiff_t(dy * step) * in.stride + dx * step);
+          const std::size_t q = std::size_t(std::ptrdiff_t(p) + std::ptrdiff_t(dy * step) * stride + dx * step);
           V qc[3], dn = hn::Zero(d), da = hn::Zero(d);
           for (int k = 0; k < 3; ++k) {
             qc[k] = hn::LoadU(d, in.color[k].data() + q);
-            dn = hn::Add(dn, squared(n[k], hn::LoadU(d, in.normal[k].data() + q)));
-            da = hn::Add(da, squared(a[k], hn::LoadU(d, in.albedo[k].data() + q)));
+            dn = hn::Add(dn, squared(n[k], hn::LoadU(d, guides.normal[k].data() + q)));
+            da = hn::Add(da, squared(a[k], hn::LoadU(d, guides.albedo[k].data() + q)));
           }
-          const V dc = squared(l, hn::LoadU(d, in.luminance.data() + q));
+          const V dc = squared(l, luminanceOf(qc));
           const V e = hn::Add(hn::Add(hn::Mul(dc, invColor2), hn::Mul(dn, invNormal2)), hn::Mul(da, invAlbedo2));
           const V w = hn::Mul(hn::Set(d, kB3[dy + 2] * kB3[dx + 2]), ExpNegative(d, hn::Neg(e)));
           sumW = hn::Add(sumW, w);
@@ -118,7 +137,6 @@ void FilterRows(const Planes& in, Planes& out, int step, int y0, int y1) {
         filtered[k] = hn::Mul(sum[k], inv);
         hn::StoreU(filtered[k], d, out.color[k].data() + p);
       }
-      hn::StoreU(luminanceOf(filtered), d, out.luminance.data() + p);
       hn::StoreU(hn::Mul(sumV, hn::Mul(inv, inv)), d, out.variance.data() + p);
     }
 }
@@ -133,62 +151,67 @@ HWY_EXPORT(FilterRows);
 
 void denoise(const DenoiseInput& in, std::span<float> out) {
   const int w = in.width, h = in.height;
-  const std::size_t pixels = std::size_t(w) * std::size_t(h);
+  const Layout layout{w, h, w + 2 * kPad + kVectorSlack};
+  const std::size_t size = layout.size();
   Planes planes[2];
-  for (Planes& p : planes) {
-    p.width = w, p.height = h, p.stride = w + 2 * kPad + kVectorSlack;
-    const std::size_t size = std::size_t(p.stride) * std::size_t(h + 2 * kPad);
-    for (int k = 0; k < 3; ++k) p.color[k].assign(size, 0.0f);
-    p.luminance.assign(size, 0.0f);
-    p.variance.assign(size, 0.0f);
-  }
-  // The guides (shared by both sets of planes: only colour and variance change from pass to pass).
-  Planes& first = planes[0];
-  const std::size_t size = first.color[0].size();
-  for (int k = 0; k < 3; ++k) first.normal[k].assign(size, kFarNormal), first.albedo[k].assign(size, 0.0f);
-  std::vector<float> divisor(pixels * 3);  // the albedo divided out (1 where it is near black)
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      const std::size_t i = std::size_t(y) * std::size_t(w) + std::size_t(x), at = first.at(x, y);
-      for (int k = 0; k < 3; ++k) {
-        const float a = in.albedo[3 * i + std::size_t(k)];
-        divisor[3 * i + std::size_t(k)] = demodulationOf(a);
-        first.color[k][at] = in.color[4 * i + std::size_t(k)] / divisor[3 * i + std::size_t(k)];
-        first.normal[k][at] = in.normal[3 * i + std::size_t(k)];
-        first.albedo[k][at] = a;
-      }
-      first.luminance[at] = 0.2126f * first.color[0][at] + 0.7152f * first.color[1][at] + 0.0722f * first.color[2][at];
-    }
-  // The variance estimated from a pixel's own samples is noisy itself: blurred 3×3 (1 2 1) first,
+  Guides guides;
+  for (Planes& p : planes)
+    for (Plane* plane : {&p.color[0], &p.color[1], &p.color[2], &p.variance}) plane->values.reset(new float[size]);
+  for (int k = 0; k < 3; ++k) guides.normal[k].values.reset(new float[size]), guides.albedo[k].values.reset(new float[size]);
+  std::vector<float> divisor(std::size_t(w) * std::size_t(h) * 3);  // the albedo divided out (1 where it is near black)
+  // Every padded row, in parallel: the padding's colour 0 and its normal so far from any unit
+  // normal that a tap there weighs exactly 0; inside, the demodulated colour, the guides, and the
+  // variance estimated from a pixel's own samples, which is noisy itself: blurred 3×3 (1 2 1)
   // within the picture.
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      float sum = 0, weight = 0;
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-          const int qx = x + dx, qy = y + dy;
-          if (qx < 0 || qy < 0 || qx >= w || qy >= h) continue;
-          const float k = float((2 - std::abs(dx)) * (2 - std::abs(dy)));
-          sum += k * in.variance[std::size_t(qy) * std::size_t(w) + std::size_t(qx)];
-          weight += k;
+  tbb::parallel_for(tbb::blocked_range<int>(-kPad, h + kPad, 8), [&](const tbb::blocked_range<int>& rows) {
+    for (int y = rows.begin(); y < rows.end(); ++y) {
+      const std::size_t row = std::size_t(y + kPad) * std::size_t(layout.stride);
+      for (Planes& p : planes)
+        for (Plane* plane : {&p.color[0], &p.color[1], &p.color[2], &p.variance})
+          std::fill_n(plane->data() + row, layout.stride, 0.0f);
+      for (int k = 0; k < 3; ++k) {
+        std::fill_n(guides.normal[k].data() + row, layout.stride, kFarNormal);
+        std::fill_n(guides.albedo[k].data() + row, layout.stride, 0.0f);
+      }
+      if (y < 0 || y >= h) continue;
+      for (int x = 0; x < w; ++x) {
+        const std::size_t i = std::size_t(y) * std::size_t(w) + std::size_t(x), at = layout.at(x, y);
+        for (int k = 0; k < 3; ++k) {
+          const float a = in.albedo[3 * i + std::size_t(k)];
+          divisor[3 * i + std::size_t(k)] = demodulationOf(a);
+          planes[0].color[k].data()[at] = in.color[4 * i + std::size_t(k)] / divisor[3 * i + std::size_t(k)];
+          guides.normal[k].data()[at] = in.normal[3 * i + std::size_t(k)];
+          guides.albedo[k].data()[at] = a;
         }
-      first.variance[first.at(x, y)] = sum / weight;
+        float sum = 0, weight = 0;
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dx = -1; dx <= 1; ++dx) {
+            const int qx = x + dx, qy = y + dy;
+            if (qx < 0 || qy < 0 || qx >= w || qy >= h) continue;
+            const float k = float((2 - std::abs(dx)) * (2 - std::abs(dy)));
+            sum += k * in.variance[std::size_t(qy) * std::size_t(w) + std::size_t(qx)];
+            weight += k;
+          }
+        planes[0].variance.data()[at] = sum / weight;
+      }
     }
-  for (int k = 0; k < 3; ++k) planes[1].normal[k] = first.normal[k], planes[1].albedo[k] = first.albedo[k];
+  });
   for (int pass = 0; pass < kPasses; ++pass) {
     const Planes& from = planes[pass % 2];
     Planes& to = planes[(pass + 1) % 2];
     tbb::parallel_for(tbb::blocked_range<int>(0, h, 8), [&](const tbb::blocked_range<int>& rows) {
-      HWY_DYNAMIC_DISPATCH(FilterRows)(from, to, 1 << pass, rows.begin(), rows.end());
+      HWY_DYNAMIC_DISPATCH(FilterRows)(layout, guides, from, to, 1 << pass, rows.begin(), rows.end());
     });
   }
   const Planes& last = planes[kPasses % 2];
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      const std::size_t i = std::size_t(y) * std::size_t(w) + std::size_t(x), at = last.at(x, y);
-      for (int k = 0; k < 3; ++k) out[4 * i + std::size_t(k)] = last.color[k][at] * divisor[3 * i + std::size_t(k)];
-      out[4 * i + 3] = in.color[4 * i + 3];
-    }
+  tbb::parallel_for(tbb::blocked_range<int>(0, h, 8), [&](const tbb::blocked_range<int>& rows) {
+    for (int y = rows.begin(); y < rows.end(); ++y)
+      for (int x = 0; x < w; ++x) {
+        const std::size_t i = std::size_t(y) * std::size_t(w) + std::size_t(x), at = layout.at(x, y);
+        for (int k = 0; k < 3; ++k) out[4 * i + std::size_t(k)] = last.color[k].data()[at] * divisor[3 * i + std::size_t(k)];
+        out[4 * i + 3] = in.color[4 * i + 3];
+      }
+  });
 }
 
 }  // namespace illum
