@@ -8,7 +8,11 @@
 #include <csignal>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <list>
+#include <sstream>
+#include <string>
 #include <thread>
 
 #include <sys/wait.h>
@@ -35,12 +39,36 @@ TEST(Isolate, HandsBackWhatTheWorkWrote) {
 
 // The outcome comes as soon as the child's result is whole, before the child has finished
 // exiting; the children left exiting are reaped when the next one starts: none accumulates.
+// This process's children that have not exited yet (not zombies), from /proc.
+int runningChildren() {
+  int running = 0;
+  for (const auto& entry : std::filesystem::directory_iterator("/proc")) {
+    std::ifstream stat(entry.path() / "stat");
+    std::string line;
+    if (!std::getline(stat, line)) continue;
+    const auto close = line.rfind(')');  // the command name may hold spaces and parentheses
+    if (close == std::string::npos) continue;
+    std::istringstream rest(line.substr(close + 2));
+    char state = 0;
+    int parent = 0;
+    rest >> state >> parent;
+    if (parent == ::getpid() && state != 'Z') ++running;
+  }
+  return running;
+}
+
+// Waits (up to 20 s, however busy the machine) until every child has exited.
+void waitForChildrenToExit() {
+  for (int i = 0; i < 2000 && runningChildren() > 0; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  ASSERT_EQ(runningChildren(), 0);
+}
+
 TEST(Isolate, ChildrenLeftExitingAreReaped) {
   for (int i = 0; i < 20; ++i)
     ASSERT_EQ(runIsolated([](IsolatedWriter& w) { w.write("x", 1); }, smallLimits()).kind, Kind::Finished);
-  std::this_thread::sleep_for(std::chrono::milliseconds(300));  // every one of them has exited
+  waitForChildrenToExit();
   ASSERT_EQ(runIsolated([](IsolatedWriter& w) { w.write("y", 1); }, smallLimits()).kind, Kind::Finished);
-  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  waitForChildrenToExit();
   // Only the last child is left to reap: the twenty were reaped when it started.
   int status = 0, zombies = 0;
   while (::waitpid(-1, &status, WNOHANG) > 0) ++zombies;
