@@ -69,10 +69,11 @@ TEST(Isolate, ChildrenLeftExitingAreReaped) {
   waitForChildrenToExit();
   ASSERT_EQ(runIsolated([](IsolatedWriter& w) { w.write("y", 1); }, smallLimits()).kind, Kind::Finished);
   waitForChildrenToExit();
-  // Only the last child is left to reap: the twenty were reaped when it started.
+  // At most the last child is left to reap (none, when it had exited before its result was
+  // taken): the twenty were reaped when it started.
   int status = 0, zombies = 0;
   while (::waitpid(-1, &status, WNOHANG) > 0) ++zombies;
-  EXPECT_EQ(zombies, 1);
+  EXPECT_LE(zombies, 1);
 }
 
 TEST(Isolate, InputErrorIsARefusalWithItsMessage) {
