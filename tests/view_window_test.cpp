@@ -80,6 +80,13 @@ TEST_F(ViewWindow, KeysToggleWhatTheOptionsToggle) {
   EXPECT_EQ(crop(v->waitFor([&](const Image& s) { return crop(s, 320, 200).rgba == edges.rgba; }), 320, 200).rgba, edges.rgba);
   v->key("e");
   EXPECT_EQ(crop(v->waitFor([&](const Image& s) { return crop(s, 320, 200).rgba == plain.rgba; }), 320, 200).rgba, plain.rgba);
+  // F: environment lighting, as --environment studio draws it (the scene has no map of its own).
+  const Image studio = rendered(dir, scene.string() + " --environment studio");
+  ASSERT_NE(studio.rgba, plain.rgba);
+  v->key("f");
+  EXPECT_EQ(crop(v->waitFor([&](const Image& s) { return crop(s, 320, 200).rgba == studio.rgba; }), 320, 200).rgba, studio.rgba);
+  v->key("f");
+  EXPECT_EQ(crop(v->waitFor([&](const Image& s) { return crop(s, 320, 200).rgba == plain.rgba; }), 320, 200).rgba, plain.rgba);
   // A: 8 samples, as --samples 8.
   const Image smooth = rendered(dir, scene.string() + " --samples 8");
   v->key("a");
