@@ -103,7 +103,7 @@ HWY_INLINE Vec3L<V> Prefiltered(D d, const ImageLight& light, const Vec3L<V>& di
   const V level = hn::Min(hn::Max(roughness, hn::Zero(d)), hn::Set(d, Real(1))) * top;
   const V l0f = hn::Min(hn::Floor(level), top);
   const V f = level - l0f;
-  const auto l0 = hn::ConvertTo(di, l0f);
+  const auto l0 = hn::Min(hn::Max(hn::ConvertTo(di, l0f), hn::Zero(di)), hn::Set(di, ImageLight::kLevels - 1));
   const auto l1 = hn::Min(l0 + hn::Set(di, 1), hn::Set(di, ImageLight::kLevels - 1));
   const Vec3L<V> a = OctahedralTexel(d, light, l0, u, v);
   if (hn::AllTrue(d, f == hn::Zero(d))) return a;
@@ -120,7 +120,10 @@ HWY_INLINE void SplitSum(D d, V NoV, V roughness, V& A, V& B) {
   const V x = hn::Min(hn::Max(NoV, zero), one) * top, y = hn::Min(hn::Max(roughness, zero), one) * top;
   const V x0f = hn::Min(hn::Floor(x), hn::Set(d, Real(n - 2))), y0f = hn::Min(hn::Floor(y), hn::Set(d, Real(n - 2)));
   const V fx = x - x0f, fy = y - y0f;
-  const auto i00 = hn::ConvertTo(di, y0f) * hn::Set(di, n) + hn::ConvertTo(di, x0f);
+  // Clamped as integers too, so that no lane reads outside the table whatever it holds (a NaN).
+  const auto last = hn::Set(di, n - 2), none = hn::Zero(di);
+  const auto x0i = hn::Min(hn::Max(hn::ConvertTo(di, x0f), none), last), y0i = hn::Min(hn::Max(hn::ConvertTo(di, y0f), none), last);
+  const auto i00 = y0i * hn::Set(di, n) + x0i;
   const auto i10 = i00 + hn::Set(di, 1), i01 = i00 + hn::Set(di, n), i11 = i01 + hn::Set(di, 1);
   const V w00 = (one - fx) * (one - fy), w10 = fx * (one - fy), w01 = (one - fx) * fy, w11 = fx * fy;
   const float* a = splitSumTable(0);
