@@ -1,5 +1,5 @@
-// Textures: an RGBA image with its mipmap chain, sampled like GL_LINEAR_MIPMAP_LINEAR with
-// GL_REPEAT. Every level is kept as GL keeps an RGBA8 texture, 8 bits a channel; the sampler
+// Textures: an RGBA image with its mipmap chain, sampled like GL_LINEAR_MIPMAP_LINEAR with the
+// texture's wrap modes (GL_REPEAT unless the model's sampler says otherwise). Every level is kept as GL keeps an RGBA8 texture, 8 bits a channel; the sampler
 // decodes each texel it reads through a table (value/255, or sRGB to linear), so a 4096² texture
 // costs its 64 MiB and a third more for the mipmaps.
 #pragma once
@@ -7,6 +7,7 @@
 #include <illum/image.h>
 #include <illum/real.h>
 
+#include <cstdint>
 #include <vector>
 
 namespace illum {
@@ -16,11 +17,21 @@ namespace illum {
 // textures), decoded to linear before filtering. Alpha is always linear.
 enum class TexelEncoding { Linear, Srgb };
 
+// What a texture coordinate outside [0, 1] reads, per axis (GL's TEXTURE_WRAP_S and _T, glTF's
+// sampler wrapS and wrapT): the texture repeated, repeated mirrored every other time, or its edge
+// texels stretched on (OpenGL 4.6, section 8.14.2, applied to the texel indices of GL_LINEAR).
+enum class TextureWrap : std::uint8_t { Repeat, MirroredRepeat, ClampToEdge };
+struct TextureWraps {
+  TextureWrap s = TextureWrap::Repeat, t = TextureWrap::Repeat;
+  bool operator==(const TextureWraps&) const = default;
+};
+
 class Texture {
  public:
   // Takes the image's bytes as the base level (moved in, not copied, when given an rvalue).
-  explicit Texture(Image image, TexelEncoding encoding = TexelEncoding::Linear);
+  explicit Texture(Image image, TexelEncoding encoding = TexelEncoding::Linear, TextureWraps wraps = {});
   TexelEncoding encoding() const { return encoding_; }
+  TextureWraps wraps() const { return wraps_; }
 
   int width() const { return levels_.front().width; }
   int height() const { return levels_.front().height; }
@@ -51,6 +62,7 @@ class Texture {
   const Real* decode_;  // 256 entries: a colour byte's value (alpha is always byte/255)
   bool hasTransparency_ = false;
   TexelEncoding encoding_ = TexelEncoding::Linear;
+  TextureWraps wraps_;
 };
 
 }  // namespace illum

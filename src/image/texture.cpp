@@ -63,8 +63,10 @@ Image halved(const Image& prev, TexelEncoding encoding) {
 
 }  // namespace
 
-Texture::Texture(Image image, TexelEncoding encoding)
-    : decode_(encoding == TexelEncoding::Srgb ? tables().srgb.data() : tables().linear.data()), encoding_(encoding) {
+Texture::Texture(Image image, TexelEncoding encoding, TextureWraps wraps)
+    : decode_(encoding == TexelEncoding::Srgb ? tables().srgb.data() : tables().linear.data()),
+      encoding_(encoding),
+      wraps_(wraps) {
   if (image.width <= 0 || image.height <= 0 || image.rgba.size() < std::size_t(image.width) * std::size_t(image.height) * 4) {
     image = Image(std::max(image.width, 1), std::max(image.height, 1));
     std::fill(image.rgba.begin(), image.rgba.end(), std::uint8_t(255));  // white: modulates nothing
@@ -87,19 +89,48 @@ Vec4 Texture::texel(const Level& level, int x, int glRow) const {
   return Vec4(decode_[p[0]], decode_[p[1]], decode_[p[2]], tables().linear[p[3]]);
 }
 
+namespace {
+
+// GL_LINEAR along one axis of n texels: the two texels around c·n − ½ and the second one's weight,
+// the indices wrapped as `wrap` says. The coordinate is first brought into one period (repeat:
+// [0, 1), mirrored: [0, 2), clamped: [0, 1]), which changes no texel and keeps the indices small.
+struct TexelPair {
+  int i0, i1;
+  Real weight;
+};
+
+TexelPair texelPair(Real c, int n, TextureWrap wrap) {
+  const Real period = wrap == TextureWrap::MirroredRepeat ? Real(2) : Real(1);
+  const Real reduced = wrap == TextureWrap::ClampToEdge ? std::clamp(c, Real(0), Real(1))
+                       : wrap == TextureWrap::Repeat    ? c - std::floor(c)
+                                                        : c - period * std::floor(c / period);
+  const Real x = reduced * Real(n) - Real(0.5);
+  const Real fx = std::floor(x);
+  const int i = int(fx);
+  // The reduced coordinate puts i in [−1, period·n − 1]: its neighbour is at most one texel out.
+  const auto wrapped = [&](int k) {
+    switch (wrap) {
+      case TextureWrap::Repeat: return k < 0 ? k + n : k >= n ? k - n : k;
+      case TextureWrap::ClampToEdge: return std::clamp(k, 0, n - 1);
+      case TextureWrap::MirroredRepeat: {
+        const int m = k < 0 ? k + 2 * n : k >= 2 * n ? k - 2 * n : k;
+        return m < n ? m : 2 * n - 1 - m;
+      }
+    }
+    return 0;
+  };
+  return {wrapped(i), wrapped(i + 1), x - fx};
+}
+
+}  // namespace
+
 Vec4 Texture::sampleLevel(const Vec2& uv, int level) const {
   const Level& l = levels_[std::size_t(std::clamp(level, 0, levelCount() - 1))];
-  // GL_REPEAT, then GL_LINEAR: the four texels around (u·w − 0.5, v·h − 0.5).
-  const Real u = uv.x - std::floor(uv.x), v = uv.y - std::floor(uv.y);
-  const Real x = u * Real(l.width) - Real(0.5), y = v * Real(l.height) - Real(0.5);
-  const Real fx = std::floor(x), fy = std::floor(y);
-  const Real ax = x - fx, ay = y - fy;
-  // u, v in [0, 1) put x, y in [−½, n − ½): the neighbours are at most one texel outside.
-  const auto wrap = [](int i, int n) { return i < 0 ? i + n : i >= n ? i - n : i; };
-  const int x0 = wrap(int(fx), l.width), x1 = wrap(int(fx) + 1, l.width);
-  const int y0 = wrap(int(fy), l.height), y1 = wrap(int(fy) + 1, l.height);
-  return (1 - ay) * ((1 - ax) * texel(l, x0, y0) + ax * texel(l, x1, y0)) +
-         ay * ((1 - ax) * texel(l, x0, y1) + ax * texel(l, x1, y1));
+  // The wrap modes, then GL_LINEAR: the four texels around (u·w − 0.5, v·h − 0.5).
+  const TexelPair x = texelPair(uv.x, l.width, wraps_.s), y = texelPair(uv.y, l.height, wraps_.t);
+  const Real ax = x.weight, ay = y.weight;
+  return (1 - ay) * ((1 - ax) * texel(l, x.i0, y.i0) + ax * texel(l, x.i1, y.i0)) +
+         ay * ((1 - ax) * texel(l, x.i0, y.i1) + ax * texel(l, x.i1, y.i1));
 }
 
 Vec4 Texture::sample(const Vec2& uv, Real texelsPerPixel) const {

@@ -1,5 +1,5 @@
 // Texture::sample over SIMD lanes (Highway, included once per target by the kernels that shade
-// textured pixels): GL_LINEAR_MIPMAP_LINEAR with GL_REPEAT, each lane its own uv and footprint,
+// textured pixels): GL_LINEAR_MIPMAP_LINEAR with the texture's wrap modes, each lane its own uv and footprint,
 // with the same operations in the same order as the one-texel sampler (texture.cpp), so every
 // lane's texel is the bits Texture::sample gives. The mip level's log2 is taken per lane with
 // std::log2 (a vector log2 would round differently).
@@ -30,20 +30,34 @@ HWY_INLINE void SampleLevelLanes(D d, const Texture& texture, int levelIndex, V 
   const hn::RebindToUnsigned<D> du;
   const Image& level = texture.level(levelIndex);
   const int width = level.width, height = level.height;
-  // GL_REPEAT, then GL_LINEAR: the four texels around (u·w − 0.5, v·h − 0.5).
+  // The wrap modes, then GL_LINEAR: the four texels around (u·w − 0.5, v·h − 0.5), as texelPair
+  // (texture.cpp) finds them.
   const V half = hn::Set(d, Real(0.5)), one = hn::Set(d, Real(1));
-  const V uf = u - hn::Floor(u), vf = v - hn::Floor(v);
-  const V x = uf * hn::Set(d, Real(width)) - half, y = vf * hn::Set(d, Real(height)) - half;
-  const V fx = hn::Floor(x), fy = hn::Floor(y);
-  const V ax = x - fx, ay = y - fy;
-  const auto wrap = [&](auto i, int n) {
-    const auto vn = hn::Set(di, n);
-    i = hn::IfThenElse(i < hn::Zero(di), i + vn, i);
-    return hn::IfThenElse(hn::Not(i < vn), i - vn, i);
+  const auto pair = [&](V c, int n, TextureWrap wrap, auto& i0, auto& i1, V& weight) {
+    const V two = hn::Set(d, Real(2));
+    const V reduced = wrap == TextureWrap::ClampToEdge ? hn::Min(hn::Max(c, hn::Zero(d)), one)
+                      : wrap == TextureWrap::Repeat    ? c - hn::Floor(c)
+                                                       : c - two * hn::Floor(c / two);
+    const V x = reduced * hn::Set(d, Real(n)) - half;
+    const V fx = hn::Floor(x);
+    weight = x - fx;
+    const auto vn = hn::Set(di, n), last = hn::Set(di, n - 1);
+    const auto wrapped = [&](auto k) {
+      if (wrap == TextureWrap::ClampToEdge) return hn::Min(hn::Max(k, hn::Zero(di)), last);
+      const auto span = wrap == TextureWrap::Repeat ? vn : hn::Set(di, 2 * n);
+      k = hn::IfThenElse(k < hn::Zero(di), k + span, k);
+      k = hn::IfThenElse(hn::Not(k < span), k - span, k);
+      if (wrap == TextureWrap::Repeat) return k;
+      return hn::IfThenElse(k < vn, k, hn::Set(di, 2 * n - 1) - k);
+    };
+    const auto i = hn::ConvertTo(di, fx);
+    i0 = wrapped(i);
+    i1 = wrapped(i + hn::Set(di, 1));
   };
-  const auto ix = hn::ConvertTo(di, fx), iy = hn::ConvertTo(di, fy);
-  const auto x0 = wrap(ix, width), x1 = wrap(ix + hn::Set(di, 1), width);
-  const auto y0 = wrap(iy, height), y1 = wrap(iy + hn::Set(di, 1), height);
+  hn::VFromD<decltype(di)> x0, x1, y0, y1;
+  V ax, ay;
+  pair(u, width, texture.wraps().s, x0, x1, ax);
+  pair(v, height, texture.wraps().t, y0, y1, ay);
   // Texel (x, GL row r) is the image's pixel (x, height − 1 − r); inactive lanes read texel 0.
   const auto activeI = hn::RebindMask(di, active);
   const auto rowStart = [&](auto r) { return (hn::Set(di, height - 1) - r) * hn::Set(di, width); };

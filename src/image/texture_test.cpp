@@ -35,6 +35,25 @@ TEST(Texture, BilinearBetweenTexelsAndRepeat) {
   EXPECT_NEAR(seam.b, 1.0, 1e-6);
 }
 
+// GL_MIRRORED_REPEAT: every other period the texture is read backwards, the edge texel twice at
+// the turn; GL_CLAMP_TO_EDGE: outside [0, 1] the edge texel, and no blend across the seam.
+TEST(Texture, MirroredRepeatAndClampToEdge) {
+  const Texture mirrored(checker2x2(), TexelEncoding::Linear, {TextureWrap::MirroredRepeat, TextureWrap::MirroredRepeat});
+  EXPECT_EQ(mirrored.sampleLevel({1.25, 0.25}, 0), Vec4(1, 1, 1, 1));  // u = 0.75 read backwards: white
+  EXPECT_EQ(mirrored.sampleLevel({1.75, 0.25}, 0), Vec4(0, 0, 1, 1));  // and 0.25: blue
+  EXPECT_EQ(mirrored.sampleLevel({-0.25, 0.25}, 0), Vec4(0, 0, 1, 1));
+  EXPECT_EQ(mirrored.sampleLevel({2.25, 0.25}, 0), mirrored.sampleLevel({0.25, 0.25}, 0));  // period 2
+  EXPECT_EQ(mirrored.sampleLevel({1.0, 0.25}, 0), Vec4(1, 1, 1, 1));  // the turn: the edge texel, unblended
+  EXPECT_EQ(mirrored.sampleLevel({0.25, 1.25}, 0), Vec4(1, 0, 0, 1));  // v too: 1.25 reads 0.75, the top row's red
+  const Texture clamped(checker2x2(), TexelEncoding::Linear, {TextureWrap::ClampToEdge, TextureWrap::Repeat});
+  EXPECT_EQ(clamped.sampleLevel({0.0, 0.25}, 0), Vec4(0, 0, 1, 1));  // no blend with the right column
+  EXPECT_EQ(clamped.sampleLevel({-3.0, 0.25}, 0), Vec4(0, 0, 1, 1));
+  EXPECT_EQ(clamped.sampleLevel({7.0, 0.25}, 0), Vec4(1, 1, 1, 1));
+  EXPECT_EQ(clamped.sampleLevel({1.25, 0.25}, 0), Vec4(1, 1, 1, 1));
+  // Repeat stays what it was: u = 0 blends both columns.
+  EXPECT_NEAR(clamped.sampleLevel({0.25, 0.0}, 0).r, 0.5, 1e-6);  // v repeats: red over blue
+}
+
 // GL pairs rows for the next level from its first row, the image's bottom one: of an odd column of
 // 3 texels, level 1 is the mean of the bottom two, and the top texel is left out.
 TEST(Texture, MipmapRowsPairFromTheBottom) {

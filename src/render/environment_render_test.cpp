@@ -132,9 +132,11 @@ TEST(EnvironmentBackground, TheMapIsShownBehindTheSceneAndTheSceneIsUnchanged) {
   EXPECT_EQ(shown.pixel(0, 0)[0], 255);  // looking up into the sky
   EXPECT_EQ(shown.pixel(0, 40)[0], 0);   // and down under the horizon
   EXPECT_EQ(shown.pixel(0, 0)[3], 255);
-  for (std::size_t i = 0; i < shown.rgba.size(); i += 4)
-    if (plainPerspective.rgba[i + 0] != 26 || plainPerspective.rgba[i + 2] != 77)  // not the background colour
+  for (std::size_t i = 0; i < shown.rgba.size(); i += 4) {
+    if (plainPerspective.rgba[i + 0] != 26 || plainPerspective.rgba[i + 2] != 77) {  // not the background colour
       EXPECT_EQ(shown.rgba[i], plainPerspective.rgba[i]) << "pixel " << i / 4;
+    }
+  }
   // --no-background: the light stays, no picture behind, transparent.
   s.background.a = 0;
   const Image transparent = renderScene(s);

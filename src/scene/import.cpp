@@ -24,6 +24,7 @@
 #include <utility>
 #include <cmath>
 #include <map>
+#include <tuple>
 #include <optional>
 #include <system_error>
 
@@ -188,9 +189,9 @@ FileMaterialValues readMaterial(const aiMaterial& m) {
 
 // A texture named by a material: embedded ("*0" or by file name) or a file found beside the model
 // (texture_lookup.h). Its header is read first: an image larger than --max-pixels is not decoded.
-std::shared_ptr<const Texture> loadTexture(const aiScene& scene, const std::string& name, const fs::path& modelDir,
-                                           std::vector<std::string>& warnings, std::vector<std::string>& files,
-                                           const fs::path& path, const Limits& limits) {
+std::shared_ptr<const Texture> loadTexture(const aiScene& scene, const std::string& name, TextureWraps wraps,
+                                           const fs::path& modelDir, std::vector<std::string>& warnings,
+                                           std::vector<std::string>& files, const fs::path& path, const Limits& limits) {
   const auto warn = [&](const std::string& why) {
     warnings.push_back(path.string() + ": texture \"" + name + "\" " + why + "; rendering untextured");
     return nullptr;
@@ -217,7 +218,7 @@ std::shared_ptr<const Texture> loadTexture(const aiScene& scene, const std::stri
         const aiTexel& t = embedded->pcData[i];
         img.rgba[i * 4] = t.r, img.rgba[i * 4 + 1] = t.g, img.rgba[i * 4 + 2] = t.b, img.rgba[i * 4 + 3] = t.a;
       }
-      return std::make_shared<const Texture>(std::move(img));
+      return std::make_shared<const Texture>(std::move(img), TexelEncoding::Linear, wraps);
     }
   } else {
     const TextureLookup lookup = findTextureFile(name, modelDir);
@@ -239,7 +240,24 @@ std::shared_ptr<const Texture> loadTexture(const aiScene& scene, const std::stri
   Image img(w, h);
   std::copy(data, data + img.rgba.size(), img.rgba.begin());
   stbi_image_free(data);
-  return std::make_shared<const Texture>(std::move(img));
+  return std::make_shared<const Texture>(std::move(img), TexelEncoding::Linear, wraps);
+}
+
+// A material's texture's wrap modes (glTF's sampler, Collada's and FBX's wrap flags, as assimp
+// files them): repeat unless the file says otherwise. assimp's "decal" (nothing outside [0, 1])
+// is read as clamp to edge, which GL's modes come nearest to.
+TextureWraps textureWraps(const aiMaterial& material, aiTextureType type) {
+  const auto wrapOf = [&](const char* key) {
+    int mode = aiTextureMapMode_Wrap;
+    if (material.Get(key, unsigned(type), 0, mode) != AI_SUCCESS) return TextureWrap::Repeat;
+    switch (mode) {
+      case aiTextureMapMode_Mirror: return TextureWrap::MirroredRepeat;
+      case aiTextureMapMode_Clamp:
+      case aiTextureMapMode_Decal: return TextureWrap::ClampToEdge;
+      default: return TextureWrap::Repeat;
+    }
+  };
+  return {wrapOf(_AI_MATKEY_MAPPINGMODE_U_BASE), wrapOf(_AI_MATKEY_MAPPINGMODE_V_BASE)};
 }
 
 // Collects assimp's warnings while one file is read. Some importers repair broken input with no
@@ -460,7 +478,7 @@ ImportedModel importModelInProcess(const fs::path& path, const ImportOptions& op
     MaterialMaps maps;
   };
   std::vector<MaterialTextures> textures;
-  std::map<std::string, std::shared_ptr<const Texture>> textureByName;
+  std::map<std::tuple<std::string, TextureWrap, TextureWrap>, std::shared_ptr<const Texture>> textureByName;
   // PLY and STL carry no materials, and an OBJ without MTL neither: assimp fills in placeholders
   // (white diffuse, specular and ambient) that would wash the picture out; use illum's neutral one.
   const bool formatHasMaterials = ext != ".stl" && ext != ".ply";
@@ -468,14 +486,16 @@ ImportedModel importModelInProcess(const fs::path& path, const ImportOptions& op
     const aiMaterial& am = *scene->mMaterials[i];
     const bool placeholder = !formatHasMaterials || am.GetName() == aiString(AI_DEFAULT_MATERIAL_NAME);
     materials.push_back(placeholder ? defaultModelMaterial() : materialFromFile(readMaterial(am)));
-    // The first texture of the first of `types` the material has, each file loaded once.
+    // The first texture of the first of `types` the material has, with its sampler's wrap modes,
+    // each file loaded once for each pair of modes it is used with.
     const auto texture = [&](std::initializer_list<aiTextureType> types) -> std::shared_ptr<const Texture> {
       aiString name;
       for (aiTextureType type : types) {
         if (am.GetTexture(type, 0, &name) != AI_SUCCESS) continue;
-        auto [it, inserted] = textureByName.try_emplace(name.C_Str(), nullptr);
-        if (inserted) it->second = loadTexture(*scene, name.C_Str(), companionDir, model.warnings, model.files, path,
-                                                 options.limits);
+        const TextureWraps wraps = textureWraps(am, type);
+        auto [it, inserted] = textureByName.try_emplace({name.C_Str(), wraps.s, wraps.t}, nullptr);
+        if (inserted) it->second = loadTexture(*scene, name.C_Str(), wraps, companionDir, model.warnings, model.files,
+                                                 path, options.limits);
         return it->second;
       }
       return nullptr;

@@ -225,6 +225,25 @@ TEST(Import, GltfMapsReachTheObjectInProcessAndIsolated) {
   fs::remove_all(file.parent_path());
 }
 
+// BoxTextured's sampler says MIRRORED_REPEAT across (its u runs 0 to 6 around the box, every
+// other face read backwards) and CLAMP_TO_EDGE up: the texture keeps both, through the child
+// process too.
+TEST(Import, SamplerWrapModesReachTheTexture) {
+  const fs::path file = "/usr/share/assimp/models/glTF2/BoxTextured-glTF/BoxTextured.gltf";
+  for (bool isolated : {false, true}) {
+    const ImportedModel m = isolated ? importModel(file) : importModelInProcess(file);
+    ASSERT_EQ(m.objects.size(), 1u);
+    ASSERT_TRUE(m.objects[0].diffuseTexture);
+    EXPECT_EQ(m.objects[0].diffuseTexture->wraps(),
+              (TextureWraps{TextureWrap::MirroredRepeat, TextureWrap::ClampToEdge}))
+        << isolated;
+  }
+  // Without a sampler's word: repeat, as GL's default.
+  const ImportedModel duck = importModel("/usr/share/assimp/models/Collada/duck.dae");
+  ASSERT_TRUE(duck.objects[0].diffuseTexture);
+  EXPECT_EQ(duck.objects[0].diffuseTexture->wraps(), TextureWraps{});
+}
+
 // Khronos' clear-coat test asset (assimp-testmodels) names every kind of map: its normal-mapped
 // rows, its roughness-striped coating and its emissive labels all arrive.
 TEST(Import, ClearCoatTestAssetHasItsMaps) {

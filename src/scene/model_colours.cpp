@@ -12,7 +12,7 @@ void decodeColourTextures(std::vector<Object>& objects) {
   const auto srgb = [&](std::shared_ptr<const Texture>& t) {
     if (!t || t->encoding() == TexelEncoding::Srgb) return;
     auto [it, inserted] = decoded.try_emplace(t.get(), nullptr);
-    if (inserted) it->second = std::make_shared<const Texture>(t->baseImage(), TexelEncoding::Srgb);
+    if (inserted) it->second = std::make_shared<const Texture>(t->baseImage(), TexelEncoding::Srgb, t->wraps());
     t = it->second;
   };
   for (Object& o : objects) {

@@ -110,6 +110,8 @@ void writeModel(const ImportedModel& model, IsolatedWriter& out) {
     w.value(image.width);
     w.value(image.height);
     w.vector(image.rgba);
+    w.value(std::uint8_t(t->wraps().s));
+    w.value(std::uint8_t(t->wraps().t));
   }
   w.value(std::uint64_t(model.objects.size()));
   for (const Object& o : model.objects) {
@@ -168,7 +170,13 @@ ImportedModel readModel(std::span<const std::uint8_t> bytes) {
     if (image.width <= 0 || image.height <= 0 ||
         image.rgba.size() != std::size_t(image.width) * std::size_t(image.height) * 4)
       Reader::broken();
-    slot = std::make_shared<const Texture>(std::move(image));
+    TextureWraps wraps;
+    for (TextureWrap* wrap : {&wraps.s, &wraps.t}) {
+      const auto mode = r.value<std::uint8_t>();
+      if (mode > std::uint8_t(TextureWrap::ClampToEdge)) Reader::broken();
+      *wrap = TextureWrap(mode);
+    }
+    slot = std::make_shared<const Texture>(std::move(image), TexelEncoding::Linear, wraps);
   }
   model.objects.resize(r.count(bytes.size()));
   for (Object& o : model.objects) {
