@@ -154,11 +154,16 @@ class TracedFrame {
       cone.spread = camera_.pixelWidthAt(1) - camera_.pixelWidthAt(0);
       cone.width = camera_.pixelWidthAt(0);
       if (hit.t >= 0 && drawnTexture(*rays_.mesh(hit.object).object)) {
-        // The rays through the next pixel right and the next one up (GL's window y is up).
+        // The rays through the next pixel right and the next one up (GL's window y is up), as the
+        // rasterizer's derivatives. With many samples a pixel, each sample filters a share of the
+        // pixel only (1/√samples of its side, at least 1/8, as pbrt-v4 scales its camera's ray
+        // differentials): the samples themselves average over the pixel, and a whole pixel's
+        // filter on each would blur the texture over two.
         const Vec2 at = pixelPoint(x, y, s);
+        const Real reach = std::max(Real(0.125), 1 / std::sqrt(Real(samplesPerPixel(scene_))));
         cone.differentials = true;
-        cone.right = camera_.through(at.x + 1, at.y);
-        cone.up = camera_.through(at.x, at.y - 1);
+        cone.right = camera_.through(at.x + reach, at.y);
+        cone.up = camera_.through(at.x, at.y - reach);
       }
       const RayHit* first = hit.t >= 0 ? &hit : nullptr;
       PixelSums& pixel = sums[std::size_t((y - y0) * kTile + (x - x0))];
