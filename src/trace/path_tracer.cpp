@@ -121,8 +121,11 @@ Color4 PathTracer::primary(const Ray& primaryRay, const RayHit* primaryHit, cons
     const Real idealChance = std::clamp(luminance(k), Real(0), Real(1));
     // The denoiser's guides: this surface, unless it is an ideal mirror or glass and nothing else
     // (then what is seen through it); a part mirror reflects k of everything besides its BSDF.
+    // What the surface emits counts as albedo too (up to 1): an emissive map's pattern (glTF's
+    // labels: black base colour, text in the emission) is then a feature the filter keeps, and
+    // is divided out of the radiance it filters instead of blurred with it.
     if (features && idealChance < 1) {
-      features->albedo = (Color3(1) - k) * bsdf.albedo() + k;
+      features->albedo = glm::min((Color3(1) - k) * bsdf.albedo() + k + emission, Color3(1));
       features->normal = N;
       features = nullptr;
     }

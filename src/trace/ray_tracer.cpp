@@ -24,6 +24,10 @@
 namespace illum {
 namespace {
 
+// Whether a ray's hit reads a texture (the diffuse one, or glTF's maps, which a ray always lights
+// per point): its primary rays then carry the next pixels' rays, to filter the texels as GL does.
+bool readsTextures(const Object& object) { return drawnTexture(object) || mapsDrawn(object, true); }
+
 constexpr int kTile = 16;   // pixels on a side of a parallel task
 constexpr int kBlock = 4;   // pixels on a side of a primary ray packet
 
@@ -153,7 +157,7 @@ class TracedFrame {
       RayCone cone;
       cone.spread = camera_.pixelWidthAt(1) - camera_.pixelWidthAt(0);
       cone.width = camera_.pixelWidthAt(0);
-      if (hit.t >= 0 && drawnTexture(*rays_.mesh(hit.object).object)) {
+      if (hit.t >= 0 && readsTextures(*rays_.mesh(hit.object).object)) {
         // The rays through the next pixel right and the next one up (GL's window y is up), as the
         // rasterizer's derivatives. With many samples a pixel, each sample filters a share of the
         // pixel only (1/√samples of its side, at least 1/8, as pbrt-v4 scales its camera's ray
