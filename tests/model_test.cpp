@@ -107,6 +107,27 @@ TEST(ModelScene, APreviewSavedAsASceneDrawsTheSameBytes) {
   }
 }
 
+// Which previews are physically based pictures, and so go through ACES as the path tracer's do:
+// those an environment lights (the studio of glTF's materials, or --environment); classic
+// materials keep GL's clamp; --tone-map says otherwise for any.
+TEST(ModelScene, EnvironmentLitPreviewsAreToneMapped) {
+  TempDir dir;
+  const auto toneMapOf = [&](const std::string& args) {
+    const auto r = runIllum("render " + args + " --resolution 64,48 -o " + (dir / "t.png").string() + " --save-scene " +
+                            (dir / "t.json").string());
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    const std::string json = slurp(dir / "t.json");
+    const std::size_t at = json.find("\"tone_map\": \"");
+    return at == std::string::npos ? std::string("?") : json.substr(at + 13, json.find('"', at + 13) - at - 13);
+  };
+  const std::string box = (kModels / "glTF2/BoxTextured-glTF-Binary/BoxTextured.glb").string();
+  EXPECT_EQ(toneMapOf(box), "aces");
+  EXPECT_EQ(toneMapOf(box + " --environment none"), "none");
+  EXPECT_EQ(toneMapOf(box + " --tone-map reinhard"), "reinhard");
+  EXPECT_EQ(toneMapOf((kModels / "OBJ/spider.obj").string()), "none");
+  EXPECT_EQ(toneMapOf((kModels / "OBJ/spider.obj").string() + " --environment studio"), "aces");
+}
+
 TEST(ModelMaterials, FileColoursAppear) {
   // The engine's cylinder heads are blue in its glTF materials (as GL writes them: sRGB lifts
   // their green towards cyan); the duck is yellow (red+green).

@@ -141,6 +141,26 @@ TEST(PixelChain, ResolveThenDisplayThenTheFile) {
   expectFileBytes({r.out, image}, 500, 300);
 }
 
+// A glTF preview lit by the studio goes through ACES, which the rasterizer applies to each lit
+// colour before it is quantised: the report's total says so, its fragment is the tone-mapped
+// colour's bytes, and its display step is the encoding alone, whose bytes are the file's.
+TEST(PixelChain, ToneMapIsTheFragmentsThenTheEncoding) {
+  TempDir dir;
+  const fs::path out = dir / "box.png";
+  const auto r = runIllum("render /usr/share/assimp/models/glTF2/BoxTextured-glTF-Binary/BoxTextured.glb "
+                          "--samples 1 --debug-pixel 500,300 -o " + out.string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("total (tone map aces, clamped)"), std::string::npos) << r.out;
+  const auto resolved = numbersAfter(r.out, "blending included: bytes", 4);
+  const auto displayed = numbersAfter(r.out, "; the tone map was the fragment's): bytes", 4);
+  ASSERT_EQ(resolved.size(), 4u) << r.out;
+  ASSERT_EQ(displayed.size(), 4u) << r.out;
+  for (int c = 0; c < 3; ++c) EXPECT_EQ(int(displayed[std::size_t(c)]), srgbByte(resolved[std::size_t(c)])) << c;
+  const Image image = readPng(out);
+  for (int c = 0; c < 4; ++c) EXPECT_EQ(int(displayed[std::size_t(c)]), int(image.pixel(500, 300)[c])) << c;
+  expectFileBytes({r.out, image}, 500, 300);
+}
+
 // On the model's silhouette the samples differ (some on the duck, some on the background); the
 // resolve is their mean, channel by channel, as GL's resolve rounds it.
 TEST(PixelChain, EverySampleThenTheirMean) {

@@ -43,8 +43,12 @@ void printChain(std::FILE* out, const Scene& scene, const PixelChain& c, const s
                  c.samples > 1 ? ("the mean of the pixel's " + std::to_string(c.samples) + " samples, blending included").c_str()
                                : "one sample per pixel, blending included",
                  bytes(c.resolved).c_str());
-  std::fprintf(out, "  display (%s): bytes %s%s\n", displayName(scene.display).c_str(), bytes(c.displayed).c_str(),
-               scene.display.identity() ? " (unchanged: the equation's values are the bytes)" : "");
+  // The rasterizer's lit colours took the tone map before they were quantised: its display step
+  // is the encoding alone.
+  const Display display = traced ? scene.display : encodingOnly(scene.display);
+  std::fprintf(out, "  display (%s%s): bytes %s%s\n", displayName(display).c_str(),
+               !traced && scene.display.toneMap != ToneMap::None ? "; the tone map was the fragment's" : "",
+               bytes(c.displayed).c_str(), display.identity() ? " (unchanged: the equation's values are the bytes)" : "");
   for (const std::string& over : c.overlays) std::fprintf(out, "  drawn over it: %s\n", over.c_str());
   const std::array<std::uint8_t, 4> f{file[0], file[1], file[2], file[3]};
   if (c.overlays.empty() && f != c.displayed)
@@ -68,7 +72,10 @@ void printSamples(std::FILE* out, const Scene& scene, const PixelProbe& p) {
 
 // The equation (OpenGL 2.1 §2.14.1) at one point, one light at a time, with each light's geometry;
 // computed by the same accumulateLight the renderer uses. Returns the clamped colour.
-Color4 printEquation(std::FILE* out, const Scene& scene, const Material& material, const Vec3& P, const Vec3& N) {
+// `toneMap`: the rasterizer's, applied to the sum before it is clamped (LightModel::toneMap); the
+// ray tracers tone map the pixel's radiance instead.
+Color4 printEquation(std::FILE* out, const Scene& scene, const Material& material, const Vec3& P, const Vec3& N,
+                     ToneMap toneMap = ToneMap::None) {
   const LightingModel model = modelOf(material, scene.model);
   const Vec3 V = viewerDirection(P, scene.lightModel);
   std::fprintf(out, "  eye space: P = %s, N = %s, V = %s\n", vec(P).c_str(), vec(N).c_str(), vec(V).c_str());
@@ -118,8 +125,9 @@ Color4 printEquation(std::FILE* out, const Scene& scene, const Material& materia
       row(out, name + " specular", d.terms.specular);
   }
   // The sum as the renderer forms it (the lights' shares above may differ from it in the last bit).
-  const Color4 lit = clampedColor(evaluateTerms(lights, scene.lightModel, material, model, surface), material);
-  row(out, "total (clamped)", Color3(lit));
+  const Color4 lit = clampedColor(evaluateTerms(lights, scene.lightModel, material, model, surface), material, toneMap);
+  row(out, toneMap == ToneMap::None ? "total (clamped)" : "total (tone map " + std::string(toString(toneMap)) + ", clamped)",
+      Color3(lit));
   return lit;
 }
 
@@ -163,6 +171,7 @@ PixelChain tracePixelChain(const Scene& scene, int x, int y) {
   bare.labels.clear();
   bare.overlays.axes = false;
   bare.display = Display{};
+  if (scene.renderer == RendererKind::Raster) bare.display.toneMap = scene.display.toneMap;  // the fragments'
   Renderer renderer;
   Image framebuffer;
   renderer.render(bare, framebuffer);
@@ -171,7 +180,7 @@ PixelChain tracePixelChain(const Scene& scene, int x, int y) {
   Image one(1, 1);
   std::copy(r, r + 4, one.rgba.begin());
   if (scene.renderer == RendererKind::Raster) {
-    applyDisplay(one, scene.display, &scene.background);
+    applyDisplay(one, encodingOnly(scene.display), &scene.background);
   } else {
     // The tracers encode each pixel's value, not its 8-bit byte: the picture drawn with the display.
     Scene displayed = bare;
@@ -206,13 +215,13 @@ void printPixelReport(const Scene& scene, const PixelProbe& p, const Image& imag
   switch (scene.shading) {
     case Shading::Flat:
       std::fprintf(out, " the provoking vertex:\n");
-      printEquation(out, scene, p.material, p.eyePosition, p.eyeNormal);
+      printEquation(out, scene, p.material, p.eyePosition, p.eyeNormal, scene.display.toneMap);
       std::fprintf(out, "  lit colour (the provoking vertex's, for the whole triangle): %s\n", rgba(p.lit).c_str());
       break;
     case Shading::Gouraud:
       for (std::size_t i = 0; i < 3; ++i) {
         std::fprintf(out, " vertex %zu of the drawn triangle:\n", i);
-        printEquation(out, scene, p.vertexMaterials[i], p.vertexPositions[i], p.vertexNormals[i]);
+        printEquation(out, scene, p.vertexMaterials[i], p.vertexPositions[i], p.vertexNormals[i], scene.display.toneMap);
         std::fprintf(out, "  vertex colour used: %s\n", rgba(p.vertexColors[i]).c_str());
       }
       std::fprintf(out, "  perspective-correct weights: %.4f %.4f %.4f\n", double(p.weights[0]), double(p.weights[1]),
@@ -220,7 +229,7 @@ void printPixelReport(const Scene& scene, const PixelProbe& p, const Image& imag
       std::fprintf(out, "  lit colour (interpolated): %s\n", rgba(p.lit).c_str());
       break;
     case Shading::Phong:
-      printEquation(out, scene, p.material, p.eyePosition, p.eyeNormal);
+      printEquation(out, scene, p.material, p.eyePosition, p.eyeNormal, scene.display.toneMap);
       std::fprintf(out, "  lit colour: %s\n", rgba(p.lit).c_str());
       break;
   }

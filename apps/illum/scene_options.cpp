@@ -619,6 +619,10 @@ Scene prepareScene(SceneOptions o, double* loadMs, ModelCache* cache, std::vecto
     scene.lightModel.ambient = cameraRigAmbient(intensity, rig, true);
   }
   applyEnvironmentOptions(o, scene, model.has_value());
+  // A preview lit by an environment (the studio of physically based materials, or --environment)
+  // is a physically based picture too: its radiance, a bright sky's and a sun's reflections
+  // included, goes through ACES as the path tracer's does, so that both renderers show one look.
+  if (model && !toneMap && scene.environment.lighting != EnvironmentLighting::None) scene.display.toneMap = ToneMap::Aces;
   if (o.denoise && o.noDenoise) throw InputError("--denoise and --no-denoise: expected one of them, not both");
   if (model && scene.renderer == RendererKind::Path) scene.rayTracing.denoise = true;  // previews look clean
   if (o.denoise || o.noDenoise) scene.rayTracing.denoise = o.denoise;

@@ -28,6 +28,10 @@ struct Display {
   bool identity() const { return toneMap == ToneMap::None && encoding == Encoding::Linear; }
 };
 
+// What is left of a display for the rasterizer's framebuffer, whose lit colours took the tone map
+// before they were quantised (LightModel::toneMap): the encoding.
+inline Display encodingOnly(const Display& display) { return {ToneMap::None, display.encoding}; }
+
 // The tone map alone: none leaves x as it is (clamped later), the others map [0, ∞) into [0, 1).
 Real toneMapped(Real x, ToneMap toneMap);
 // sRGB's transfer function for x in [0, 1]: 12.92·x up to 0.0031308, else 1.055·x^(1/2.4) − 0.055.

@@ -2,6 +2,7 @@
 // lights (glLight), materials (glMaterial), the light model (glLightModel) and the equation.
 #pragma once
 
+#include <illum/display.h>
 #include <illum/real.h>
 
 #include <span>
@@ -137,6 +138,11 @@ struct LightModel {
   // "environment_lighting"): physically based materials take their ambient and a reflection of the
   // map from it, and GL materials, where it lights them, take it in place of `ambient`.
   std::shared_ptr<const EyeImageLight> environment;
+  // The display's tone map, as the rasterizer's frame sets it (the scene's "tone_map"): applied to
+  // each lit colour before GL's clamp, since the framebuffer keeps 8-bit display values and a
+  // radiance above 1 would be lost in it. None everywhere else (the ray tracers tone map each
+  // pixel's radiance instead).
+  ToneMap toneMap = ToneMap::None;
 };
 
 // Whether V points from each point to the eye (GL_LIGHT_MODEL_LOCAL_VIEWER, or seed 004's world
@@ -213,8 +219,9 @@ LightingTerms evaluateTerms(std::span<const EyeLight> lights, const LightModel& 
                             const Material& material, LightingModel model,
                             const SurfaceGeometry& surface);
 
-// The colour GL writes: each channel of the sum clamped to [0,1], alpha from the diffuse material.
-Color4 clampedColor(const LightingTerms& terms, const Material& material);
+// The colour GL writes: each channel of the sum clamped to [0,1] (after `toneMap`, where the
+// rasterizer's frame has one: LightModel::toneMap), alpha from the diffuse material.
+Color4 clampedColor(const LightingTerms& terms, const Material& material, ToneMap toneMap = ToneMap::None);
 
 // The viewer direction GL uses: (0,0,1) for an infinite viewer, normalize(-P) for a local one
 // (viewerIsLocal).

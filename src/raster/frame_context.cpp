@@ -17,6 +17,7 @@ FrameContext FrameContext::fromScene(const Scene& scene) {
   for (const Light& l : scene.lights) f.lights.push_back(toEyeSpace(l, f.viewFromWorld));
   f.lightModel = scene.lightModel;
   f.lightModel.environment = eyeImageLight(scene, f.viewFromWorld);
+  f.lightModel.toneMap = scene.display.toneMap;  // lit colours tone mapped before they are quantised
   f.model = scene.model;
   f.shading = scene.shading;
   f.blend = scene.blend;

@@ -13,7 +13,7 @@ void finishRasterPicture(const Scene& scene, RenderStats& stats, Image& image, F
     *linear = FloatImage{image.width, image.height, std::vector<float>(image.rgba.size()), {}};
     for (std::size_t i = 0; i < image.rgba.size(); ++i) linear->rgba[i] = float(image.rgba[i]) / 255;
   }
-  applyDisplay(image, scene.display, &scene.background);
+  applyDisplay(image, encodingOnly(scene.display), &scene.background);
   finishTracedPicture(scene, stats, image, environmentBehind);
 }
 

@@ -14,8 +14,10 @@ std::vector<std::uint16_t> picture16(const Scene& scene, const FloatImage& linea
   const std::size_t pixels = std::size_t(linear.width) * std::size_t(linear.height);
   std::vector<std::uint16_t> out(pixels * 4);
   const auto word = [](Real v) { return std::uint16_t(std::lround(double(std::clamp(v, Real(0), Real(1))) * 65535.0)); };
+  // The rasterizer's values are its framebuffer's, tone mapped already (LightModel::toneMap).
+  const Display display = scene.renderer == RendererKind::Raster ? encodingOnly(scene.display) : scene.display;
   for (std::size_t i = 0; i < pixels * 4; ++i)
-    out[i] = word(i % 4 == 3 ? Real(linear.rgba[i]) : displayValue(Real(linear.rgba[i]), scene.display));
+    out[i] = word(i % 4 == 3 ? Real(linear.rgba[i]) : displayValue(Real(linear.rgba[i]), display));
   Image layer(linear.width, linear.height);  // transparent black: text leaves premultiplied colour
   if (scene.labels.empty() || !drawLabels(layer, scene)) return out;
   for (std::size_t i = 0; i < pixels; ++i) {

@@ -45,7 +45,7 @@ HWY_INLINE void LitColor(D d, const ShadeSetup& setup, SurfaceL<V>& s, const Rea
   }
   TermsL<V> terms = ShadeEquation(d, setup.lights, setup.lightModel, setup.material, colors, setup.model, s, mapped);
   if (open) terms.ambient = hn::LoadU(d, open) * terms.ambient;
-  ClampedColor(d, terms, colors.alpha, r, g, b, a);
+  ClampedColor(d, terms, colors.alpha, setup.lightModel.toneMap, r, g, b, a);
 }
 
 // Points [first, first + lanes) of `p`, read from and written to arrays offset by `first`.
@@ -292,11 +292,11 @@ LightingTerms evaluateTerms(std::span<const EyeLight> lights, const LightModel& 
           HWY_NAMESPACE::Lane0(t.specular)};
 }
 
-Color4 clampedColor(const LightingTerms& terms, const Material& material) {
+Color4 clampedColor(const LightingTerms& terms, const Material& material, ToneMap toneMap) {
   const HWY_NAMESPACE::TermsL<one::V> t{one::lanes(terms.emission), one::lanes(terms.ambient),
                                         one::lanes(terms.diffuse), one::lanes(terms.specular)};
   one::V r, g, b, a;
-  HWY_NAMESPACE::ClampedColor(one::d, t, one::lane(material.diffuse.a), r, g, b, a);
+  HWY_NAMESPACE::ClampedColor(one::d, t, one::lane(material.diffuse.a), toneMap, r, g, b, a);
   return {hn::GetLane(r), hn::GetLane(g), hn::GetLane(b), hn::GetLane(a)};
 }
 

@@ -33,7 +33,7 @@ Color4 litAt(const FrameContext& frame, const PointMaterial& point, const Vec3& 
     frame.occlusion->open(1, P, N, &seed, &open);
     terms.ambient = open * terms.ambient;
   }
-  return clampedColor(terms, point.material);
+  return clampedColor(terms, point.material, frame.lightModel.toneMap);
 }
 
 }  // namespace
