@@ -5,37 +5,14 @@
 # (colour, rotation) and display (tone map, encoding) are used, so the two pictures differ only by
 # the renderer. The model goes through Blender's own glTF importer (Principled BSDF materials); the
 # environment lights alone (no lamps), seen behind the model. Box-filtered pixels, no denoising.
-import bpy, math, sys
-from mathutils import Matrix, Vector
-import json
+import bpy, json, math, os, sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from illum_cycles import add_camera, illum_root, setup_cycles
 
 scene_path, model_path, env_path, out_path, samples, threads = sys.argv[sys.argv.index("--") + 1:][:6]
 spec = json.load(open(scene_path))
-
-bpy.ops.wm.read_factory_settings(use_empty=True)
-scene = bpy.context.scene
-scene.render.engine = "CYCLES"
-scene.cycles.device = "CPU"
-scene.cycles.samples = int(samples)
-scene.cycles.use_denoising = False
-scene.cycles.use_adaptive_sampling = False
-depth = spec.get("max_depth", 5)
-scene.cycles.max_bounces = depth
-for kind in ("diffuse", "glossy", "transmission", "volume", "transparent"):
-    setattr(scene.cycles, kind + "_bounces", depth)
-scene.cycles.sample_clamp_direct = 0
-scene.cycles.sample_clamp_indirect = 0
-scene.cycles.filter_type = "BOX"
-scene.cycles.filter_width = 1.0
-scene.render.threads_mode = "FIXED"
-scene.render.threads = int(threads)
-scene.render.resolution_x = spec["width"]
-scene.render.resolution_y = spec["height"]
-scene.render.resolution_percentage = 100
-scene.render.film_transparent = False
-scene.view_settings.view_transform = "Standard"
-scene.render.image_settings.file_format = "OPEN_EXR"
-scene.render.image_settings.color_depth = "32"
+scene = setup_cycles(spec, samples, threads)
 
 # Debian 12's Blender 3.4 glTF importer still says numpy.bool, which Debian's numpy 1.24 no
 # longer has (the alias was removed): give it back before importing.
@@ -65,30 +42,8 @@ strength = spec.get("environment", [1, 1, 1])
 background.inputs["Strength"].default_value = sum(strength) / 3
 scene.world = world
 
-# illum's camera, in its +Y-up world: hung under an empty turned 90° about X (what the importer
-# does to the model).
-root = bpy.data.objects.new("illum", None)
-scene.collection.objects.link(root)
-root.rotation_euler = (math.pi / 2, 0, 0)
-cam = spec["camera"]
-camera = bpy.data.objects.new("camera", bpy.data.cameras.new("camera"))
-scene.collection.objects.link(camera)
-camera.parent = root
-eye, center = Vector(cam["eye"]), Vector(cam.get("center", [0, 0, 0]))
-up = Vector(cam.get("up", [0, 1, 0]))
-forward = (center - eye).normalized()
-right = forward.cross(up).normalized()
-true_up = right.cross(forward)
-camera.matrix_basis = Matrix((
-    (right.x, true_up.x, -forward.x, eye.x),
-    (right.y, true_up.y, -forward.y, eye.y),
-    (right.z, true_up.z, -forward.z, eye.z),
-    (0, 0, 0, 1)))
-camera.data.sensor_fit = "VERTICAL"
-camera.data.angle_y = math.radians(cam.get("fovy", 30))
-camera.data.clip_start = cam.get("near", 0.1)
-camera.data.clip_end = cam.get("far", 100)
-scene.camera = camera
+# illum's camera, in its +Y-up world (the importer turned the model into Blender's the same way).
+add_camera(scene, illum_root(scene), spec["camera"])
 
 exr = out_path + ".exr"
 scene.render.filepath = exr

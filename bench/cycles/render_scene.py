@@ -4,45 +4,22 @@
 # lists, GL materials' diffuse colour as a Lambertian albedo, emission × emission_strength from
 # front faces only (as illum's area lights), no point lights, a black environment. Box-filtered
 # pixels, no denoising, the scene's bounce limit; written as linear 32-bit OpenEXR.
-import bpy, json, math, sys
+import bpy, json, math, os, sys
 from mathutils import Matrix, Vector
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from illum_cycles import add_camera, illum_root, setup_cycles
 
 scene_path, out_path, samples, threads = sys.argv[sys.argv.index("--") + 1:][:4]
 spec = json.load(open(scene_path))
-
-bpy.ops.wm.read_factory_settings(use_empty=True)
-scene = bpy.context.scene
-scene.render.engine = "CYCLES"
-scene.cycles.device = "CPU"
-scene.cycles.samples = int(samples)
-scene.cycles.use_denoising = False
-scene.cycles.use_adaptive_sampling = False
-depth = spec.get("max_depth", 5)
-scene.cycles.max_bounces = depth
-for kind in ("diffuse", "glossy", "transmission", "volume", "transparent"):
-    setattr(scene.cycles, kind + "_bounces", depth)
-scene.cycles.sample_clamp_direct = 0
-scene.cycles.sample_clamp_indirect = 0
-scene.cycles.filter_type = "BOX"
-scene.cycles.filter_width = 1.0
-scene.render.threads_mode = "FIXED"
-scene.render.threads = int(threads)
-scene.render.resolution_x = spec["width"]
-scene.render.resolution_y = spec["height"]
-scene.render.resolution_percentage = 100
-scene.render.film_transparent = False
-scene.view_settings.view_transform = "Standard"
-scene.render.image_settings.file_format = "OPEN_EXR"
-scene.render.image_settings.color_depth = "32"
+scene = setup_cycles(spec, samples, threads)
 world = bpy.data.worlds.new("black")
 world.use_nodes = True
 world.node_tree.nodes["Background"].inputs["Strength"].default_value = 0.0
 scene.world = world
 
 # illum's world is +Y up; Blender's +Z: everything hangs under an empty turned 90° about X.
-root = bpy.data.objects.new("illum", None)
-scene.collection.objects.link(root)
-root.rotation_euler = (math.pi / 2, 0, 0)
+root = illum_root(scene)
 
 def transform(steps):
     m = Matrix.Identity(4)
@@ -113,25 +90,7 @@ for i, o in enumerate(spec["objects"]):
     obj.matrix_basis = transform(o.get("transform", []))
     obj.data.materials.append(material(o.get("material", {}), "material%d" % i))
 
-cam = spec["camera"]
-camera = bpy.data.objects.new("camera", bpy.data.cameras.new("camera"))
-scene.collection.objects.link(camera)
-camera.parent = root
-eye, center = Vector(cam["eye"]), Vector(cam.get("center", [0, 0, 0]))
-up = Vector(cam.get("up", [0, 1, 0]))
-forward = (center - eye).normalized()
-right = forward.cross(up).normalized()
-true_up = right.cross(forward)
-camera.matrix_basis = Matrix((
-    (right.x, true_up.x, -forward.x, eye.x),
-    (right.y, true_up.y, -forward.y, eye.y),
-    (right.z, true_up.z, -forward.z, eye.z),
-    (0, 0, 0, 1)))
-camera.data.sensor_fit = "VERTICAL"
-camera.data.angle_y = math.radians(cam.get("fovy", 45))
-camera.data.clip_start = cam.get("near", 0.1)
-camera.data.clip_end = cam.get("far", 100)
-scene.camera = camera
+add_camera(scene, root, spec["camera"])
 
 scene.render.filepath = out_path
 bpy.ops.render.render(write_still=True)
