@@ -2,6 +2,7 @@
 // framebuffer (a radiance of 3 is Reinhard's 3/4, not the clamped 1's 1/2), on every route and
 // shading frequency, as the reference pipeline draws it; the background stays its colour.
 #include "render/reference_render.h"
+#include "render/square_test_support.h"
 
 #include <illum/render.h>
 #include <illum/scene.h>
@@ -13,10 +14,7 @@ namespace {
 
 // A white square facing a white directional light of 3 along its normal: diffuse 3, and nothing else.
 Scene brightSquare(Shading shading, int multisample) {
-  Scene s;
-  s.width = s.height = 16;
-  s.camera.projection = Projection::Orthographic;
-  s.camera.viewHeight = 1;
+  Scene s = test::orthographicScene(16, 1);
   s.lightModel.ambient = Color3(0);
   s.lights.resize(1);
   s.lights[0].position = {0, 0, 1, 0};
@@ -26,12 +24,8 @@ Scene brightSquare(Shading shading, int multisample) {
   s.shading = shading;
   s.multisample = multisample;
   s.background = {0.25f, 0.5f, 0.75f, 1};
-  auto m = std::make_shared<Mesh>();
-  m->positions = {{-2, -2, 0}, {2, -2, 0}, {2, 2, 0}, {-2, 2, 0}};
-  m->normals.assign(4, Vec3(0, 0, 1));
-  m->indices = {0, 1, 2, 0, 2, 3};
   Object o;
-  o.mesh = m;
+  o.mesh = test::facingSquare(2);
   o.material.diffuse = {1, 1, 1, 1};
   o.material.ambient = o.material.specular = o.material.emission = {0, 0, 0, 1};
   s.objects.push_back(o);

@@ -1,6 +1,8 @@
 // How the ray tracers filter a texture when a pixel takes many samples: the samples average over
 // the pixel, so each one reads the texture over its share of the pixel only (pbrt-v4's scaled ray
 // differentials); a whole pixel's footprint on each sample would blur the texture over two pixels.
+#include "render/square_test_support.h"
+
 #include <illum/render.h>
 #include <illum/scene.h>
 
@@ -12,19 +14,11 @@ namespace {
 // A 32×1 black texture with one white pair of texels (10 and 11) on a square 16 pixels wide: two
 // texels a pixel, the pair exactly pixel 5's column.
 Scene stripeScene(int samples) {
-  Scene s;
-  s.width = s.height = 16;
-  s.camera.projection = Projection::Orthographic;
-  s.camera.viewHeight = 2;
+  Scene s = test::orthographicScene(16, 2);
   s.lightModel.ambient = Color3(1);
   s.lights.clear();
   s.renderer = RendererKind::Whitted;
   s.rayTracing.samples = samples;
-  auto m = std::make_shared<Mesh>();
-  m->positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
-  m->normals.assign(4, Vec3(0, 0, 1));
-  m->uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-  m->indices = {0, 1, 2, 0, 2, 3};
   Image image(32, 1);
   for (int x = 0; x < 32; ++x) {
     const std::uint8_t v = x == 10 || x == 11 ? 255 : 0;
@@ -32,7 +26,7 @@ Scene stripeScene(int samples) {
     image.pixel(x, 0)[3] = 255;
   }
   Object o;
-  o.mesh = m;
+  o.mesh = test::facingSquare(1);
   o.material.ambient = {1, 1, 1, 1};
   o.material.diffuse = o.material.specular = {0, 0, 0, 1};
   o.diffuseTexture = std::make_shared<const Texture>(image);

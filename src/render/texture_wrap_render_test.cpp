@@ -2,6 +2,7 @@
 // gives the reference pipeline's bytes (the one-texel sampler) for every mode, and the picture
 // shows what each mode means.
 #include "render/reference_render.h"
+#include "render/square_test_support.h"
 
 #include <illum/render.h>
 #include <illum/scene.h>
@@ -30,20 +31,12 @@ std::shared_ptr<const Texture> ramp(TextureWraps wraps) {
 // A square filling the picture, texture coordinates from −1 to 2 both ways, lit so that the
 // texel is the colour (ambient 1, a white material: GL_MODULATE by the texel).
 Scene wrapScene(TextureWraps wraps, Shading shading) {
-  Scene s;
-  s.width = s.height = 48;
-  s.camera.projection = Projection::Orthographic;
-  s.camera.viewHeight = 2;
+  Scene s = test::orthographicScene(48, 2);
   s.lightModel.ambient = Color3(1);
   s.lights.clear();
   s.shading = shading;
-  auto m = std::make_shared<Mesh>();
-  m->positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
-  m->normals.assign(4, Vec3(0, 0, 1));
-  m->uvs = {{-1, -1}, {2, -1}, {2, 2}, {-1, 2}};
-  m->indices = {0, 1, 2, 0, 2, 3};
   Object o;
-  o.mesh = m;
+  o.mesh = test::facingSquare(1, {{{-1, -1}, {2, -1}, {2, 2}, {-1, 2}}});
   o.material.ambient = {1, 1, 1, 1};
   o.material.diffuse = {0, 0, 0, 1};
   o.material.specular = {0, 0, 0, 1};
