@@ -244,8 +244,11 @@ PreviewSession::PreviewSession(const Scene& scene, int samples)
       glBindTexture(GL_TEXTURE_2D, d.texture);
       glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
       glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+      const auto wrap = [](TextureWrap w) -> GLint {  // the model's sampler, as illum reads it
+        return w == TextureWrap::MirroredRepeat ? GL_MIRRORED_REPEAT : w == TextureWrap::ClampToEdge ? GL_CLAMP_TO_EDGE : GL_REPEAT;
+      };
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap(object.diffuseTexture->wraps().s));
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wrap(object.diffuseTexture->wraps().t));
       const GLint format = object.diffuseTexture->encoding() == TexelEncoding::Srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8;
       glTexImage2D(GL_TEXTURE_2D, 0, format, image.width, image.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, rows.data());
       glGenerateMipmap(GL_TEXTURE_2D);

@@ -108,21 +108,25 @@ Scene featureScene(const std::string& name) {
     }
     return m;
   };
-  if (name == "textured") {
+  if (name == "textured" || name == "wrapped") {
     Image pattern(64, 64);
     for (int y = 0; y < 64; ++y)
       for (int x = 0; x < 64; ++x) {
         std::uint8_t* p = pattern.pixel(x, y);
         p[0] = std::uint8_t(((x / 8 + y / 8) % 2) ? 230 : 40), p[1] = std::uint8_t(x * 4), p[2] = std::uint8_t(y * 4), p[3] = 255;
       }
-    auto texture = std::make_shared<const Texture>(pattern);
+    // "wrapped": GL_MIRRORED_REPEAT across and GL_CLAMP_TO_EDGE up, the floor's uvs from −1.5 to 2.5.
+    const bool wrapped = name == "wrapped";
+    auto texture = std::make_shared<const Texture>(
+        pattern, TexelEncoding::Linear,
+        wrapped ? TextureWraps{TextureWrap::MirroredRepeat, TextureWrap::ClampToEdge} : TextureWraps{});
     // A floor of 16×16 quads with uvs repeating 4 times: far away it needs the smaller mip levels.
     auto floor = std::make_shared<Mesh>();
     for (int j = 0; j <= 16; ++j)
       for (int i = 0; i <= 16; ++i) {
         floor->positions.push_back({Real(i - 8) * Real(0.75), -1, Real(j - 14) * Real(0.75)});
         floor->normals.push_back({0, 1, 0});
-        floor->uvs.push_back({Real(i) / 4, Real(j) / 4});
+        floor->uvs.push_back({Real(i) / 4 - (wrapped ? Real(1.5) : Real(0)), Real(j) / 4 - (wrapped ? Real(1.5) : Real(0))});
       }
     for (std::uint32_t j = 0; j < 16; ++j)
       for (std::uint32_t i = 0; i < 16; ++i) {
@@ -193,7 +197,7 @@ TEST_P(MesaParityFeatures, MatchesLlvmpipe) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Features, MesaParityFeatures,
-                         testing::Combine(testing::Values("textured", "vertex_colors", "blended"),
+                         testing::Combine(testing::Values("textured", "wrapped", "vertex_colors", "blended"),
                                           testing::Values(Shading::Flat, Shading::Gouraud)),
                          [](const testing::TestParamInfo<FeatureCase>& info) {
                            return std::get<0>(info.param) + "_" + std::string(toString(std::get<1>(info.param)));

@@ -242,7 +242,7 @@ MesaSession::MesaSession(const Scene& scene, MesaPath path)
     uvs_.push_back(std::move(uvs));
     GLuint texture = 0;
     if (object.diffuseTexture && !m.uvs.empty()) {
-      // GL_MODULATE with GL_LINEAR_MIPMAP_LINEAR and GL_REPEAT; GL's rows run bottom to top.
+      // GL_MODULATE with GL_LINEAR_MIPMAP_LINEAR and the texture's wrap modes; GL's rows run bottom to top.
       const Image image = object.diffuseTexture->baseImage();
       std::vector<std::uint8_t> rows(image.rgba.size());
       const std::size_t row = std::size_t(image.width) * 4;
@@ -252,8 +252,11 @@ MesaSession::MesaSession(const Scene& scene, MesaPath path)
       glBindTexture(GL_TEXTURE_2D, texture);
       glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
       glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+      const auto wrap = [](TextureWrap w) -> GLint {
+        return w == TextureWrap::MirroredRepeat ? GL_MIRRORED_REPEAT : w == TextureWrap::ClampToEdge ? GL_CLAMP_TO_EDGE : GL_REPEAT;
+      };
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap(object.diffuseTexture->wraps().s));
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wrap(object.diffuseTexture->wraps().t));
       glTexParameteri(GL_TEXTURE_2D, GL_GENERATE_MIPMAP, GL_TRUE);
       glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width, image.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, rows.data());
       glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
