@@ -453,6 +453,13 @@ void applyEnvironmentOptions(const SceneOptions& o, Scene& scene, bool preview) 
   }
 }
 
+ToneMap previewToneMap(const Scene& scene) {
+  // The path tracer's radiance has no upper bound; an environment's sky and sun reflect above 1 in
+  // the rasterizer's too: both through ACES, so that the renderers show one look.
+  const bool physical = scene.renderer == RendererKind::Path || scene.environment.lighting != EnvironmentLighting::None;
+  return physical ? ToneMap::Aces : ToneMap::None;
+}
+
 Scene prepareScene(SceneOptions o, double* loadMs, ModelCache* cache, std::vector<std::string>* warnings) {
   const auto start = std::chrono::steady_clock::now();
   rejectConflicts(o);
@@ -560,10 +567,9 @@ Scene prepareScene(SceneOptions o, double* loadMs, ModelCache* cache, std::vecto
     warn(warnings, "convention " + std::string(toString(scene.lightModel.convention)) +
                        ": the path tracer's light has no lecture note's convention; it is drawn as it is");
   if (model) {
-    // Previews of model files are for screens: sRGB, unless --encoding says otherwise; the path
-    // tracer's radiance, which has no upper bound, through ACES. (Scene files stay as GL writes.)
+    // Previews of model files are for screens: sRGB, unless --encoding says otherwise (their tone
+    // map: previewToneMap, once the environment is known). Scene files stay as GL writes.
     scene.display.encoding = encoding.value_or(Encoding::Srgb);
-    if (scene.renderer == RendererKind::Path) scene.display.toneMap = ToneMap::Aces;
     if (scene.display.encoding == Encoding::Srgb) {
       // The rig in linear light, and the grey of the background as it should appear.
       const Real intensity = o.lightIntensity ? Real(*o.lightIntensity) : Real(1);
@@ -619,10 +625,7 @@ Scene prepareScene(SceneOptions o, double* loadMs, ModelCache* cache, std::vecto
     scene.lightModel.ambient = cameraRigAmbient(intensity, rig, true);
   }
   applyEnvironmentOptions(o, scene, model.has_value());
-  // A preview lit by an environment (the studio of physically based materials, or --environment)
-  // is a physically based picture too: its radiance, a bright sky's and a sun's reflections
-  // included, goes through ACES as the path tracer's does, so that both renderers show one look.
-  if (model && !toneMap && scene.environment.lighting != EnvironmentLighting::None) scene.display.toneMap = ToneMap::Aces;
+  if (model && !toneMap) scene.display.toneMap = previewToneMap(scene);
   if (o.denoise && o.noDenoise) throw InputError("--denoise and --no-denoise: expected one of them, not both");
   if (model && scene.renderer == RendererKind::Path) scene.rayTracing.denoise = true;  // previews look clean
   if (o.denoise || o.noDenoise) scene.rayTracing.denoise = o.denoise;

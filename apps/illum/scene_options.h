@@ -104,6 +104,11 @@ PendingImport startModelImport(const SceneOptions& o, double wallClockAllowance)
 // warnings go to stderr, and with --verbose the model's statistics. `loadMs` is the time it took.
 // With a cache, a model file already in it is not read again (nor its warnings printed twice).
 // With `warnings`, warnings are collected there instead of printed.
+// A model preview's tone map where --tone-map does not choose one: ACES for the pictures that are
+// physically based (path traced, or lit by an environment: the studio of glTF's materials, or
+// --environment), as the path tracer's; none, GL's clamp, for classic materials under the rig.
+ToneMap previewToneMap(const Scene& scene);
+
 Scene prepareScene(SceneOptions o, double* loadMs = nullptr, ModelCache* cache = nullptr,
                    std::vector<std::string>* warnings = nullptr);
 

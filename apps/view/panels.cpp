@@ -58,7 +58,7 @@ void scenePanel(ViewState& state) {
   RendererKind renderer = s.renderer;
   if (combo("renderer (--renderer)", renderer,
             std::array{RendererKind::Raster, RendererKind::Whitted, RendererKind::Hall, RendererKind::Path}))
-    state.edit().renderer = renderer;
+    state.setRenderer(renderer);
   LightingModel model = s.model;
   if (combo("model (--model)", model,
             std::array{LightingModel::Wylie, LightingModel::Bouknight, LightingModel::Lambert, LightingModel::Phong,

@@ -184,6 +184,12 @@ void ViewState::toggleOcclusion() {
   ++version_;
 }
 
+void ViewState::setRenderer(RendererKind renderer) {
+  scene_.renderer = renderer;
+  if (model_ && options_.toneMap.empty()) scene_.display.toneMap = cli::previewToneMap(scene_);
+  ++version_;
+}
+
 void ViewState::toggleEnvironment() {
   EnvironmentUse& use = scene_.environment;
   if (use.lighting == EnvironmentLighting::All) {
@@ -196,6 +202,8 @@ void ViewState::toggleEnvironment() {
     }
     use.lighting = EnvironmentLighting::All;
   }
+  // A preview's display follows, as `illum render MODEL --environment studio|none` would show it.
+  if (model_ && options_.toneMap.empty()) scene_.display.toneMap = cli::previewToneMap(scene_);
   ++version_;
 }
 

@@ -71,6 +71,9 @@ class ViewState {
     ++version_;
     return scene_;
   }
+  // --renderer: a preview's display follows as `illum render MODEL --renderer R` shows it (the path
+  // tracer's through ACES) unless --tone-map chose one.
+  void setRenderer(RendererKind renderer);
   void resize(int width, int height);
   bool isModel() const { return model_; }
 

@@ -127,19 +127,27 @@ TEST(ViewState, FTurnsEnvironmentLightingOnAndOff) {
   ViewState s({spider, duck}, viewOptions(96, 64));
   s.load();
   EXPECT_EQ(s.scene().environment.lighting, EnvironmentLighting::None);
+  EXPECT_EQ(s.scene().display.toneMap, ToneMap::None);
   const Image before = renderScene(s.drawn());
   const std::uint64_t v = s.version();
   s.toggleEnvironment();
   EXPECT_GT(s.version(), v);
   EXPECT_EQ(s.scene().environment.lighting, EnvironmentLighting::All);
   EXPECT_EQ(s.scene().rayTracing.environmentMap, studioEnvironment());
+  EXPECT_EQ(s.scene().display.toneMap, ToneMap::Aces);  // as `illum render --environment studio` shows a preview
   EXPECT_NE(renderScene(s.drawn()).rgba, before.rgba);
   EXPECT_TRUE(s.step(1));
   EXPECT_EQ(s.scene().environment.lighting, EnvironmentLighting::All);
   EXPECT_TRUE(s.step(1));
   s.toggleEnvironment();
   EXPECT_EQ(s.scene().environment.lighting, EnvironmentLighting::None);
+  EXPECT_EQ(s.scene().display.toneMap, ToneMap::None);
   EXPECT_EQ(renderScene(s.drawn()).rgba, before.rgba);
+  // The path tracer's preview goes through ACES, the rasterizer's back to GL's clamp.
+  s.setRenderer(RendererKind::Path);
+  EXPECT_EQ(s.scene().display.toneMap, ToneMap::Aces);
+  s.setRenderer(RendererKind::Raster);
+  EXPECT_EQ(s.scene().display.toneMap, ToneMap::None);
 }
 
 TEST(ViewState, StepsThroughFilesAndKeepsToggles) {
