@@ -3,9 +3,11 @@
 # Cornell box, side by side, and the two linear pictures are compared:
 #   bench/compare_cycles.sh [--samples N] [--threads N] [SCENE.json]
 # Prints both times, the mean relative error and the RMS error of illum against Cycles, and writes
-# docs/images/cornell_cycles.png (Cycles) and docs/images/cornell_difference.png (the 8×8-pixel
-# blocks' |illum − Cycles| × 16, one pixel a block).
+# the README's pictures docs/images/cornell_cycles.png (Cycles) and docs/images/cornell_difference.png
+# (the 8×8-pixel blocks' |illum − Cycles| × 16, one pixel a block) at their 256 samples only; other
+# sample counts write them beside the run's output instead (./cornell_cycles.png, ./cornell_difference.png).
 set -euo pipefail
+caller=$PWD
 cd "$(dirname "$0")/.."
 illum=build/apps/illum/illum
 samples=256 threads=2 scene=examples/cornell_box.json
@@ -16,6 +18,8 @@ while [ $# -gt 0 ]; do
     *) scene=$1; shift ;;
   esac
 done
+pictures=$caller
+[ "$samples" = 256 ] && pictures=docs/images
 command -v blender >/dev/null || { echo "compare_cycles: needs Blender (apt-get install blender)" >&2; exit 2; }
 [ -x "$illum" ] || { echo "compare_cycles: build illum first (scripts/dev.sh run)" >&2; exit 2; }
 work=$(mktemp -d)
@@ -28,11 +32,11 @@ blender -b --factory-startup -P bench/cycles/render_scene.py -- "$scene" "$work/
   > "$work/blender.log" 2>&1 || { tail -n 20 "$work/blender.log"; exit 1; }
 t2=$(now)
 blender -b --factory-startup -P bench/cycles/compare.py -- "$work/cycles.exr" "$work/illum.exr" \
-  docs/images/cornell_difference.png 2>/dev/null | grep illum-compare | sed 's/^illum-compare: //'
+  "$pictures/cornell_difference.png" 2>/dev/null | grep illum-compare | sed 's/^illum-compare: //'
 # Cycles' picture as illum writes its own: linear values, no view transform or display encoding.
 blender -b --factory-startup --python-expr "import bpy; s = bpy.context.scene; \
 s.view_settings.view_transform = 'Standard'; s.display_settings.display_device = 'None'; \
 s.render.image_settings.file_format = 'PNG'; \
-bpy.data.images.load('$work/cycles.exr').save_render('$PWD/docs/images/cornell_cycles.png', scene=s)" >/dev/null 2>&1
+bpy.data.images.load('$work/cycles.exr').save_render('$(realpath "$pictures")/cornell_cycles.png', scene=s)" >/dev/null 2>&1
 awk -v a="$t0" -v b="$t1" -v c="$t2" -v s="$samples" -v n="$threads" \
   'BEGIN {printf "%d samples per pixel, %d threads: illum %.1f s, Cycles %.1f s (whole process)\n", s, n, b - a, c - b}'
