@@ -15,7 +15,7 @@ while [ $# -gt 0 ]; do
   case $1 in
     --samples) samples=$2; shift 2 ;;
     --threads) threads=$2; shift 2 ;;
-    *) scene=$1; shift ;;
+    *) scene=$(cd "$caller" && realpath "$1"); shift ;;
   esac
 done
 pictures=$caller
