@@ -100,14 +100,14 @@ struct TexelPair {
 };
 
 TexelPair texelPair(Real c, int n, TextureWrap wrap) {
-  const Real period = wrap == TextureWrap::MirroredRepeat ? Real(2) : Real(1);
   const Real reduced = wrap == TextureWrap::ClampToEdge ? std::clamp(c, Real(0), Real(1))
                        : wrap == TextureWrap::Repeat    ? c - std::floor(c)
-                                                        : c - period * std::floor(c / period);
+                                                        : c - 2 * std::floor(c / 2);
   const Real x = reduced * Real(n) - Real(0.5);
   const Real fx = std::floor(x);
   const int i = int(fx);
-  // The reduced coordinate puts i in [−1, period·n − 1]: its neighbour is at most one texel out.
+  // The reduced coordinate puts i in [−1, n − 1] ([−1, 2n − 1] mirrored): its neighbour is at
+  // most one texel out.
   const auto wrapped = [&](int k) {
     switch (wrap) {
       case TextureWrap::Repeat: return k < 0 ? k + n : k >= n ? k - n : k;

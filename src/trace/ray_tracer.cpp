@@ -71,7 +71,12 @@ class TracedFrame {
   TracedFrame(const Scene& scene, const RayScene& rays, Image& image, PixelProbe* probe, FloatImage* linear,
               DenoiseBuffers* denoised)
       : scene_(scene), rays_(rays), image_(image), linear_(linear), probe_(probe), denoised_(denoised),
-        camera_(scene.camera, scene.width, scene.height), tracer_(scene, rays) {
+        camera_(scene.camera, scene.width, scene.height), tracer_(scene, rays),
+        // With many samples a pixel, each sample filters textures over a share of the pixel only
+        // (1/√samples of its side, at least 1/8, as pbrt-v4 scales its camera's ray
+        // differentials): the samples themselves average over the pixel, and a whole pixel's
+        // filter on each would blur the texture over two.
+        differentialReach_(std::max(Real(0.125), 1 / std::sqrt(Real(samplesPerPixel(scene))))) {
     if (scene.renderer == RendererKind::Path) pathTracer_.emplace(scene, rays);
   }
 
@@ -159,15 +164,11 @@ class TracedFrame {
       cone.width = camera_.pixelWidthAt(0);
       if (hit.t >= 0 && readsTextures(*rays_.mesh(hit.object).object)) {
         // The rays through the next pixel right and the next one up (GL's window y is up), as the
-        // rasterizer's derivatives. With many samples a pixel, each sample filters a share of the
-        // pixel only (1/√samples of its side, at least 1/8, as pbrt-v4 scales its camera's ray
-        // differentials): the samples themselves average over the pixel, and a whole pixel's
-        // filter on each would blur the texture over two.
+        // rasterizer's derivatives, a share of a pixel away when a pixel takes many samples.
         const Vec2 at = pixelPoint(x, y, s);
-        const Real reach = std::max(Real(0.125), 1 / std::sqrt(Real(samplesPerPixel(scene_))));
         cone.differentials = true;
-        cone.right = camera_.through(at.x + reach, at.y);
-        cone.up = camera_.through(at.x, at.y - reach);
+        cone.right = camera_.through(at.x + differentialReach_, at.y);
+        cone.up = camera_.through(at.x, at.y - differentialReach_);
       }
       const RayHit* first = hit.t >= 0 ? &hit : nullptr;
       PixelSums& pixel = sums[std::size_t((y - y0) * kTile + (x - x0))];
@@ -215,6 +216,7 @@ class TracedFrame {
   DenoiseBuffers* denoised_;
   CameraRays camera_;
   WhittedTracer tracer_;
+  Real differentialReach_;  // pixels from a sample to the rays of its texture derivatives
   std::optional<PathTracer> pathTracer_;
 };
 
