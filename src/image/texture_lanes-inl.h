@@ -2,7 +2,8 @@
 // textured pixels): GL_LINEAR_MIPMAP_LINEAR with the texture's wrap modes, each lane its own uv and footprint,
 // with the same operations in the same order as the one-texel sampler (texture.cpp), so every
 // lane's texel is the bits Texture::sample gives. The mip level's log2 is taken per lane with
-// std::log2 (a vector log2 would round differently).
+// std::log2 (a vector log2 would round differently). Texel fetches are the cost: on AVX-512 the
+// sRGB table is read from registers rather than gathered, and an opaque texture's alpha is not read.
 
 #if defined(ILLUM_IMAGE_TEXTURE_LANES_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef ILLUM_IMAGE_TEXTURE_LANES_INL_H_
@@ -21,6 +22,31 @@
 HWY_BEFORE_NAMESPACE();
 namespace illum::HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
+
+
+#if (HWY_TARGET == HWY_AVX3 || HWY_TARGET == HWY_AVX3_DL) && !ILLUM_USE_DOUBLE
+// A 256-entry float table held in sixteen registers and read with two-table permutes (each
+// vpermi2ps picks from 32 entries by an index's low five bits, and the top three bits choose among
+// the eight results): the table's own bits, without a gather's memory traffic per lane.
+struct TableRegisters {
+  __m512 part[16];
+  explicit TableRegisters(const float* table) {
+    for (int k = 0; k < 16; ++k) part[k] = _mm512_loadu_ps(table + 16 * k);
+  }
+  HWY_INLINE hn::Vec512<float> operator()(hn::Vec512<std::int32_t> index) const {
+    const __m512i i = index.raw;
+    __m512 r[8];
+    for (int k = 0; k < 8; ++k) r[k] = _mm512_permutex2var_ps(part[2 * k], i, part[2 * k + 1]);
+    const __mmask16 b5 = _mm512_test_epi32_mask(i, _mm512_set1_epi32(32));
+    const __mmask16 b6 = _mm512_test_epi32_mask(i, _mm512_set1_epi32(64));
+    const __mmask16 b7 = _mm512_test_epi32_mask(i, _mm512_set1_epi32(128));
+    for (int k = 0; k < 4; ++k) r[k] = _mm512_mask_blend_ps(b5, r[2 * k], r[2 * k + 1]);
+    for (int k = 0; k < 2; ++k) r[k] = _mm512_mask_blend_ps(b6, r[2 * k], r[2 * k + 1]);
+    return hn::Vec512<float>{_mm512_mask_blend_ps(b7, r[0], r[1])};
+  }
+};
+#define ILLUM_TABLE_REGISTERS 1
+#endif
 
 // Texture::sampleLevel of one level in the lanes of `active` (the others read a valid texel and
 // are left to the caller).
@@ -63,7 +89,11 @@ HWY_INLINE void SampleLevelLanes(D d, const Texture& texture, int levelIndex, V 
   const auto rowStart = [&](auto r) { return (hn::Set(di, height - 1) - r) * hn::Set(di, width); };
   const auto* words = reinterpret_cast<const std::uint32_t*>(level.rgba.data());
   const Real* color = texture.colorTable();
+#if defined(ILLUM_TABLE_REGISTERS)
+  const TableRegisters colorRegisters(color);
+#endif
   const bool linear = texture.encoding() == TexelEncoding::Linear;
+  const bool opaque = !texture.hasTransparency();  // every alpha byte 255: 1 exactly
   const V max = hn::Set(d, Real(255));
   const auto texel = [&](auto xi, auto row, V (&t)[4]) {
     const auto index = hn::IfThenElseZero(activeI, row + xi);
@@ -73,8 +103,13 @@ HWY_INLINE void SampleLevelLanes(D d, const Texture& texture, int levelIndex, V 
                                      hn::And(hn::ShiftRight<16>(word), mask), hn::And(hn::ShiftRight<24>(word), mask)};
     // A linear byte's value is byte/255, as the table holds it (one division, rounded alike);
     // sRGB colour bytes are looked up.
-    for (int c = 0; c < 4; ++c)
-      t[c] = c == 3 || linear ? hn::ConvertTo(d, bytes[c]) / max : hn::GatherIndex(d, color, bytes[c]);
+    t[3] = opaque ? hn::Set(d, Real(1)) : hn::ConvertTo(d, bytes[3]) / max;
+    for (int c = 0; c < 3; ++c)
+#if defined(ILLUM_TABLE_REGISTERS)
+      t[c] = linear ? hn::ConvertTo(d, bytes[c]) / max : colorRegisters(bytes[c]);
+#else
+      t[c] = linear ? hn::ConvertTo(d, bytes[c]) / max : hn::GatherIndex(d, color, bytes[c]);
+#endif
   };
   V t00[4], t10[4], t01[4], t11[4];
   const auto r0 = rowStart(y0), r1 = rowStart(y1);
@@ -129,5 +164,7 @@ HWY_INLINE void SampleTextureLanes(D d, const Texture& texture, V u, V v, V texe
 
 }  // namespace illum::HWY_NAMESPACE
 HWY_AFTER_NAMESPACE();
+
+#undef ILLUM_TABLE_REGISTERS
 
 #endif  // ILLUM_IMAGE_TEXTURE_LANES_INL_H_
