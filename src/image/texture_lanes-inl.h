@@ -45,6 +45,18 @@ struct TableRegisters {
     return hn::Vec512<float>{_mm512_mask_blend_ps(b7, r[0], r[1])};
   }
 };
+
+// The words at index and index + 1 of each lane (texels x and x + 1 of a row), as eight-byte
+// gathers, half as many elements as two word gathers.
+HWY_INLINE void WordPairs(const std::uint32_t* words, hn::Vec512<std::int32_t> index, hn::Vec512<std::int32_t>& first,
+                          hn::Vec512<std::int32_t>& second) {
+  const __m512i low = _mm512_i32gather_epi64(_mm512_castsi512_si256(index.raw), words, 4);
+  const __m512i high = _mm512_i32gather_epi64(_mm512_extracti64x4_epi64(index.raw, 1), words, 4);
+  const __m512i even = _mm512_set_epi32(30, 28, 26, 24, 22, 20, 18, 16, 14, 12, 10, 8, 6, 4, 2, 0);
+  const __m512i odd = _mm512_set_epi32(31, 29, 27, 25, 23, 21, 19, 17, 15, 13, 11, 9, 7, 5, 3, 1);
+  first = hn::Vec512<std::int32_t>{_mm512_permutex2var_epi32(low, even, high)};
+  second = hn::Vec512<std::int32_t>{_mm512_permutex2var_epi32(low, odd, high)};
+}
 #define ILLUM_TABLE_REGISTERS 1
 #endif
 
@@ -95,9 +107,10 @@ HWY_INLINE void SampleLevelLanes(D d, const Texture& texture, int levelIndex, V 
   const bool linear = texture.encoding() == TexelEncoding::Linear;
   const bool opaque = !texture.hasTransparency();  // every alpha byte 255: 1 exactly
   const V max = hn::Set(d, Real(255));
-  const auto texel = [&](auto xi, auto row, V (&t)[4]) {
-    const auto index = hn::IfThenElseZero(activeI, row + xi);
-    const auto word = hn::BitCast(di, hn::GatherIndex(du, words, index));
+  const auto fetch = [&](auto xi, auto row) {
+    return hn::BitCast(di, hn::GatherIndex(du, words, hn::IfThenElseZero(activeI, row + xi)));
+  };
+  const auto decode = [&](auto word, V (&t)[4]) {
     const auto mask = hn::Set(di, 0xFF);
     const decltype(word) bytes[4] = {hn::And(word, mask), hn::And(hn::ShiftRight<8>(word), mask),
                                      hn::And(hn::ShiftRight<16>(word), mask), hn::And(hn::ShiftRight<24>(word), mask)};
@@ -113,10 +126,22 @@ HWY_INLINE void SampleLevelLanes(D d, const Texture& texture, int levelIndex, V 
   };
   V t00[4], t10[4], t01[4], t11[4];
   const auto r0 = rowStart(y0), r1 = rowStart(y1);
-  texel(x0, r0, t00);
-  texel(x1, r0, t10);
-  texel(x0, r1, t01);
-  texel(x1, r1, t11);
+  hn::VFromD<decltype(di)> w00, w10, w01, w11;
+#if defined(ILLUM_TABLE_REGISTERS)
+  // Where every lane's right texel is its left one's neighbour in memory (not across a wrap or a
+  // clamped edge), a row's two texels are one eight-byte read.
+  if (width > 1 && hn::AllTrue(di, hn::Or(hn::Not(activeI), x1 == x0 + hn::Set(di, 1)))) {
+    WordPairs(words, hn::IfThenElseZero(activeI, r0 + x0), w00, w10);
+    WordPairs(words, hn::IfThenElseZero(activeI, r1 + x0), w01, w11);
+  } else
+#endif
+  {
+    w00 = fetch(x0, r0), w10 = fetch(x1, r0), w01 = fetch(x0, r1), w11 = fetch(x1, r1);
+  }
+  decode(w00, t00);
+  decode(w10, t10);
+  decode(w01, t01);
+  decode(w11, t11);
   const V bx = one - ax, by = one - ay;
   for (int c = 0; c < 4; ++c) out[c] = by * (bx * t00[c] + ax * t10[c]) + ay * (bx * t01[c] + ax * t11[c]);
 }
