@@ -2,6 +2,10 @@
 
 #include <illum/display.h>
 
+#include <hwy/highway.h>
+
+#include "image/texture_lanes-inl.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -122,6 +126,14 @@ TexelPair texelPair(Real c, int n, TextureWrap wrap) {
   return {wrapped(i), wrapped(i + 1), x - fx};
 }
 
+// A footprint's mip level: the lanes' MipLevelLanes on one lane of the static target (every target
+// computes the same bits).
+Real mipLevel(Real texelsPerPixel) {
+  namespace hn = hwy::HWY_NAMESPACE;
+  const hn::CappedTag<Real, 1> d;
+  return hn::GetLane(HWY_NAMESPACE::MipLevelLanes(d, hn::Set(d, texelsPerPixel)));
+}
+
 }  // namespace
 
 Vec4 Texture::sampleLevel(const Vec2& uv, int level) const {
@@ -135,7 +147,7 @@ Vec4 Texture::sampleLevel(const Vec2& uv, int level) const {
 
 Vec4 Texture::sample(const Vec2& uv, Real texelsPerPixel) const {
   if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) return Vec4(1);
-  const Real lod = texelsPerPixel > 1 ? std::log2(texelsPerPixel) : Real(0);
+  const Real lod = mipLevel(texelsPerPixel);
   const Real clamped = std::min(lod, Real(levelCount() - 1));
   const int l0 = int(std::floor(clamped));
   const Real t = clamped - Real(l0);

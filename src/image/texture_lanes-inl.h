@@ -1,9 +1,9 @@
 // Texture::sample over SIMD lanes (Highway, included once per target by the kernels that shade
 // textured pixels): GL_LINEAR_MIPMAP_LINEAR with the texture's wrap modes, each lane its own uv and footprint,
 // with the same operations in the same order as the one-texel sampler (texture.cpp), so every
-// lane's texel is the bits Texture::sample gives. The mip level's log2 is taken per lane with
-// std::log2 (a vector log2 would round differently). Texel fetches are the cost: on AVX-512 the
-// sRGB table is read from registers rather than gathered, and an opaque texture's alpha is not read.
+// lane's texel is the bits Texture::sample gives (it takes its mip level from MipLevelLanes, one
+// lane). Texel fetches are the cost: on AVX-512 the sRGB table is read from registers rather than
+// gathered, a row's two texels are one read, and an opaque texture's alpha is not read.
 
 #if defined(ILLUM_IMAGE_TEXTURE_LANES_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef ILLUM_IMAGE_TEXTURE_LANES_INL_H_
@@ -16,7 +16,6 @@
 
 #include <illum/texture.h>
 
-#include <cmath>
 #include <cstdint>
 
 HWY_BEFORE_NAMESPACE();
@@ -59,6 +58,30 @@ HWY_INLINE void WordPairs(const std::uint32_t* words, hn::Vec512<std::int32_t> i
 }
 #define ILLUM_TABLE_REGISTERS 1
 #endif
+
+// The mip level (GL's λ) of a footprint of x base texels a pixel: log2 x where x > 1, else 0 (a NaN
+// too). log2 is the exponent plus a degree-7 polynomial in the mantissa (a least-squares fit on
+// [1, 2): error below 5e-7, 0 at powers of two, increasing), in separate multiplies and adds, so
+// every target and Texture::sample (one lane) give the same bits, at a tenth of std::log2's cost.
+template <class D, class V = hn::VFromD<D>>
+HWY_INLINE V MipLevelLanes(D d, V x) {
+  using T = hn::TFromD<D>;
+  const hn::RebindToSigned<D> di;
+  using TI = hn::TFromD<decltype(di)>;
+  constexpr int kMantissaBits = sizeof(T) == 4 ? 23 : 52;
+  constexpr TI kBias = sizeof(T) == 4 ? 127 : 1023;
+  const V one = hn::Set(d, T(1));
+  const auto bits = hn::BitCast(di, hn::IfThenElse(x > one, x, one));
+  const auto exponent = hn::ShiftRight<kMantissaBits>(bits) - hn::Set(di, kBias);
+  const auto mantissa = hn::Or(hn::And(bits, hn::Set(di, (TI(1) << kMantissaBits) - 1)), hn::BitCast(di, one));
+  const V t = hn::BitCast(d, mantissa) - one;  // in [0, 1)
+  constexpr T kCoefficients[7] = {T(1.442667841911316), T(-0.7205854654312134), T(0.4735533893108368),
+                                  T(-0.32590192556381226), T(0.19429424405097961), T(-0.07955767214298248),
+                                  T(0.015529900789260864)};
+  V p = hn::Set(d, kCoefficients[6]);
+  for (int k = 5; k >= 0; --k) p = p * t + hn::Set(d, kCoefficients[k]);
+  return hn::ConvertTo(d, exponent) + p * t;
+}
 
 // Texture::sampleLevel of one level in the lanes of `active` (the others read a valid texel and
 // are left to the caller).
@@ -150,17 +173,8 @@ HWY_INLINE void SampleLevelLanes(D d, const Texture& texture, int levelIndex, V 
 template <class D, class V = hn::VFromD<D>>
 HWY_INLINE void SampleTextureLanes(D d, const Texture& texture, V u, V v, V texelsPerPixel, V (&out)[4]) {
   const hn::RebindToSigned<D> di;
-  constexpr std::size_t kMaxLanes = hn::MaxLanes(D());
   const V one = hn::Set(d, Real(1));
-  // The level: log2 of the footprint, per lane as std::log2 rounds it.
-  HWY_ALIGN Real footprint[kMaxLanes], lod[kMaxLanes];
-  V levels = hn::Zero(d);
-  if (!hn::AllFalse(d, texelsPerPixel > one)) {  // (magnified everywhere: level 0)
-    hn::Store(texelsPerPixel, d, footprint);
-    for (std::size_t i = 0; i < hn::Lanes(d); ++i) lod[i] = footprint[i] > 1 ? std::log2(footprint[i]) : Real(0);
-    levels = hn::Load(d, lod);
-  }
-  const V clamped = hn::Min(levels, hn::Set(d, Real(texture.levelCount() - 1)));
+  const V clamped = hn::Min(MipLevelLanes(d, texelsPerPixel), hn::Set(d, Real(texture.levelCount() - 1)));
   const V floorLevel = hn::Floor(clamped);
   const V t = clamped - floorLevel;
   const auto level = hn::ConvertTo(di, floorLevel);

@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
+
 namespace illum {
 namespace {
 
@@ -77,6 +80,25 @@ TEST(Texture, MipmapsAverageAndTrilinearPicksByFootprint) {
   // Halfway (√2 texels) is the mean of both levels.
   const Vec4 half = t.sample({0.25, 0.25}, std::sqrt(Real(2)));
   EXPECT_NEAR(half.b, 0.5 * (1 + 128 / 255.0), 1e-5);
+}
+
+TEST(Texture, TheMipLevelIsLog2OfTheFootprint) {
+  // At the blue texel's centre level 0 reads 1 and level 1 reads 128/255: the blue channel gives
+  // the weight of level 1, which is the level's fraction, log2 of the footprint.
+  const Texture t(checker2x2());
+  const Real level1 = 128 / Real(255);
+  const auto levelOf = [&](Real footprint) { return (1 - t.sample({0.25, 0.25}, footprint).b) / (1 - level1); };
+  for (int i = 1; i < 1000; ++i) {
+    const Real footprint = 1 + Real(i) / 1000;
+    EXPECT_NEAR(levelOf(footprint), std::log2(footprint), 2e-6) << footprint;
+  }
+  // Powers of two are levels exactly; a footprint of at most one texel, or not a number, is level
+  // 0; beyond the last level (an infinite footprint too), the last level.
+  EXPECT_EQ(t.sample({0.25, 0.25}, 2).b, level1);
+  for (Real small : {Real(1), Real(0.5), Real(0), Real(-3), std::numeric_limits<Real>::quiet_NaN()})
+    EXPECT_EQ(t.sample({0.25, 0.25}, small).b, 1) << small;
+  for (Real big : {Real(4), Real(1e30), std::numeric_limits<Real>::infinity()})
+    EXPECT_EQ(t.sample({0.25, 0.25}, big).b, level1) << big;
 }
 
 }  // namespace
