@@ -649,15 +649,20 @@ HWY_INLINE std::size_t SamplesPassIn(D d, const TriangleSetup& t, const PixelRec
     int first = minX, last = maxX;
     if (!spans.narrow(t, fy, first, last)) continue;
     const int row = (y - tile.minY) * kTileSize - tile.minX;  // tile-local index of (0, y)
+    // The edge values at the row's first pixel; each group of pixels on adds a·256·pixels to the
+    // multiple of 256 (still a multiple of 256 below 2^32, exact in float) and leaves the rest.
+    V Ehigh[3], Elow[3], step[3];
+    for (int i = 0; i < 3; ++i) {
+      const std::int64_t e = t.edge[i].at(std::int64_t(first) * kSubpixelOne + half, fy);
+      const std::int64_t rest = kSplit ? (e & (kSubpixelOne - 1)) : 0;
+      Ehigh[i] = hn::Set(d, T(e - rest));
+      Elow[i] = hn::Set(d, T(rest));
+      step[i] = hn::Set(d, T(std::int64_t(t.edge[i].a) * kSubpixelOne * pixels));
+    }
     for (int x = first; x <= last; x += pixels) {
-      const std::int64_t fx = std::int64_t(x) * kSubpixelOne + half;
+      if (x != first)
+        for (int i = 0; i < 3; ++i) Ehigh[i] = Ehigh[i] + step[i];
       const auto inRow = hn::Set(dr, Real(last - x));
-      V Ehigh[3], Elow[3];
-      for (int i = 0; i < 3; ++i) {
-        const std::int64_t e = t.edge[i].at(fx, fy), rest = kSplit ? (e & (kSubpixelOne - 1)) : 0;
-        Ehigh[i] = hn::Set(d, T(e - rest));
-        Elow[i] = hn::Set(d, T(rest));
-      }
       for (int v = 0; v < vectors; ++v) {
         const int k = v * lanes;
         V E[3], Ebias[3];
