@@ -270,15 +270,27 @@ std::size_t ShownPairs(const std::uint32_t* winners, int samples, std::uint32_t*
   for (int k = 0; k < lanes; ++k) firstOf[k] = std::uint32_t(k & ~(samples - 1));
   const auto first = hn::SetTableIndices(du, firstOf);
   const std::uint64_t group = samples >= 64 ? ~std::uint64_t(0) : (std::uint64_t(1) << samples) - 1;
+  // Each lane's pixel (from the vector's first), and the lanes that are a pixel's first sample.
+  const int shift = __builtin_ctz(unsigned(samples));
+  const auto lanePixel = hn::ShiftRightSame(hn::Iota(du, 0), shift);
+  const auto leads = hn::Eq(hn::And(hn::Iota(du, 0), hn::Set(du, std::uint32_t(samples - 1))), hn::Zero(du));
   for (int i = 0; i < words; i += lanes) {
     const auto w = hn::LoadU(du, winners + i);
     if (hn::AllTrue(du, hn::Eq(w, none))) continue;
+    const auto agree = hn::Eq(w, hn::TableLookupLanes(w, first));
+    if (hn::AllTrue(du, agree)) {  // every pixel's samples show one record (or none): its first's
+      const auto some = hn::And(leads, hn::Ne(w, none));
+      hn::StoreU(hn::Compress(lanePixel + hn::Set(du, std::uint32_t(i / samples)), some), du, pixel + n);
+      hn::StoreU(hn::Compress(w, some), du, slot + n);
+      n += hn::CountTrue(du, some);
+      continue;
+    }
     std::uint8_t bytes[8] = {};
-    hn::StoreMaskBits(du, hn::Eq(w, hn::TableLookupLanes(w, first)), bytes);
+    hn::StoreMaskBits(du, agree, bytes);
     std::uint64_t same = 0;
     std::memcpy(&same, bytes, sizeof same);
     for (int g = 0; g < lanes; g += samples) {
-      const int index = (i + g) / samples;
+      const int index = (i + g) >> shift;
       const std::uint32_t w0 = winners[i + g];
       if ((same >> g & group) == group) {
         if (w0 != kNoWinner) one(index, w0);
