@@ -632,6 +632,8 @@ HWY_INLINE std::size_t SamplesPassIn(D d, const TriangleSetup& t, const PixelRec
     }
   }
   using V = hn::VFromD<D>;
+  // At most kSamplesMax samples a pixel: the vectors a group of pixels takes.
+  constexpr int kRowVectors = std::max(1, kSamplesMax / int(hn::MaxLanes(D())));
   V bias[3];
   for (int i = 0; i < 3; ++i) bias[i] = hn::Set(d, T(t.edge[i].bias));
   const auto toReal = [&](V v) {
@@ -650,32 +652,34 @@ HWY_INLINE std::size_t SamplesPassIn(D d, const TriangleSetup& t, const PixelRec
     if (!spans.narrow(t, fy, first, last)) continue;
     const int row = (y - tile.minY) * kTileSize - tile.minX;  // tile-local index of (0, y)
     // The edge values at the row's first pixel; each group of pixels on adds a·256·pixels to the
-    // multiple of 256 (still a multiple of 256 below 2^32, exact in float) and leaves the rest.
-    V Ehigh[3], Elow[3], step[3];
+    // multiples of 256 (still multiples of 256 below 2^32, exact in float) and leaves the rests,
+    // whose sums with the top-left bias are the row's too.
+    V Ehigh[3], Elow[3], step[3], h[3][kRowVectors], rest[3][kRowVectors], restBias[3][kRowVectors];
     for (int i = 0; i < 3; ++i) {
       const std::int64_t e = t.edge[i].at(std::int64_t(first) * kSubpixelOne + half, fy);
-      const std::int64_t rest = kSplit ? (e & (kSubpixelOne - 1)) : 0;
-      Ehigh[i] = hn::Set(d, T(e - rest));
-      Elow[i] = hn::Set(d, T(rest));
+      const std::int64_t r = kSplit ? (e & (kSubpixelOne - 1)) : 0;
+      Ehigh[i] = hn::Set(d, T(e - r));
+      Elow[i] = hn::Set(d, T(r));
       step[i] = hn::Set(d, T(std::int64_t(t.edge[i].a) * kSubpixelOne * pixels));
+      for (int v = 0; v < vectors; ++v) {
+        h[i][v] = Ehigh[i] + hn::Load(d, high[i] + v * lanes);
+        rest[i][v] = Elow[i] + hn::Load(d, low[i] + v * lanes);
+        restBias[i][v] = rest[i][v] + bias[i];
+      }
     }
     for (int x = first; x <= last; x += pixels) {
       if (x != first)
-        for (int i = 0; i < 3; ++i) Ehigh[i] = Ehigh[i] + step[i];
+        for (int i = 0; i < 3; ++i) {
+          Ehigh[i] = Ehigh[i] + step[i];
+          for (int v = 0; v < vectors; ++v) h[i][v] = h[i][v] + step[i];
+        }
       const auto inRow = hn::Set(dr, Real(last - x));
       for (int v = 0; v < vectors; ++v) {
         const int k = v * lanes;
         V E[3], Ebias[3];
         for (int i = 0; i < 3; ++i) {
-          const V h = Ehigh[i] + hn::Load(d, high[i] + k);
-          if constexpr (kSplit) {
-            const V l = Elow[i] + hn::Load(d, low[i] + k);
-            E[i] = h + l;
-            Ebias[i] = h + (l + bias[i]);
-          } else {
-            E[i] = h;
-            Ebias[i] = h + bias[i];
-          }
+          E[i] = kSplit ? h[i][v] + rest[i][v] : h[i][v];
+          Ebias[i] = h[i][v] + restBias[i][v];
         }
         // Converting to Real keeps the sign and zero, so the test can run in the narrow lanes.
         const auto inside = hn::And(hn::And(hn::And(toReal(Ebias[0]) >= zero, toReal(Ebias[1]) >= zero),
