@@ -4,6 +4,10 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 namespace illum {
 
@@ -75,18 +79,35 @@ void applyDisplay(Image& image, const Display& display, const Vec4* background) 
   if (display.identity()) return;
   std::array<std::uint8_t, 256> table;
   for (int i = 0; i < 256; ++i) table[std::size_t(i)] = byte(displayValue(Real(i) / 255, display));
+  // Pixels as RGBA words (bytes in memory order): a background pixel, compared whole, takes the
+  // background's shown bytes; any other has its three colour bytes mapped and keeps its alpha.
+  const auto word = [](const std::array<std::uint8_t, 4>& bytes) {
+    std::uint32_t w;
+    std::memcpy(&w, bytes.data(), 4);
+    return w;
+  };
   std::array<std::uint8_t, 4> stored{}, shown{};
   if (background) {
     for (int c = 0; c < 4; ++c) stored[std::size_t(c)] = byte((*background)[c]);
     shown = backgroundBytes(*background, display);
   }
-  for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
-    if (background && std::equal(stored.begin(), stored.end(), image.rgba.begin() + long(i))) {
-      std::copy(shown.begin(), shown.end(), image.rgba.begin() + long(i));
-      continue;
+  const std::uint32_t storedWord = word(stored), shownWord = word(shown);
+  const bool hasBackground = background != nullptr;
+  const std::size_t pixels = image.rgba.size() / 4;
+  std::uint8_t* const data = image.rgba.data();
+  // Each pixel on its own: any split over threads gives the same bytes.
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pixels, 1 << 15), [&](const tbb::blocked_range<std::size_t>& r) {
+    for (std::size_t i = r.begin(); i < r.end(); ++i) {
+      std::uint8_t* p = data + 4 * i;
+      std::uint32_t w;
+      std::memcpy(&w, p, 4);
+      if (hasBackground && w == storedWord) {
+        std::memcpy(p, &shownWord, 4);
+        continue;
+      }
+      p[0] = table[p[0]], p[1] = table[p[1]], p[2] = table[p[2]];
     }
-    for (std::size_t c = 0; c < 3; ++c) image.rgba[i + c] = table[image.rgba[i + c]];
-  }
+  });
 }
 
 }  // namespace illum
