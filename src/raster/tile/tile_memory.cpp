@@ -88,13 +88,24 @@ std::size_t ResolvePixels(const std::uint32_t* src, int samples, int srcRowPixel
   const auto first = hn::SetTableIndices(du, firstOf);
   const std::uint64_t group = samples >= 64 ? ~std::uint64_t(0) : (std::uint64_t(1) << samples) - 1;
   const int perVector = lanes / samples;
+  // The lanes that are a pixel's first sample, and the vector's pixels once compressed.
+  const auto leads = hn::Eq(hn::And(hn::Iota(du, 0), hn::Set(du, std::uint32_t(samples - 1))), hn::Zero(du));
+  const auto pixels = hn::FirstN(du, std::size_t(perVector));
+  const auto backgroundWord = hn::Set(du, background);
   for (int r = 0; r < rows; ++r) {
     const std::uint32_t* row = src + std::size_t(r) * std::size_t(srcRowPixels) * std::size_t(samples);
     std::uint8_t* to = dst + r * dstStride;
     for (int x = 0; x < count; x += perVector) {
       const auto w = hn::LoadU(du, row + std::size_t(x) * std::size_t(samples));
+      const auto agree = hn::Eq(w, hn::TableLookupLanes(w, first));
+      if (x + perVector <= count && hn::AllTrue(du, agree)) {  // each pixel's samples agree: its first
+        std::uint32_t* out = reinterpret_cast<std::uint32_t*>(to + 4 * x);  // (image rows are whole words)
+        hn::BlendedStore(hn::Compress(w, leads), pixels, du, out);
+        unlike += hn::CountTrue(du, hn::And(leads, hn::Ne(w, backgroundWord)));
+        continue;
+      }
       std::uint8_t bytes[8] = {};
-      hn::StoreMaskBits(du, hn::Eq(w, hn::TableLookupLanes(w, first)), bytes);
+      hn::StoreMaskBits(du, agree, bytes);
       std::uint64_t same = 0;
       std::memcpy(&same, bytes, sizeof same);
       for (int g = 0; g < perVector && x + g < count; ++g) {
