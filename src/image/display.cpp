@@ -95,17 +95,32 @@ void applyDisplay(Image& image, const Display& display, const Vec4* background) 
   const bool hasBackground = background != nullptr;
   const std::size_t pixels = image.rgba.size() / 4;
   std::uint8_t* const data = image.rgba.data();
-  // Each pixel on its own: any split over threads gives the same bytes.
+  const auto mapped = [table, storedWord, shownWord, hasBackground](std::uint32_t w) {
+    if (hasBackground && w == storedWord) return shownWord;
+    return std::uint32_t(table[w & 0xFF]) | std::uint32_t(table[w >> 8 & 0xFF]) << 8 |
+           std::uint32_t(table[w >> 16 & 0xFF]) << 16 | (w & 0xFF000000u);
+  };
+  // Each pixel on its own: any split over threads gives the same bytes. Runs of background (most
+  // of a model preview) are found 16 pixels at a time.
+  constexpr std::size_t kRun = 16;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pixels, 1 << 15), [&](const tbb::blocked_range<std::size_t>& r) {
-    for (std::size_t i = r.begin(); i < r.end(); ++i) {
+    std::size_t i = r.begin();
+    std::uint32_t w[kRun];
+    for (; i + kRun <= r.end(); i += kRun) {
       std::uint8_t* p = data + 4 * i;
-      std::uint32_t w;
-      std::memcpy(&w, p, 4);
-      if (hasBackground && w == storedWord) {
-        std::memcpy(p, &shownWord, 4);
-        continue;
-      }
-      p[0] = table[p[0]], p[1] = table[p[1]], p[2] = table[p[2]];
+      std::memcpy(w, p, sizeof w);
+      bool all = hasBackground;
+      for (std::size_t k = 0; k < kRun; ++k) all &= w[k] == storedWord;
+      if (all)
+        std::fill_n(w, kRun, shownWord);
+      else
+        for (std::size_t k = 0; k < kRun; ++k) w[k] = mapped(w[k]);
+      std::memcpy(p, w, sizeof w);
+    }
+    for (; i < r.end(); ++i) {
+      std::memcpy(w, data + 4 * i, 4);
+      w[0] = mapped(w[0]);
+      std::memcpy(data + 4 * i, w, 4);
     }
   });
 }
