@@ -22,7 +22,6 @@ HWY_BEFORE_NAMESPACE();
 namespace illum::HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
-
 #if (HWY_TARGET == HWY_AVX3 || HWY_TARGET == HWY_AVX3_DL) && !ILLUM_USE_DOUBLE
 // A 256-entry float table held in sixteen registers and read with two-table permutes (each
 // vpermi2ps picks from 32 entries by an index's low five bits, and the top three bits choose among
@@ -56,13 +55,13 @@ HWY_INLINE void WordPairs(const std::uint32_t* words, hn::Vec512<std::int32_t> i
   first = hn::Vec512<std::int32_t>{_mm512_permutex2var_epi32(low, even, high)};
   second = hn::Vec512<std::int32_t>{_mm512_permutex2var_epi32(low, odd, high)};
 }
-#define ILLUM_TABLE_REGISTERS 1
+#define ILLUM_TEXELS_AVX512 1
 #endif
 
 // The mip level (GL's λ) of a footprint of x base texels a pixel: log2 x where x > 1, else 0 (a NaN
 // too). log2 is the exponent plus a degree-7 polynomial in the mantissa (a least-squares fit on
 // [1, 2): error below 5e-7, 0 at powers of two, increasing), in separate multiplies and adds, so
-// every target and Texture::sample (one lane) give the same bits, at a tenth of std::log2's cost.
+// every target and Texture::sample (one lane) give the same bits, without a call per lane.
 template <class D, class V = hn::VFromD<D>>
 HWY_INLINE V MipLevelLanes(D d, V x) {
   using T = hn::TFromD<D>;
@@ -124,7 +123,7 @@ HWY_INLINE void SampleLevelLanes(D d, const Texture& texture, int levelIndex, V 
   const auto rowStart = [&](auto r) { return (hn::Set(di, height - 1) - r) * hn::Set(di, width); };
   const auto* words = reinterpret_cast<const std::uint32_t*>(level.rgba.data());
   const Real* color = texture.colorTable();
-#if defined(ILLUM_TABLE_REGISTERS)
+#if defined(ILLUM_TEXELS_AVX512)
   const TableRegisters colorRegisters(color);
 #endif
   const bool linear = texture.encoding() == TexelEncoding::Linear;
@@ -141,7 +140,7 @@ HWY_INLINE void SampleLevelLanes(D d, const Texture& texture, int levelIndex, V 
     // sRGB colour bytes are looked up.
     t[3] = opaque ? hn::Set(d, Real(1)) : hn::ConvertTo(d, bytes[3]) / max;
     for (int c = 0; c < 3; ++c)
-#if defined(ILLUM_TABLE_REGISTERS)
+#if defined(ILLUM_TEXELS_AVX512)
       t[c] = linear ? hn::ConvertTo(d, bytes[c]) / max : colorRegisters(bytes[c]);
 #else
       t[c] = linear ? hn::ConvertTo(d, bytes[c]) / max : hn::GatherIndex(d, color, bytes[c]);
@@ -150,7 +149,7 @@ HWY_INLINE void SampleLevelLanes(D d, const Texture& texture, int levelIndex, V 
   V t00[4], t10[4], t01[4], t11[4];
   const auto r0 = rowStart(y0), r1 = rowStart(y1);
   hn::VFromD<decltype(di)> w00, w10, w01, w11;
-#if defined(ILLUM_TABLE_REGISTERS)
+#if defined(ILLUM_TEXELS_AVX512)
   // Where every lane's right texel is its left one's neighbour in memory (not across a wrap or a
   // clamped edge), a row's two texels are one eight-byte read.
   if (width > 1 && hn::AllTrue(di, hn::Or(hn::Not(activeI), x1 == x0 + hn::Set(di, 1)))) {
@@ -204,6 +203,6 @@ HWY_INLINE void SampleTextureLanes(D d, const Texture& texture, V u, V v, V texe
 }  // namespace illum::HWY_NAMESPACE
 HWY_AFTER_NAMESPACE();
 
-#undef ILLUM_TABLE_REGISTERS
+#undef ILLUM_TEXELS_AVX512
 
 #endif  // ILLUM_IMAGE_TEXTURE_LANES_INL_H_
