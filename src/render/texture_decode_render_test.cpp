@@ -9,6 +9,7 @@
 #include <illum/scene.h>
 
 #include <gtest/gtest.h>
+#include <hwy/targets.h>
 
 namespace illum {
 namespace {
@@ -46,16 +47,21 @@ Scene decodeScene(TexelEncoding encoding, bool opaque, int pixels, Real texels, 
 }
 
 TEST(TextureDecode, EveryByteDrawsTheReferencePipelinesBytes) {
-  for (TexelEncoding encoding : {TexelEncoding::Srgb, TexelEncoding::Linear})
-    for (bool opaque : {true, false})
-      for (Shading shading : {Shading::Gouraud, Shading::Phong})
-        for (Real texels : {Real(16), Real(160)}) {  // 16 texels over 64 pixels, then 160: mipmapped
-          const Scene scene = decodeScene(encoding, opaque, 64, texels, shading);
-          const Image drawn = renderScene(scene);
-          EXPECT_EQ(drawn.rgba, renderSceneReference(scene).rgba)
-              << (encoding == TexelEncoding::Srgb ? "srgb" : "linear") << (opaque ? " opaque " : " alpha ")
-              << toString(shading) << " " << texels;
-        }
+  // On every SIMD target this CPU has: the table in registers (AVX-512) or gathered.
+  for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+    hwy::SetSupportedTargetsForTest(target);
+    for (TexelEncoding encoding : {TexelEncoding::Srgb, TexelEncoding::Linear})
+      for (bool opaque : {true, false})
+        for (Shading shading : {Shading::Gouraud, Shading::Phong})
+          for (Real texels : {Real(16), Real(160)}) {  // 16 texels over 64 pixels, then 160: mipmapped
+            const Scene scene = decodeScene(encoding, opaque, 64, texels, shading);
+            const Image drawn = renderScene(scene);
+            EXPECT_EQ(drawn.rgba, renderSceneReference(scene).rgba)
+                << (encoding == TexelEncoding::Srgb ? "srgb" : "linear") << (opaque ? " opaque " : " alpha ")
+                << toString(shading) << " " << texels << " " << hwy::TargetName(target);
+          }
+  }
+  hwy::SetSupportedTargetsForTest(0);
 }
 
 TEST(TextureDecode, TexelCentresShowTheirOwnBytes) {

@@ -88,9 +88,8 @@ std::size_t ResolvePixels(const std::uint32_t* src, int samples, int srcRowPixel
   const auto first = hn::SetTableIndices(du, firstOf);
   const std::uint64_t group = samples >= 64 ? ~std::uint64_t(0) : (std::uint64_t(1) << samples) - 1;
   const int perVector = lanes / samples;
-  // The lanes that are a pixel's first sample, and the vector's pixels once compressed.
+  // The lanes that are a pixel's first sample.
   const auto leads = hn::Eq(hn::And(hn::Iota(du, 0), hn::Set(du, std::uint32_t(samples - 1))), hn::Zero(du));
-  const auto pixels = hn::FirstN(du, std::size_t(perVector));
   const auto backgroundWord = hn::Set(du, background);
   for (int r = 0; r < rows; ++r) {
     const std::uint32_t* row = src + std::size_t(r) * std::size_t(srcRowPixels) * std::size_t(samples);
@@ -99,8 +98,11 @@ std::size_t ResolvePixels(const std::uint32_t* src, int samples, int srcRowPixel
       const auto w = hn::LoadU(du, row + std::size_t(x) * std::size_t(samples));
       const auto agree = hn::Eq(w, hn::TableLookupLanes(w, first));
       if (x + perVector <= count && hn::AllTrue(du, agree)) {  // each pixel's samples agree: its first
-        std::uint32_t* out = reinterpret_cast<std::uint32_t*>(to + 4 * x);  // (image rows are whole words)
-        hn::BlendedStore(hn::Compress(w, leads), pixels, du, out);
+        // (Through a buffer: a masked store is emulated on some targets by a read and write of the
+        // whole vector, which could reach a neighbouring tile that another thread is copying.)
+        HWY_ALIGN std::uint32_t firsts[hn::MaxLanes(du)];
+        hn::Store(hn::Compress(w, leads), du, firsts);
+        std::memcpy(to + 4 * x, firsts, 4 * std::size_t(perVector));
         unlike += hn::CountTrue(du, hn::And(leads, hn::Ne(w, backgroundWord)));
         continue;
       }
