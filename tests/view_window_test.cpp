@@ -175,6 +175,11 @@ TEST_F(ViewWindow, AModelIsFramedAsRenderFramesItWithThePanelsBeside) {
   v->key("Tab");
   const Image panels = v->waitFor([](const Image& s) { return s.width > 640; });
   EXPECT_EQ(panels.width, 640 + 460);
+  // Below the widgets, the strip's opaque fill: ImGui's dark window colour (0.06 at alpha 0.94)
+  // over black, the bytes ImGui's own blended background gave.
+  const std::size_t below = (std::size_t(390) * std::size_t(panels.width) + 640 + 230) * 4;
+  EXPECT_EQ(std::vector<std::uint8_t>(panels.rgba.begin() + long(below), panels.rgba.begin() + long(below) + 3),
+            (std::vector<std::uint8_t>{14, 14, 14}));
   v->click(330, 210);  // the duck's middle: its report in the panel
   const Image withReport = v->waitFor([&](const Image& s) { return differingPixels(s, panels) > 1000; });
   EXPECT_GT(differingPixels(withReport, panels), 1000u);

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <string>
 
 namespace illum::view {
@@ -220,7 +221,8 @@ void materialPanel(ViewState& state) {
 void drawPanels(ViewState& state, PanelState& panels, const Frame* frame, double fps, int left, int height) {
   ImGui::SetNextWindowPos(ImVec2(float(left), 0));
   ImGui::SetNextWindowSize(ImVec2(float(kPanelWidth), float(height)));
-  ImGui::Begin("illum view", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+  ImGui::Begin("illum view", nullptr,
+               ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoBackground);
   ImGui::PushItemWidth(float(kPanelWidth) * 0.42f);  // room for the labels, which name the keys and options
   scenePanel(state);
   if (ImGui::CollapsingHeader("lights")) lightPanel(state, panels);
@@ -244,6 +246,12 @@ void drawPanels(ViewState& state, PanelState& panels, const Frame* frame, double
   if (!panels.message.empty()) ImGui::TextWrapped("%s", panels.message.c_str());
   ImGui::PopItemWidth();
   ImGui::End();
+}
+
+std::array<unsigned char, 3> panelBackground() {
+  const ImVec4 c = ImGui::GetStyle().Colors[ImGuiCol_WindowBg];
+  const auto over = [&](float v) { return static_cast<unsigned char>(std::lround(std::clamp(v * c.w, 0.0f, 1.0f) * 255)); };
+  return {over(c.x), over(c.y), over(c.z)};
 }
 
 void drawHelp() {

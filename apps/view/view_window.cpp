@@ -16,11 +16,13 @@
 #include <imgui_impl_sdlrenderer.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -98,24 +100,46 @@ void drawHandles(const ViewState& state) {
   }
 }
 
+// Fills the window but `picture`: in the panels' background colour when they are shown (they
+// stand to its right), black otherwise.
+void fillAround(const Window& w, const SDL_Rect& picture, bool panels) {
+  int width = 0, height = 0;
+  SDL_GetRendererOutputSize(w.renderer, &width, &height);
+  const auto [r, g, b] = panels ? panelBackground() : std::array<unsigned char, 3>{0, 0, 0};
+  SDL_SetRenderDrawBlendMode(w.renderer, SDL_BLENDMODE_NONE);
+  SDL_SetRenderDrawColor(w.renderer, r, g, b, 255);
+  const SDL_Rect right{picture.w, 0, width - picture.w, height};
+  const SDL_Rect below{0, picture.h, picture.w, height - picture.h};
+  for (const SDL_Rect& rect : {right, below})
+    if (rect.w > 0 && rect.h > 0) SDL_RenderFillRect(w.renderer, &rect);
+}
+
+// The CPU time this thread has used, in milliseconds: presenting's own cost, apart from the
+// time it waits for a core the frame's workers hold.
+double threadCpuMs() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
+}
+
 // How the frames came, for -v: how many were shown, how long drawing and presenting took.
 struct Pace {
   int frames = 0;
-  double drawMs = 0, presentMs = 0;
+  double drawMs = 0, presentMs = 0, presentCpuMs = 0;
   Clock::time_point first, last;
-  void shown(double draw, double present) {
+  void shown(double draw, double present, double presentCpu) {
     last = Clock::now();
     if (frames++ == 0) first = last;
-    drawMs += draw, presentMs += present;
+    drawMs += draw, presentMs += present, presentCpuMs += presentCpu;
   }
   void report() const {
     if (frames == 0) return;
     const double seconds = std::chrono::duration<double>(last - first).count();
     std::fprintf(stderr,
                  "illum view: %d frames shown in %.2f s (%.1f frames/s); drawing a frame took %.2f ms, presenting it "
-                 "(texture, panels, window) %.2f ms on average\n",
+                 "(texture, panels, window) %.2f ms on average, %.2f ms of them on a core\n",
                  frames, seconds, frames > 1 && seconds > 0 ? (frames - 1) / seconds : 0.0, drawMs / frames,
-                 presentMs / frames);
+                 presentMs / frames, presentCpuMs / frames);
   }
 };
 
@@ -330,6 +354,7 @@ int runViewer(const std::vector<std::string>& files, const cli::SceneOptions& op
     }
     Frame next;
     const auto presenting = Clock::now();
+    const double presentingCpu = threadCpuMs();
     const bool fresh = worker.take(next);
     if (fresh) {
       const auto now = Clock::now();
@@ -373,17 +398,22 @@ int runViewer(const std::vector<std::string>& files, const cli::SceneOptions& op
       ImGui::GetForegroundDrawList()->AddCircle(ImVec2(float(x) + 0.5f, float(y) + 0.5f), 6, IM_COL32(255, 64, 64, 255), 16, 2);
     }
     ImGui::Render();
-    SDL_SetRenderDrawColor(w.renderer, 0, 0, 0, 255);
-    SDL_RenderClear(w.renderer);
+    // The picture, opaque, over its place; only the rest of the window is filled (the panels'
+    // strip in their background colour): clearing the whole window first would write every
+    // pixel twice.
+    SDL_Rect shown{0, 0, 0, 0};
     if (const PictureTexture& p = *w.picture; p.texture()) {
       // A tracer's quick picture (half the pixels each way) stretched over the picture's place.
       const bool quick = p.width() * 2 <= state.scene().width || p.height() * 2 <= state.scene().height;
-      const SDL_Rect to{0, 0, quick ? state.scene().width : p.width(), quick ? state.scene().height : p.height()};
-      SDL_RenderCopy(w.renderer, p.texture(), nullptr, &to);
+      shown = {0, 0, quick ? state.scene().width : p.width(), quick ? state.scene().height : p.height()};
+      SDL_RenderCopy(w.renderer, p.texture(), nullptr, &shown);
     }
+    fillAround(w, shown, state.toggles().panels);
     ImGui_ImplSDLRenderer_RenderDrawData(ImGui::GetDrawData());
     SDL_RenderPresent(w.renderer);
-    if (fresh) pace.shown(frame.ms, std::chrono::duration<double, std::milli>(Clock::now() - presenting).count());
+    if (fresh)
+      pace.shown(frame.ms, std::chrono::duration<double, std::milli>(Clock::now() - presenting).count(),
+                 threadCpuMs() - presentingCpu);
   }
   if (options.verbose) pace.report();
   return 0;
