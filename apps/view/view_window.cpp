@@ -122,24 +122,29 @@ double threadCpuMs() {
   return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
 }
 
-// How the frames came, for -v: how many were shown, how long drawing and presenting took.
+// How the frames came, for -v: how many were shown and how fast while they came one after the
+// other (gaps of half a second or more, when nothing moved, are not counted: a rate taken from the
+// first frame would count the wait before a drag), how long drawing and presenting took.
 struct Pace {
-  int frames = 0;
-  double drawMs = 0, presentMs = 0, presentCpuMs = 0;
-  Clock::time_point first, last;
+  int frames = 0, steady = 0;  // frames shown; of them, those that followed another closely
+  double drawMs = 0, presentMs = 0, presentCpuMs = 0, steadySeconds = 0;
+  Clock::time_point last;
   void shown(double draw, double present, double presentCpu) {
-    last = Clock::now();
-    if (frames++ == 0) first = last;
+    const auto now = Clock::now();
+    if (frames++ > 0) {
+      const double gap = std::chrono::duration<double>(now - last).count();
+      if (gap < 0.5) ++steady, steadySeconds += gap;
+    }
+    last = now;
     drawMs += draw, presentMs += present, presentCpuMs += presentCpu;
   }
   void report() const {
     if (frames == 0) return;
-    const double seconds = std::chrono::duration<double>(last - first).count();
     std::fprintf(stderr,
-                 "illum view: %d frames shown in %.2f s (%.1f frames/s); drawing a frame took %.2f ms, presenting it "
-                 "(texture, panels, window) %.2f ms on average, %.2f ms of them on a core\n",
-                 frames, seconds, frames > 1 && seconds > 0 ? (frames - 1) / seconds : 0.0, drawMs / frames,
-                 presentMs / frames, presentCpuMs / frames);
+                 "illum view: %d frames shown, %.1f frames/s while they came one after another; drawing a frame took "
+                 "%.2f ms, presenting it (texture, panels, window) %.2f ms on average, %.2f ms of them on a core\n",
+                 frames, steadySeconds > 0 ? steady / steadySeconds : 0.0, drawMs / frames, presentMs / frames,
+                 presentCpuMs / frames);
   }
 };
 
