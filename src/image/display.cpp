@@ -1,5 +1,9 @@
 #include <illum/display.h>
 
+#include <hwy/highway.h>
+
+#include "math/tone_map-inl.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -34,19 +38,12 @@ std::optional<Encoding> parseEncoding(std::string_view name) {
   return std::nullopt;
 }
 
+// The lanes' ToneMappedLanes on one lane of the static target (every target computes the same
+// bits).
 Real toneMapped(Real x, ToneMap toneMap) {
-  if (!(x > 0)) return 0;  // negative and NaN: black
-  switch (toneMap) {
-    case ToneMap::None: return x;
-    case ToneMap::Reinhard: return std::isinf(x) ? Real(1) : x / (1 + x);
-    case ToneMap::Aces: {
-      // Narkowicz (2015), "ACES Filmic Tone Mapping Curve": a rational fit of the RRT + ODT.
-      if (std::isinf(x)) return 1;
-      const Real y = (x * (Real(2.51) * x + Real(0.03))) / (x * (Real(2.43) * x + Real(0.59)) + Real(0.14));
-      return std::clamp(y, Real(0), Real(1));
-    }
-  }
-  return x;
+  namespace hn = hwy::HWY_NAMESPACE;
+  const hn::CappedTag<Real, 1> d;
+  return hn::GetLane(HWY_NAMESPACE::ToneMappedLanes(d, hn::Set(d, x), toneMap));
 }
 
 Real srgbEncoded(Real x) {

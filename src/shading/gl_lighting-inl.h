@@ -18,6 +18,7 @@
 
 #include <illum/lighting.h>
 
+#include "math/tone_map-inl.h"
 #include "shading/brdf-inl.h"
 #include "shading/cook_torrance-inl.h"
 #include "shading/image_light-inl.h"
@@ -293,22 +294,14 @@ HWY_INLINE TermsL<V> ShadeEquation(D d, std::span<const EyeLight> lights, const 
 }
 
 // The colour GL writes: each channel of the sum clamped to [0,1], alpha the diffuse alpha's; under
-// a tone map (LightModel::toneMap), the sum tone mapped first, each lane by display.h's toneMapped
-// (the one formula the ray tracers' pixels take too; per lane, as a vector division could round
-// differently).
+// a tone map (LightModel::toneMap), the sum tone mapped first by ToneMappedLanes (the one formula
+// the ray tracers' pixels take too, through display.h's toneMapped).
 template <class D, class V = hn::VFromD<D>>
 HWY_INLINE void ClampedColor(D d, const TermsL<V>& t, V alpha, ToneMap toneMap, V& r, V& g, V& b, V& a) {
   const V zero = hn::Zero(d), one = hn::Set(d, Real(1));
   Vec3L<V> sum = t.emission + t.ambient + t.diffuse + t.specular;
-  if (toneMap != ToneMap::None) {
-    constexpr std::size_t kMaxLanes = hn::MaxLanes(D());
-    HWY_ALIGN Real channel[kMaxLanes];
-    for (V* c : {&sum.x, &sum.y, &sum.z}) {
-      hn::Store(*c, d, channel);
-      for (std::size_t i = 0; i < hn::Lanes(d); ++i) channel[i] = toneMapped(channel[i], toneMap);
-      *c = hn::Load(d, channel);
-    }
-  }
+  if (toneMap != ToneMap::None)
+    for (V* c : {&sum.x, &sum.y, &sum.z}) *c = ToneMappedLanes(d, *c, toneMap);
   r = hn::Min(hn::Max(sum.x, zero), one);
   g = hn::Min(hn::Max(sum.y, zero), one);
   b = hn::Min(hn::Max(sum.z, zero), one);
