@@ -649,7 +649,10 @@ HWY_INLINE std::size_t SamplesPassIn(D d, const TriangleSetup& t, const PixelRec
   for (int y = minY; y <= maxY; ++y) {
     const std::int64_t fy = std::int64_t(y) * kSubpixelOne + half;
     int first = minX, last = maxX;
-    if (!spans.narrow(t, fy, first, last)) continue;
+    // Narrowing a row costs about what testing two vectors of its samples does: a row of at most
+    // two vectors is tested whole (the tests are exact either way; narrowing only skips vectors).
+    // Measured: spheres_1m_8lights_phong at 4 samples −15 % CPU time, 2CylinderEngine −5 to −8 %.
+    if (last - first + 1 > 2 * pixels && !spans.narrow(t, fy, first, last)) continue;
     const int row = (y - tile.minY) * kTileSize - tile.minX;  // tile-local index of (0, y)
     // The edge values at the row's first pixel; each group of pixels on adds a·256·pixels to the
     // multiples of 256 (still multiples of 256 below 2^32, exact in float) and leaves the rests,
