@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <utility>
 
 namespace illum::view {
 namespace {
@@ -56,6 +57,7 @@ void RenderWorker::request(std::shared_ptr<const Scene> scene, std::uint64_t ver
 bool RenderWorker::take(Frame& out) {
   const std::lock_guard lock(mutex_);
   if (!done_) return false;
+  spare_ = std::move(out.image);
   out = std::move(*done_);
   done_.reset();
   return true;
@@ -110,6 +112,10 @@ void RenderWorker::draw(const Request& r) {
       scene = fewer;
     }
     Frame f;
+    {
+      const std::lock_guard lock(mutex_);
+      f.image = std::exchange(spare_, Image());  // drawn over whole: every pixel is written
+    }
     std::optional<PixelProbe> probe;
     if (r.probe && !coarse) {
       probe.emplace();

@@ -44,7 +44,9 @@ class RenderWorker {
 
   // Draw `scene` (with the pixel (x, y), if any, watched): what is in flight is abandoned.
   void request(std::shared_ptr<const Scene> scene, std::uint64_t version, std::optional<std::pair<int, int>> probe);
-  // The newest finished frame, when one came since the last call.
+  // The newest finished frame, when one came since the last call: it replaces `out`, whose
+  // picture's memory the worker draws its next frame into (a new 1280×720 picture each frame
+  // would be 3.7 MB zeroed and faulted in, then unmapped on the window's thread).
   bool take(Frame& out);
   // Whether a frame is being drawn (or refined) now.
   bool busy() const { return busy_.load(); }
@@ -62,6 +64,7 @@ class RenderWorker {
   std::condition_variable wake_;
   std::optional<Request> pending_;
   std::optional<Frame> done_;
+  Image spare_;  // the picture `take` was handed back, drawn into next
   std::atomic<bool> cancel_{false}, quit_{false}, busy_{false};
   bool refining_ = false;  // beyond the first frame of a request (under mutex_)
   Renderer renderer_;

@@ -279,6 +279,13 @@ TEST(RenderWorker, FramesAreTheRenderersPictures) {
   ASSERT_TRUE(waitFor(f, true));
   EXPECT_EQ(f.samples, 16);
   EXPECT_EQ(f.image.rgba, renderScene(traced).rgba);
+  // Each take hands the last picture back to be drawn into: a frame drawn over the traced one's
+  // memory is still the renderer's picture, nothing of the old one left.
+  Scene turned = s.scene();
+  turned.camera.eye = turned.camera.eye + Vec3(0.5, 0.25, 0);
+  worker.request(std::make_shared<Scene>(turned), s.version() + 2, std::nullopt);
+  ASSERT_TRUE(waitFor(f, true));
+  EXPECT_EQ(f.image.rgba, renderScene(turned).rgba);
 }
 
 // Saving: a picture and a scene file under the first free names, never over a file; the scene

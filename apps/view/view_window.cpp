@@ -357,16 +357,14 @@ int runViewer(const std::vector<std::string>& files, const cli::SceneOptions& op
       requested = state.version();
       worker.request(std::make_shared<Scene>(state.drawn()), requested, state.probe());
     }
-    Frame next;
     const auto presenting = Clock::now();
     const double presentingCpu = threadCpuMs();
-    const bool fresh = worker.take(next);
+    const bool fresh = worker.take(frame);  // the frame shown so far goes back to be drawn into
     if (fresh) {
       const auto now = Clock::now();
       const double seconds = std::chrono::duration<double>(now - lastFrame).count();
       lastFrame = now;
       fps = seconds > 0 ? 1 / seconds : 0;
-      frame = std::move(next);
       haveFrame = true;
       w.picture->update(frame.image);
     }
