@@ -14,53 +14,52 @@
 namespace illum {
 
 // Which pixels of a row may have a sample inside the triangle: for each edge, where its value at
-// the pixel centre plus the largest of its samples' offsets keeps E + bias ≥ 0. E moves by
-// A = 256·a a pixel, so the bound is a quotient: taken in double through 1/A, then checked and
-// moved by a pixel in exact integers.
+// the pixel centre plus the largest of its samples' offsets keeps E + bias ≥ 0. Along a row E moves
+// by A = 256·a a pixel and from row to row by B = 256·b, so each edge's bound is a quotient that
+// moves by −B/A a row, stepped in double. The span is only ever wider than the exact one: each
+// bound is widened by a thousandth of a pixel, far more than double's error on quotients below
+// 2^32 in magnitude, so a pixel is at worst tested needlessly (exactly, by the coverage kernel),
+// never left out.
 struct RowSpans {
-  std::int64_t need[3];  // −(reach + bias): E at the centre must be at least this
-  double inverse[3];     // 1/A, 0 where A = 0
+  int minX, minY;        // the bounds' first pixel, where the quotients are taken
+  std::int64_t need[3];  // −(reach + bias) − E at (minX, minY): what A·dx + B·dy must reach
+  std::int64_t B[3];     // 256·b: E's step a row
+  double q0[3], dq[3];   // need / A and −B / A, where A ≠ 0
+  bool rising[3];        // A > 0: the bound is the row's first pixel; A < 0: its last
   // `samples`: where a pixel's samples lie from its centre (none: the centre alone).
-  RowSpans(const TriangleSetup& t, std::span<const SubpixelOffset> samples) {
+  RowSpans(const TriangleSetup& t, std::span<const SubpixelOffset> samples, int minX_, int minY_)
+      : minX(minX_), minY(minY_) {
+    const std::int64_t half = kSubpixelOne / 2;
     for (int i = 0; i < 3; ++i) {
+      const EdgeFunction& e = t.edge[i];
       std::int64_t reach = samples.empty() ? 0 : std::numeric_limits<std::int64_t>::min();
-      for (const SubpixelOffset& o : samples)
-        reach = std::max(reach, std::int64_t(t.edge[i].a) * o.x + std::int64_t(t.edge[i].b) * o.y);
-      need[i] = -(reach + t.edge[i].bias);
-      const std::int64_t A = std::int64_t(t.edge[i].a) * kSubpixelOne;
-      inverse[i] = A != 0 ? 1.0 / double(A) : 0.0;
+      for (const SubpixelOffset& o : samples) reach = std::max(reach, std::int64_t(e.a) * o.x + std::int64_t(e.b) * o.y);
+      need[i] = -(reach + e.bias) - e.at(std::int64_t(minX) * kSubpixelOne + half, std::int64_t(minY) * kSubpixelOne + half);
+      B[i] = std::int64_t(e.b) * kSubpixelOne;
+      const double A = double(std::int64_t(e.a) * kSubpixelOne);
+      q0[i] = e.a != 0 ? double(need[i]) / A : 0.0;
+      dq[i] = e.a != 0 ? -double(B[i]) / A : 0.0;
+      rising[i] = e.a > 0;
     }
   }
-  // Narrows [minX, maxX] (pixel centres at fy); false when no pixel is left.
-  bool narrow(const TriangleSetup& t, std::int64_t fy, int& minX, int& maxX) const {
-    const int x0 = minX;
-    const std::int64_t fx = std::int64_t(x0) * kSubpixelOne + kSubpixelOne / 2;
+  // Narrows [first, last] (pixels of row y, first = minX); false when no pixel is left.
+  bool narrow(const TriangleSetup& t, int y, int& first, int& last) const {
+    constexpr double kSlack = 1e-3, kFar = 32768;  // a thousandth of a pixel; beyond any tile
+    const int dy = y - minY;
     for (int i = 0; i < 3; ++i) {
-      const std::int64_t short_ = need[i] - t.edge[i].at(fx, fy);  // what k·A must reach, k pixels on
-      if (t.edge[i].a == 0) {
-        if (short_ > 0) return false;
+      if (t.edge[i].a == 0) {  // E is the same along the row: all of it or none
+        if (need[i] - B[i] * dy > 0) return false;
         continue;
       }
-      // The least k with k·A ≥ short for A > 0, the largest for A < 0.
-      const std::int64_t A = std::int64_t(t.edge[i].a) * kSubpixelOne;
-      const double q = double(short_) * inverse[i];
-      if (!(q > -32768 && q < 32768)) {  // the whole row, or none of it
-        if (t.edge[i].a > 0 ? q >= 32768 : q <= -32768) return false;
+      const double q = q0[i] + dq[i] * double(dy);  // the bound, in pixels from minX
+      if (!(q > -kFar && q < kFar)) {               // the whole row, or none of it
+        if (rising[i] ? q >= kFar : q <= -kFar) return false;
         continue;
       }
-      if (A > 0) {
-        std::int64_t k = std::int64_t(std::ceil(q));
-        if (k * A < short_) ++k;
-        else if ((k - 1) * A >= short_) --k;
-        minX = int(std::max<std::int64_t>(minX, x0 + k));
-      } else {
-        std::int64_t k = std::int64_t(std::floor(q));
-        if (k * A < short_) --k;
-        else if ((k + 1) * A >= short_) ++k;
-        maxX = int(std::min<std::int64_t>(maxX, x0 + k));
-      }
+      if (rising[i]) first = std::max(first, minX + int(std::ceil(q - kSlack)));
+      else last = std::min(last, minX + int(std::floor(q + kSlack)));
     }
-    return minX <= maxX;
+    return first <= last;
   }
 };
 
