@@ -6,6 +6,7 @@
 
 #include <illum/image.h>
 #include <illum/real.h>
+#include <illum/tone_map.h>
 
 #include <array>
 #include <cstdint>
@@ -13,9 +14,6 @@
 #include <string_view>
 
 namespace illum {
-
-enum class ToneMap { None, Reinhard, Aces };
-enum class Encoding { Linear, Srgb };
 
 std::string_view toString(ToneMap toneMap);
 std::string_view toString(Encoding encoding);

@@ -13,9 +13,6 @@
 
 namespace illum {
 
-using Color3 = Vec3;
-using Color4 = Vec4;
-
 // The specular lobe: blinn-phong (N·H)^n, phong (R·V)^n, none (lambert), or Cook and Torrance's
 // microfacet reflectance D·F·G / (4 N·L N·V) (cook-torrance, physically based). And the two
 // models the seeds' history starts with: wylie (Wylie et al. 1967, intensity ∝ 1/d from the light,

@@ -12,7 +12,7 @@
 
 #include <hwy/highway.h>
 
-#include <illum/display.h>
+#include <illum/tone_map.h>
 
 HWY_BEFORE_NAMESPACE();
 namespace illum::HWY_NAMESPACE {

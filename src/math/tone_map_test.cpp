@@ -7,6 +7,8 @@
 
 #include <hwy/highway.h>
 
+#include <illum/real.h>
+
 #include "math/tone_map-inl.h"
 
 #include <cstddef>

@@ -3,7 +3,6 @@
 // same rounding over SIMD lanes, tested against this one).
 #pragma once
 
-#include <illum/lighting.h>
 #include <illum/real.h>
 
 #include <algorithm>
