@@ -12,14 +12,19 @@
 #include <exception>
 #include <fstream>
 #include <string>
+#include <type_traits>
+#include <vector>
 
 namespace {
 
-void writeNumbers(std::ofstream& out, const char* key, const std::vector<float>& values) {
+// Floats with the nine digits that give back their bits; indices as the integers they are.
+template <class T>
+void writeNumbers(std::ofstream& out, const char* key, const std::vector<T>& values) {
   out << '"' << key << "\": [";
   char number[32];
   for (std::size_t i = 0; i < values.size(); ++i) {
-    std::snprintf(number, sizeof number, "%s%.9g", i ? "," : "", double(values[i]));
+    if constexpr (std::is_floating_point_v<T>) std::snprintf(number, sizeof number, "%s%.9g", i ? "," : "", double(values[i]));
+    else std::snprintf(number, sizeof number, "%s%u", i ? "," : "", unsigned(values[i]));
     out << number;
   }
   out << ']';
@@ -42,7 +47,7 @@ int main(int argc, char** argv) {
       const illum::Object& object = scene.objects[o];
       const illum::Mesh& mesh = *object.mesh;
       const illum::Mat3 normalFrom = illum::normalMatrix(object.worldFromObject);
-      std::vector<float> positions, normals, indices(mesh.indices.begin(), mesh.indices.end());
+      std::vector<float> positions, normals;
       for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
         const illum::Vec3 p = illum::Vec3(object.worldFromObject * illum::Vec4(mesh.positions[v], 1));
         positions.insert(positions.end(), {float(p.x), float(p.y), float(p.z)});
@@ -56,7 +61,7 @@ int main(int argc, char** argv) {
       out << ", ";
       writeNumbers(out, "normals", normals);
       out << ", ";
-      writeNumbers(out, "indices", indices);
+      writeNumbers(out, "indices", mesh.indices);
       out << '}';
     }
     out << "\n]}\n";
