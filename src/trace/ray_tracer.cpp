@@ -33,11 +33,6 @@ constexpr int kBlock = 4;   // pixels on a side of a primary ray packet
 
 using Clock = std::chrono::steady_clock;
 
-// A sample position's offset in its pixel.
-Vec2 jitter(int x, int y, int sample) {
-  return {Real(sampleSeed(x, y, sample, 1) >> 40) / Real(1 << 24), Real(sampleSeed(x, y, sample, 2) >> 40) / Real(1 << 24)};
-}
-
 struct TileCounts {
   RayCounts rays;
   double primarySeconds = 0;
@@ -202,9 +197,9 @@ class TracedFrame {
     }
   }
 
-  // Where sample s of pixel (x, y) goes through the image: the centre, or jittered.
+  // Where sample s of pixel (x, y) goes through the image: the centre, or stratified over the pixel.
   Vec2 pixelPoint(int x, int y, int s) const {
-    const Vec2 offset = samplesPerPixel(scene_) == 1 ? Vec2(Real(0.5)) : jitter(x, y, s);
+    const Vec2 offset = samplesPerPixel(scene_) == 1 ? Vec2(Real(0.5)) : pixelSampleOffset(x, y, s);
     return {Real(x) + offset.x, Real(y) + offset.y};
   }
 
