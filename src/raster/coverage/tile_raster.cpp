@@ -585,8 +585,9 @@ std::size_t RasterizeSurface(const TriangleSetup& t, const PixelRect& tile, Real
 // (DepthPass of atSample). The edge values are kept in double lanes, or (kSplit) in float lanes as
 // a multiple of 256 plus a remainder, each exact while the values stay below 2^32 (as
 // DepthPassTwoRows keeps them): their sum rounds as the integer's conversion does, and its sign is
-// the integer's.
-template <bool kSplit, class D, class Write>
+// the integer's. kEveryVector: write is called for every vector, also under an empty mask, where
+// it must change nothing (no branch on whether a sample passed).
+template <bool kSplit, bool kEveryVector, class D, class Write>
 HWY_INLINE std::size_t SamplesPassIn(D d, const TriangleSetup& t, const PixelRect& tile, const SamplePlanes& planes,
                                      const Write& write) {
   const int minX = std::max(t.minX, tile.minX), maxX = std::min(t.maxX, tile.maxX);
@@ -705,7 +706,7 @@ HWY_INLINE std::size_t SamplesPassIn(D d, const TriangleSetup& t, const PixelRec
         const std::size_t at = std::size_t(row + x) * std::size_t(samples) + std::size_t(k);
         Real* depth = planes.depth + at;
         const auto pass = hn::And(inside, z < hn::LoadU(dr, depth));
-        if (hn::AllFalse(dr, pass)) continue;
+        if (!kEveryVector && hn::AllFalse(dr, pass)) continue;
         hn::BlendedStore(z, pass, dr, depth);
         passed += hn::CountTrue(dr, pass);
         const auto centreAt = [&](int i) {
@@ -739,21 +740,25 @@ HWY_INLINE bool SamplesSplitExact(const TriangleSetup& t, const PixelRect& tile,
   return true;
 }
 
-template <class Write>
+template <bool kEveryVector, class Write>
 HWY_INLINE std::size_t SamplesPass(const TriangleSetup& t, const PixelRect& tile, const SamplePlanes& planes,
                                    const Write& write) {
   if (std::max(t.minX, tile.minX) > std::min(t.maxX, tile.maxX) || std::max(t.minY, tile.minY) > std::min(t.maxY, tile.maxY))
     return 0;
 #if HWY_TARGET != HWY_SCALAR
   if constexpr (sizeof(Real) == 4)
-    if (SamplesSplitExact(t, tile, planes)) return SamplesPassIn<true>(hn::ScalableTag<float>(), t, tile, planes, write);
+    if (SamplesSplitExact(t, tile, planes))
+      return SamplesPassIn<true, kEveryVector>(hn::ScalableTag<float>(), t, tile, planes, write);
 #endif
-  return SamplesPassIn<false>(DD(), t, tile, planes, write);
+  return SamplesPassIn<false, kEveryVector>(DD(), t, tile, planes, write);
 }
 
 std::size_t RasterizeSamples(const TriangleSetup& t, const PixelRect& tile, const SamplePlanes& planes,
                              std::uint32_t slot) {
-  return SamplesPass(t, tile, planes, [&](std::size_t at, auto pass, auto l0, auto, auto) {
+  // A masked store of the slot: under an empty mask cheaper than the branch around it, which a
+  // thin triangle's vectors (about a quarter of them with a sample passing) mispredict often.
+  // Measured: 2CylinderEngine at 1280×720, 4 samples, −2 % CPU time.
+  return SamplesPass<true>(t, tile, planes, [&](std::size_t at, auto pass, auto l0, auto, auto) {
     const hn::Rebind<std::uint32_t, hn::DFromV<decltype(l0)>> du;
     hn::BlendedStore(hn::Set(du, slot), hn::RebindMask(du, pass), du, planes.winners + at);
   });
@@ -762,7 +767,7 @@ std::size_t RasterizeSamples(const TriangleSetup& t, const PixelRect& tile, cons
 std::size_t RasterizeSamplesColored(const TriangleSetup& t, const PixelRect& tile, const SamplePlanes& planes,
                                     const Color4* lit, std::uint32_t packed, bool clearWinners) {
   const bool opaque = lit && Opaque(lit);
-  return SamplesPass(t, tile, planes, [&](std::size_t at, auto pass, auto l0, auto l1, auto l2) {
+  return SamplesPass<false>(t, tile, planes, [&](std::size_t at, auto pass, auto l0, auto l1, auto l2) {
     const hn::Rebind<std::uint32_t, hn::DFromV<decltype(l0)>> du;
     const auto color = lit ? GouraudPixels(t, lit, opaque, l0, l1, l2) : hn::Set(du, packed);
     hn::BlendedStore(color, hn::RebindMask(du, pass), du, planes.color + at);
