@@ -83,10 +83,10 @@ Real PathBsdf::pdf(const Vec3& toViewer, const Vec3& toLight) const {
   return p;
 }
 
-bool PathBsdf::sample(const Vec3& toViewer, Rng& rng, BsdfSample& out) const {
+bool PathBsdf::sample(const Vec3& toViewer, Real choice, const Vec2& u, BsdfSample& out) const {
   const Vec3 v = frame_.toLocal(toViewer);
   if (v.z <= 0) return false;
-  const Real choice = rng.uniform(), u1 = rng.uniform(), u2 = rng.uniform();
+  const Real u1 = u.x, u2 = u.y;
   Vec3 l;
   if (choice < specularChance_) {
     if (model_ == LightingModel::CookTorrance) {

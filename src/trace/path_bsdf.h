@@ -35,8 +35,8 @@ class PathBsdf {
   // What the surface reflects of white light, about: the denoiser's albedo (a dielectric's base
   // colour, a metal's reflectance; k_d + k_s of a GL material, at most 1).
   Color3 albedo() const;
-  // Chooses a lobe by its expected weight, then a direction from it.
-  bool sample(const Vec3& toViewer, Rng& rng, BsdfSample& out) const;
+  // Chooses a lobe by its expected weight (`choice` in [0, 1)), then a direction from it (`u`).
+  bool sample(const Vec3& toViewer, Real choice, const Vec2& u, BsdfSample& out) const;
 
  private:
   Real specularPdf(const Vec3& v, const Vec3& l) const;  // local directions

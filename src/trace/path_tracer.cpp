@@ -38,10 +38,10 @@ Color3 PathTracer::environment(const Vec3& eyeDirection) const {
 }
 
 Color4 PathTracer::primary(const Ray& primaryRay, const RayHit* primaryHit, const RayCone& primaryCone,
-                           RayCounts& counts, std::uint64_t seed, PathFeatures* features) const {
+                           RayCounts& counts, const PathSample& sample, PathFeatures* features) const {
   ++counts.primary;
   if (!primaryHit) return scene_.background;
-  Rng rng(seed, seed >> 32);
+  Rng rng(sample.seed, sample.seed >> 32);
   Color3 radiance(0), beta(1);
   Ray ray = primaryRay;
   RayHit hit = *primaryHit;
@@ -50,6 +50,15 @@ Color4 PathTracer::primary(const Ray& primaryRay, const RayHit* primaryHit, cons
   bool lightHitWhole = true;  // after a camera ray or an ideal mirror or refraction, no light sampling competed
   const int maxDepth = scene_.rayTracing.maxDepth;
   for (int depth = 0;; ++depth) {
+    // Two numbers for a choice of direction or point: at the first surface stratified over the
+    // pixel's samples (dimension 1: the BSDF, 2: the environment, 3: the area lights), beyond it
+    // independent. (Measured, 16 samples at 320×240 against 4096: the Cornell box's relative MSE
+    // 0.027 → 0.020, 2CylinderEngine's 0.0044 → 0.0030.)
+    const auto pair = [&](std::uint32_t dimension) {
+      if (depth == 0) return stratifiedPair(sample.pixelSeed, dimension, sample.index);
+      const Real u1 = rng.uniform();
+      return Vec2(u1, rng.uniform());
+    };
     HitPoint h = hitPoint(rays_, ray, hit);
     const Object& object = *h.object;
     const EyeMesh& mesh = rays_.mesh(hit.object);
@@ -185,7 +194,9 @@ Color4 PathTracer::primary(const Ray& primaryRay, const RayHit* primaryHit, cons
       radiance += beta * (f.diffuse * light.diffuse + f.specular * light.specular) * E;
     }
     if (!area_.empty()) {
-      const AreaLightSample s = area_.sample(rng.uniform(), rng.uniform(), rng.uniform());
+      const Real which = rng.uniform();
+      const Vec2 u = pair(3);
+      const AreaLightSample s = area_.sample(which, u.x, u.y);
       const Vec3 d = s.position - h.position;
       const Real distance = glm::length(d);
       const Vec3 wi = d / distance;
@@ -211,7 +222,8 @@ Color4 PathTracer::primary(const Ray& primaryRay, const RayHit* primaryHit, cons
     if (environmentLight_) {
       // One direction towards the environment map's bright texels; it counts where nothing is in
       // the way (the environment lies beyond everything).
-      const EnvironmentSample e = environmentLight_->sample(rng.uniform(), rng.uniform());
+      const Vec2 u = pair(2);
+      const EnvironmentSample e = environmentLight_->sample(u.x, u.y);
       const Vec3 wi = glm::transpose(worldFromView_) * e.direction;
       if (e.pdf > 0 && leaves(wi)) {
         const BsdfValue f = bsdf.eval(wo, wi);
@@ -230,7 +242,8 @@ Color4 PathTracer::primary(const Ray& primaryRay, const RayHit* primaryHit, cons
 
     // The next bounce, sampled from the BSDF.
     BsdfSample next;
-    if (!bsdf.sample(wo, rng, next) || !(glm::dot(N, next.direction) > 0)) break;
+    const Real choice = rng.uniform();
+    if (!bsdf.sample(wo, choice, pair(1), next) || !(glm::dot(N, next.direction) > 0)) break;
     beta *= next.value.sum() * (glm::dot(N, next.direction) / next.pdf);
     // An interpolated normal tilts away from the facet near silhouettes: a direction sampled above
     // it but below the facet would re-enter the surface and its energy be lost, so it is turned

@@ -27,14 +27,23 @@ struct PathFeatures {
   Vec3 normal{0};
 };
 
+// Which sample of which pixel a path is, for its random numbers: at its first surface, the BSDF's,
+// the environment's and the area lights' pairs of numbers are stratified over the pixel's samples
+// (stratifiedPair); the rest come from the path's own generator.
+struct PathSample {
+  std::uint64_t seed = 0;       // the path's generator's (sampleSeed of the pixel and the sample)
+  std::uint64_t pixelSeed = 0;  // the pixel's, for its stratified pairs
+  std::uint32_t index = 0;      // the sample's number in its pixel
+};
+
 class PathTracer {
  public:
   PathTracer(const Scene& scene, const RayScene& rays);
 
   // The radiance (unclamped) and alpha seen along a primary ray whose first hit is `hit` (null: a
-  // miss, which shows the background); `seed` picks this pixel sample's random numbers. With
+  // miss, which shows the background); `sample` picks this pixel sample's random numbers. With
   // `features`, the denoiser's guides along this path too.
-  Color4 primary(const Ray& ray, const RayHit* hit, const RayCone& cone, RayCounts& counts, std::uint64_t seed,
+  Color4 primary(const Ray& ray, const RayHit* hit, const RayCone& cone, RayCounts& counts, const PathSample& sample,
                  PathFeatures* features = nullptr) const;
 
  private:

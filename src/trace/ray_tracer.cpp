@@ -173,7 +173,8 @@ class TracedFrame {
         // (A sample that overflowed, say under an emitter of absurd strength, counts as nothing.)
         PathFeatures guides;
         const Color4 radiance =
-            pathTracer_->primary(ray, first, cone, counts.rays, sampleSeed(x, y, s, 3), denoised_ ? &guides : nullptr);
+            pathTracer_->primary(ray, first, cone, counts.rays, {sampleSeed(x, y, s, 3), sampleSeed(x, y, 0, 1), std::uint32_t(s)},
+                                 denoised_ ? &guides : nullptr);
         if (!std::isfinite(radiance.r + radiance.g + radiance.b + radiance.a)) continue;
         pixel.all += radiance;
         if (first) pixel.hits += Color3(radiance);

@@ -42,35 +42,55 @@ inline std::uint64_t sampleSeed(int x, int y, int sample, std::uint64_t salt) {
   return r ^ (r >> 31);
 }
 
+// The bits of v in reverse order (bit 31 ↔ bit 0).
+constexpr std::uint32_t reversedBits(std::uint32_t v) {
+  v = ((v >> 1) & 0x55555555u) | ((v & 0x55555555u) << 1);
+  v = ((v >> 2) & 0x33333333u) | ((v & 0x33333333u) << 2);
+  v = ((v >> 4) & 0x0F0F0F0Fu) | ((v & 0x0F0F0F0Fu) << 4);
+  v = ((v >> 8) & 0x00FF00FFu) | ((v & 0x00FF00FFu) << 8);
+  return (v >> 16) | (v << 16);
+}
+
 // Owen's nested uniform scrambling of a 32-bit fraction: each digit flipped by a hash of the
 // digits above it, so that a scrambled (0,m,2)-net is still one (Burley, "Practical Hash-based
 // Owen Scrambling", JCGT 9(4) 2020: Laine and Karras's permutation on the reversed bits).
-inline std::uint32_t owenScrambled(std::uint32_t v, std::uint32_t seed) {
-  const auto reversed = [](std::uint32_t x) {
-    x = ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
-    x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
-    x = ((x >> 4) & 0x0F0F0F0Fu) | ((x & 0x0F0F0F0Fu) << 4);
-    x = ((x >> 8) & 0x00FF00FFu) | ((x & 0x00FF00FFu) << 8);
-    return (x >> 16) | (x << 16);
-  };
-  v = reversed(v);
+// (laineKarras: the permutation of the reversed bits, each bit flipped by a hash of those below.)
+constexpr std::uint32_t laineKarras(std::uint32_t v, std::uint32_t seed) {
   v += seed;
   v ^= v * 0x6c50b47cu;
   v ^= v * 0xb82f1e52u;
   v ^= v * 0xc7afe638u;
   v ^= v * 0x8d22f6e6u;
-  return reversed(v);
+  return v;
 }
+constexpr std::uint32_t owenScrambled(std::uint32_t v, std::uint32_t seed) {
+  return reversedBits(laineKarras(reversedBits(v), seed));
+}
+
+// Sobol's second dimension, byte by byte: entry b of table k is the XOR of the generator matrix's
+// columns (Pascal's matrix mod 2: each column the last one XOR itself shifted right once) for the
+// set bits of b, taken as bits 8k..8k+7 of the index.
+struct SobolSecondDimension {
+  std::array<std::array<std::uint32_t, 256>, 4> byByte{};
+  constexpr SobolSecondDimension() {
+    std::array<std::uint32_t, 32> column{};
+    column[0] = 1u << 31;
+    for (int j = 1; j < 32; ++j) column[std::size_t(j)] = column[std::size_t(j - 1)] ^ (column[std::size_t(j - 1)] >> 1);
+    for (std::size_t k = 0; k < 4; ++k)
+      for (std::uint32_t b = 0; b < 256; ++b)
+        for (std::size_t j = 0; j < 8; ++j)
+          if (b >> j & 1) byByte[k][b] ^= column[8 * k + j];
+  }
+};
+inline constexpr SobolSecondDimension kSobolSecondDimension{};
 
 // Point `index` of Sobol's sequence in two dimensions (van der Corput's radical inverse in base 2,
 // and the dimension of Pascal's matrix), as 32-bit fractions: every first 2^m points put one point
 // in each of the 2^m elementary intervals of area 2^−m (for 16: each cell of a 4×4 grid, and of
-// the 2×8, 8×2, 1×16 and 16×1 grids).
+// the 2×8, 8×2, 1×16 and 16×1 grids); so does every aligned block of 2^m points.
 inline std::array<std::uint32_t, 2> sobol2D(std::uint32_t index) {
-  std::array<std::uint32_t, 2> p{0, 0};
-  for (std::uint32_t bit = 1u << 31, column = 1u << 31, i = index; i; i >>= 1, bit >>= 1, column ^= column >> 1)
-    if (i & 1) p[0] ^= bit, p[1] ^= column;
-  return p;
+  const auto& t = kSobolSecondDimension.byByte;
+  return {reversedBits(index), t[0][index & 255] ^ t[1][index >> 8 & 255] ^ t[2][index >> 16 & 255] ^ t[3][index >> 24]};
 }
 
 // Where sample `sample` of pixel (x, y) lies in the pixel, in [0, 1)²: Sobol's points, Owen-scrambled
@@ -82,6 +102,24 @@ inline Vec2 pixelSampleOffset(int x, int y, int sample) {
   const std::array<std::uint32_t, 2> p = sobol2D(std::uint32_t(sample));
   const auto fraction = [](std::uint32_t v) { return Real(v >> 8) * Real(1.0 / (1u << 24)); };
   return {fraction(owenScrambled(p[0], std::uint32_t(seeds))), fraction(owenScrambled(p[1], std::uint32_t(seeds >> 32)))};
+}
+
+// Pair `dimension` (≥ 1) of sample `index` of the pixel whose samples `pixelSeed` seeds: Sobol's
+// points in an order shuffled per pixel and dimension (the index Owen-scrambled, which maps every
+// aligned block of 2^m indices onto one, so every power-of-two prefix is still a net), each
+// coordinate Owen-scrambled (Burley 2020). Different dimensions are so decorrelated from each
+// other and from the pixel's own offsets (pair 0, pixelSampleOffset).
+inline Vec2 stratifiedPair(std::uint64_t pixelSeed, std::uint32_t dimension, std::uint32_t index) {
+  std::uint64_t h = pixelSeed ^ (std::uint64_t(dimension) * 0x9E3779B97F4A7C15ull);
+  h = (h ^ (h >> 30)) * 0xBF58476D1CE4E5B9ull;
+  h = (h ^ (h >> 27)) * 0x94D049BB133111EBull;
+  h ^= h >> 31;
+  const std::uint32_t shuffled = owenScrambled(index, std::uint32_t(h));
+  const auto fraction = [](std::uint32_t v) { return Real(v >> 8) * Real(1.0 / (1u << 24)); };
+  const std::uint32_t seedX = std::uint32_t(h >> 32), seedY = std::uint32_t(h >> 32) * 0x2C1B3C6Du + 0x297A2D39u;
+  // The first coordinate is the reversed index (van der Corput's), so its scrambling's own
+  // reversal cancels: owenScrambled(reversedBits(i), s) = reversedBits(laineKarras(i, s)).
+  return {fraction(reversedBits(laineKarras(shuffled, seedX))), fraction(owenScrambled(sobol2D(shuffled)[1], seedY))};
 }
 
 // An orthonormal basis around a unit normal (Duff et al., "Building an Orthonormal Basis,

@@ -45,6 +45,31 @@ TEST(PixelSamples, EveryPowerOfTwoPrefixIsANetInEveryPixel) {
       }
 }
 
+TEST(PixelSamples, StratifiedPairsAreNetsInEveryDimension) {
+  for (std::uint32_t dimension = 1; dimension <= 3; ++dimension)
+    for (int pixel = 0; pixel < 8; ++pixel)
+      for (int m = 1; m <= 7; ++m) {
+        std::vector<Vec2> points;
+        for (std::uint32_t s = 0; s < (1u << m); ++s) points.push_back(stratifiedPair(sampleSeed(pixel, 3, 0, 1), dimension, s));
+        EXPECT_TRUE(IsNet(points, m)) << "dimension " << dimension << ", pixel " << pixel << ", " << (1 << m) << " samples";
+      }
+}
+
+TEST(PixelSamples, DimensionsAreShuffledApart) {
+  // Without the shuffle, sample s's first coordinate in one dimension would fix its quarter in any
+  // other (each is Sobol's point s, scrambled digit by digit): of the 16 combinations of quarters
+  // only 4 would ever occur. Shuffled, 64 samples meet nearly all of them.
+  const std::uint64_t seed = sampleSeed(5, 7, 0, 1);
+  std::set<std::pair<int, int>> quarters12, quarters01;
+  for (std::uint32_t s = 0; s < 64; ++s) {
+    const Vec2 p0 = pixelSampleOffset(5, 7, int(s)), p1 = stratifiedPair(seed, 1, s), p2 = stratifiedPair(seed, 2, s);
+    quarters12.insert({int(p1.x * 4), int(p2.x * 4)});
+    quarters01.insert({int(p0.x * 4), int(p1.x * 4)});
+  }
+  EXPECT_GE(quarters12.size(), 12u);
+  EXPECT_GE(quarters01.size(), 12u);
+}
+
 TEST(PixelSamples, IndependentPointsAreNoNet) {
   // The test itself can tell: 16 independent points fill a 4×4 grid only once in ~10^5 tries.
   int nets = 0;
