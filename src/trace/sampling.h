@@ -10,6 +10,16 @@
 
 namespace illum {
 
+// A 32-bit fraction's top 24 bits as a Real in [0, 1): exact in float.
+inline Real unitFraction(std::uint32_t v) { return Real(v >> 8) * Real(1.0 / (1u << 24)); }
+
+// SplitMix64's finalizer: every bit of the result depends on every bit of v.
+constexpr std::uint64_t mixedBits(std::uint64_t v) {
+  v = (v ^ (v >> 30)) * 0xBF58476D1CE4E5B9ull;
+  v = (v ^ (v >> 27)) * 0x94D049BB133111EBull;
+  return v ^ (v >> 31);
+}
+
 // PCG32 (O'Neill 2014): small, fast and statistically good; one stream per pixel sample.
 class Rng {
  public:
@@ -26,7 +36,7 @@ class Rng {
     return (xorshifted >> rot) | (xorshifted << ((32 - rot) & 31));
   }
   // Uniform in [0, 1).
-  Real uniform() { return Real(next() >> 8) * Real(1.0 / (1u << 24)); }
+  Real uniform() { return unitFraction(next()); }
 
  private:
   std::uint64_t state_ = 0, inc_;
@@ -35,11 +45,8 @@ class Rng {
 // A pixel sample's seed: a hash of (x, y, sample, salt) alone (SplitMix64's finalizer), so that
 // jitter, paths and occlusion rays are the same on every run and thread count.
 inline std::uint64_t sampleSeed(int x, int y, int sample, std::uint64_t salt) {
-  std::uint64_t r = (std::uint64_t(std::uint32_t(x)) << 40) ^ (std::uint64_t(std::uint32_t(y)) << 20) ^
-                    std::uint64_t(std::uint32_t(sample)) ^ (salt * 0x9E3779B97F4A7C15ull);
-  r = (r ^ (r >> 30)) * 0xBF58476D1CE4E5B9ull;
-  r = (r ^ (r >> 27)) * 0x94D049BB133111EBull;
-  return r ^ (r >> 31);
+  return mixedBits((std::uint64_t(std::uint32_t(x)) << 40) ^ (std::uint64_t(std::uint32_t(y)) << 20) ^
+                   std::uint64_t(std::uint32_t(sample)) ^ (salt * 0x9E3779B97F4A7C15ull));
 }
 
 // The bits of v in reverse order (bit 31 ↔ bit 0).
@@ -100,8 +107,7 @@ inline std::array<std::uint32_t, 2> sobol2D(std::uint32_t index) {
 inline Vec2 pixelSampleOffset(int x, int y, int sample) {
   const std::uint64_t seeds = sampleSeed(x, y, 0, 1);
   const std::array<std::uint32_t, 2> p = sobol2D(std::uint32_t(sample));
-  const auto fraction = [](std::uint32_t v) { return Real(v >> 8) * Real(1.0 / (1u << 24)); };
-  return {fraction(owenScrambled(p[0], std::uint32_t(seeds))), fraction(owenScrambled(p[1], std::uint32_t(seeds >> 32)))};
+  return {unitFraction(owenScrambled(p[0], std::uint32_t(seeds))), unitFraction(owenScrambled(p[1], std::uint32_t(seeds >> 32)))};
 }
 
 // Pair `dimension` (≥ 1) of sample `index` of the pixel whose samples `pixelSeed` seeds: Sobol's
@@ -110,16 +116,12 @@ inline Vec2 pixelSampleOffset(int x, int y, int sample) {
 // coordinate Owen-scrambled (Burley 2020). Different dimensions are so decorrelated from each
 // other and from the pixel's own offsets (pair 0, pixelSampleOffset).
 inline Vec2 stratifiedPair(std::uint64_t pixelSeed, std::uint32_t dimension, std::uint32_t index) {
-  std::uint64_t h = pixelSeed ^ (std::uint64_t(dimension) * 0x9E3779B97F4A7C15ull);
-  h = (h ^ (h >> 30)) * 0xBF58476D1CE4E5B9ull;
-  h = (h ^ (h >> 27)) * 0x94D049BB133111EBull;
-  h ^= h >> 31;
+  const std::uint64_t h = mixedBits(pixelSeed ^ (std::uint64_t(dimension) * 0x9E3779B97F4A7C15ull));
   const std::uint32_t shuffled = owenScrambled(index, std::uint32_t(h));
-  const auto fraction = [](std::uint32_t v) { return Real(v >> 8) * Real(1.0 / (1u << 24)); };
   const std::uint32_t seedX = std::uint32_t(h >> 32), seedY = std::uint32_t(h >> 32) * 0x2C1B3C6Du + 0x297A2D39u;
   // The first coordinate is the reversed index (van der Corput's), so its scrambling's own
   // reversal cancels: owenScrambled(reversedBits(i), s) = reversedBits(laineKarras(i, s)).
-  return {fraction(reversedBits(laineKarras(shuffled, seedX))), fraction(owenScrambled(sobol2D(shuffled)[1], seedY))};
+  return {unitFraction(reversedBits(laineKarras(shuffled, seedX))), unitFraction(owenScrambled(sobol2D(shuffled)[1], seedY))};
 }
 
 // An orthonormal basis around a unit normal (Duff et al., "Building an Orthonormal Basis,
