@@ -61,7 +61,7 @@ constexpr std::uint32_t reversedBits(std::uint32_t v) {
 // Owen's nested uniform scrambling of a 32-bit fraction: each digit flipped by a hash of the
 // digits above it, so that a scrambled (0,m,2)-net is still one (Burley, "Practical Hash-based
 // Owen Scrambling", JCGT 9(4) 2020: Laine and Karras's permutation on the reversed bits).
-// (laineKarras: the permutation of the reversed bits, each bit flipped by a hash of those below.)
+// laineKarras is that permutation: each bit flipped by a hash of the bits below it.
 constexpr std::uint32_t laineKarras(std::uint32_t v, std::uint32_t seed) {
   v += seed;
   v ^= v * 0x6c50b47cu;
