@@ -2,8 +2,12 @@
 // whichever tiles a chunk touched and whatever the previous chunk left behind.
 #include "raster/setup/bin.h"
 
+#include "raster/setup/setup.h"
+#include "raster/setup/vertex.h"
+
 #include <gtest/gtest.h>
 
+#include <set>
 #include <vector>
 
 namespace illum {
@@ -65,6 +69,36 @@ TEST(TileBins, ResetForgetsTheLastChunksCounts) {
   for (int tile = 0; tile < 16; ++tile) EXPECT_TRUE(recordsOf(bins, tile).empty()) << tile;
   EXPECT_FALSE(bins.span().holds(0));
   EXPECT_FALSE(bins.span().holds(15));
+}
+
+TEST(TileBins, LeavesOutTheTilesOfItsBoundsATriangleMisses) {
+  // A thin triangle across the diagonal of 5×3 tiles: its bounds hold all 15, it reaches 7. Each
+  // tile it covers a pixel centre of is listed, and no other (its edges pass far from the tiles'
+  // corners, so pixel squares and centres tell the same).
+  constexpr int kW = 5 * kTileSize, kH = 3 * kTileSize;
+  const auto at = [](double x, double y) {
+    ShadedVertex v;
+    v.clip = Vec4(Real(x / kW * 2 - 1), Real(y / kH * 2 - 1), 0, 1);
+    return v;
+  };
+  TriangleSetup t;
+  ASSERT_TRUE(setupTriangle(at(2, 3), at(317, 185), at(310, 189), kW, kH, t));
+  TileBins bins;
+  bins.reset(kW, kH);
+  bins.addRecord(t, 0);
+  bins.finish();
+  std::set<int> covered, binned;
+  for (int y = t.minY; y <= t.maxY; ++y)
+    for (int x = t.minX; x <= t.maxX; ++x) {
+      bool inside = true;
+      for (const EdgeFunction& e : t.edge)
+        inside = inside && e.at(x * kSubpixelOne + kSubpixelOne / 2, y * kSubpixelOne + kSubpixelOne / 2) + e.bias >= 0;
+      if (inside) covered.insert(y / kTileSize * 5 + x / kTileSize);
+    }
+  for (int tile = 0; tile < bins.tileCount(); ++tile)
+    if (!recordsOf(bins, tile).empty()) binned.insert(tile);
+  EXPECT_EQ(binned, covered);
+  EXPECT_EQ(binned.size(), 7u);
 }
 
 TEST(TinyRuns, KeepsEachTilesRunsInOrderOutsideNoneTouched) {

@@ -1,5 +1,6 @@
 #include "raster/shade/shade_tile.h"
 
+#include "raster/coverage/depth_bounds.h"
 #include "raster/shade/fragment.h"
 #include "raster/shade/shade_visible.h"
 #include "shading/shade_points.h"
@@ -121,9 +122,11 @@ std::size_t drawMultisampledTile(const DrawTarget& target, std::span<const DrawR
                             target.frame.sampleLanes.y, tiles.depth, tiles.color, winners};
   std::size_t fragments = 0;
   bool anyWinner = false;
+  DepthBounds bounds(tiles.depth, tiles.count, rect);
   const auto writeTiny = [&](std::uint32_t at, const TinyFragment& f) {
     tiles.color[at] = f.color;
     if (anyWinner) winners[at] = kNoWinner;
+    bounds.drawnAt(at);
   };
   TinyDrawer<TinyFragment, decltype(writeTiny)> tinyFragments(tiny.fragments, tiles.depth, writeTiny);
   VertexColors vertexColors;
@@ -131,14 +134,16 @@ std::size_t drawMultisampledTile(const DrawTarget& target, std::span<const DrawR
     fragments += tinyFragments.drawUpTo(i);
     prefetchRecord(records, i + kRecordsAhead);
     const DrawRecord& r = *records[i];
+    if (bounds.hidden(r.setup)) continue;
+    std::size_t passed = 0;
 #if !ILLUM_USE_DOUBLE
-    if (target.route[r.object] == Route::Colored) {
-      fragments += rasterizeSamplesColored(r.setup, rect, planes, vertexColors.of(target, r), packUnorm8(r.flat), anyWinner);
-      continue;
-    }
+    if (target.route[r.object] == Route::Colored)
+      passed = rasterizeSamplesColored(r.setup, rect, planes, vertexColors.of(target, r), packUnorm8(r.flat), anyWinner);
+    else
 #endif
-    fragments += rasterizeSamples(r.setup, rect, planes, std::uint32_t(i));
-    anyWinner = true;
+      passed = rasterizeSamples(r.setup, rect, planes, std::uint32_t(i)), anyWinner = true;
+    if (passed != 0) bounds.drawn(r.setup);
+    fragments += passed;
   }
   fragments += tinyFragments.drawUpTo(records.size());
   if (!anyWinner) return fragments;
