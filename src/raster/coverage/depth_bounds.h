@@ -20,48 +20,47 @@
 
 namespace illum {
 
-// The farthest of the depths of tile-local block (bx, by) (DepthBounds::kBlock² pixels, `samples` each) in a
-// tile's depth plane (Framebuffer's layout).
-Real farthestDepthInBlock(const Real* depth, int samples, int bx, int by);
-
 class DepthBounds {
  public:
   static constexpr int kBlock = 4, kBlocks = kTileSize / kBlock;  // a tile is kBlocks × kBlocks blocks
   static_assert(kBlocks <= 16);
 
   // A tile's depth plane, just cleared or in any state: every block is worked out when asked.
-  DepthBounds(const Real* depth, int samples, const PixelRect& tile) : depth_(depth), samples_(samples), tile_(tile) {
-    std::fill_n(stale_, kBlocks, std::uint16_t(~0u));
+  DepthBounds(const Real* depth, int samples, const PixelRect& tile) {
+    s_.depth = depth, s_.samples = samples, s_.tile = tile;
+    std::fill_n(s_.stale, kBlocks, std::uint16_t(~0u));
   }
 
   // Whether every sample of `t`'s pixels in the tile keeps its depth under GL_LESS (then drawing
   // `t` there changes nothing).
   bool hidden(const TriangleSetup& t);
-  // `t` changed depths in the tile (somewhere in its bounds).
-  void drawn(const TriangleSetup& t) {
-    const Blocks b = blocksOf(t);
-    for (int by = b.minY; by <= b.maxY; ++by) stale_[by] |= b.columns;
+  // The triangle hidden() was last asked about changed depths in the tile (somewhere in its bounds).
+  void drawn() {
+    for (int by = s_.asked.minY; by <= s_.asked.maxY; ++by) s_.stale[by] |= s_.asked.columns;
   }
   // Tile-local sample `at` (pixel·samples + sample) changed its depth.
   void drawnAt(std::uint32_t at) {
-    const std::uint32_t pixel = at / std::uint32_t(samples_);
-    stale_[pixel / kTileSize / kBlock] |= std::uint16_t(1u << (pixel % kTileSize / kBlock));
+    const std::uint32_t pixel = at / std::uint32_t(s_.samples);
+    s_.stale[pixel / kTileSize / kBlock] |= std::uint16_t(1u << (pixel % kTileSize / kBlock));
   }
 
- private:
-  // The blocks `t`'s bounds in the tile touch: rows minY..maxY of blocks, in each the columns
-  // whose bits are set (none when the bounds miss the tile).
-  struct Blocks {
-    int minY, maxY;
-    std::uint16_t columns;
+  // What the test works on (depth_bounds.cpp, a vector of blocks at a time).
+  struct State {
+    const Real* depth;
+    int samples;
+    PixelRect tile;
+    std::uint16_t stale[kBlocks];  // per row of blocks, those whose farthest is not worked out
+    // The blocks the last triangle asked about touches: rows minY..maxY, in each the columns
+    // whose bits are set (none when its bounds miss the tile).
+    struct {
+      int minY = 0, maxY = -1;
+      std::uint16_t columns = 0;
+    } asked;
+    alignas(64) Real farthest[kBlocks][kBlocks] = {};
   };
-  Blocks blocksOf(const TriangleSetup& t) const;
 
-  const Real* depth_;
-  int samples_;
-  PixelRect tile_;
-  std::uint16_t stale_[kBlocks];  // per row of blocks, those whose farthest_ is not worked out
-  Real farthest_[kBlocks][kBlocks] = {};
+ private:
+  State s_;
 };
 
 }  // namespace illum

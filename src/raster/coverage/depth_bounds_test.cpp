@@ -44,8 +44,9 @@ struct SampledTile {
   std::size_t draw(const TriangleSetup& t) {
     const SamplePlanes planes{kSamples, frame.samples.data(), frame.sampleLanes.x, frame.sampleLanes.y,
                               depth.data(), color.data(), winners.data()};
+    bounds.hidden(t);  // (as a tile's loop asks before each draw: drawn() is about that triangle)
     const std::size_t passed = rasterizeSamples(t, kTile, planes, 0);
-    if (passed != 0) bounds.drawn(t);
+    if (passed != 0) bounds.drawn();
     return passed;
   }
   // A rectangle from (x0, y0) to (x1, y1) at depth z, as two triangles.

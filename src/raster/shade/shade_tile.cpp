@@ -142,7 +142,7 @@ std::size_t drawMultisampledTile(const DrawTarget& target, std::span<const DrawR
     else
 #endif
       passed = rasterizeSamples(r.setup, rect, planes, std::uint32_t(i)), anyWinner = true;
-    if (passed != 0) bounds.drawn(r.setup);
+    if (passed != 0) bounds.drawn();
     fragments += passed;
   }
   fragments += tinyFragments.drawUpTo(records.size());
