@@ -2,6 +2,7 @@
 
 #include <hwy/highway.h>
 
+#include "image/display_bytes.h"
 #include "math/tone_map-inl.h"
 
 #include <algorithm>
@@ -74,51 +75,22 @@ std::array<std::uint8_t, 4> backgroundBytes(const Vec4& background, const Displa
 
 void applyDisplay(Image& image, const Display& display, const Vec4* background) {
   if (display.identity()) return;
-  std::array<std::uint8_t, 256> table;
-  for (int i = 0; i < 256; ++i) table[std::size_t(i)] = byte(displayValue(Real(i) / 255, display));
-  // Pixels as RGBA words (bytes in memory order): a background pixel, compared whole, takes the
-  // background's shown bytes; any other has its three colour bytes mapped and keeps its alpha.
-  const auto word = [](const std::array<std::uint8_t, 4>& bytes) {
-    std::uint32_t w;
-    std::memcpy(&w, bytes.data(), 4);
-    return w;
-  };
-  std::array<std::uint8_t, 4> stored{}, shown{};
+  DisplayBytes map;
+  for (int i = 0; i < 256; ++i) map.table[i] = byte(displayValue(Real(i) / 255, display));
+  // A background pixel, compared whole, takes the background's shown bytes; any other has its
+  // three colour bytes mapped and keeps its alpha.
   if (background) {
+    std::array<std::uint8_t, 4> stored{};
     for (int c = 0; c < 4; ++c) stored[std::size_t(c)] = byte((*background)[c]);
-    shown = backgroundBytes(*background, display);
+    const std::array<std::uint8_t, 4> shown = backgroundBytes(*background, display);
+    std::memcpy(&map.stored, stored.data(), 4);
+    std::memcpy(&map.shown, shown.data(), 4);
+    map.hasBackground = true;
   }
-  const std::uint32_t storedWord = word(stored), shownWord = word(shown);
-  const bool hasBackground = background != nullptr;
+  // Each pixel on its own: any split over threads gives the same bytes.
   const std::size_t pixels = image.rgba.size() / 4;
-  std::uint8_t* const data = image.rgba.data();
-  const auto mapped = [table, storedWord, shownWord, hasBackground](std::uint32_t w) {
-    if (hasBackground && w == storedWord) return shownWord;
-    return std::uint32_t(table[w & 0xFF]) | std::uint32_t(table[w >> 8 & 0xFF]) << 8 |
-           std::uint32_t(table[w >> 16 & 0xFF]) << 16 | (w & 0xFF000000u);
-  };
-  // Each pixel on its own: any split over threads gives the same bytes. Runs of background (most
-  // of a model preview) are found 16 pixels at a time.
-  constexpr std::size_t kRun = 16;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pixels, 1 << 15), [&](const tbb::blocked_range<std::size_t>& r) {
-    std::size_t i = r.begin();
-    std::uint32_t w[kRun];
-    for (; i + kRun <= r.end(); i += kRun) {
-      std::uint8_t* p = data + 4 * i;
-      std::memcpy(w, p, sizeof w);
-      bool all = hasBackground;
-      for (std::size_t k = 0; k < kRun; ++k) all &= w[k] == storedWord;
-      if (all)
-        std::fill_n(w, kRun, shownWord);
-      else
-        for (std::size_t k = 0; k < kRun; ++k) w[k] = mapped(w[k]);
-      std::memcpy(p, w, sizeof w);
-    }
-    for (; i < r.end(); ++i) {
-      std::memcpy(w, data + 4 * i, 4);
-      w[0] = mapped(w[0]);
-      std::memcpy(data + 4 * i, w, 4);
-    }
+    mapDisplayBytes(image.rgba.data() + 4 * r.begin(), r.size(), map);
   });
 }
 

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace illum {
@@ -40,6 +41,39 @@ TEST(Display, SrgbEncodingRoundTripsEveryByte) {
     const double encoded = i / 255.0;
     const double linear = encoded <= 0.04045 ? encoded / 12.92 : std::pow((encoded + 0.055) / 1.055, 2.4);
     EXPECT_EQ(std::lround(srgbEncoded(Real(linear)) * 255), i);
+  }
+}
+
+TEST(Display, EveryPixelMapsOnItsOwnWhereverItLies) {
+  // 1000 pixels (a vector's tail too): every colour byte through the encoding, alpha kept, and the
+  // background's bytes, wherever they stand (whole vectors of them, single ones), its shown ones.
+  // (A dark red whose shown byte, 10, is not its stored byte's encoding, 13.)
+  const Vec4 background(0.003f, 0.4f, 0.6f, 1);
+  const std::uint8_t stored[4] = {1, 102, 153, 255};
+  Image image(1000, 1);
+  std::uint32_t state = 12345;
+  for (int x = 0; x < image.width; ++x) {
+    std::uint8_t* p = image.pixel(x, 0);
+    const bool backdrop = (x >= 64 && x < 160) || x % 37 == 0;
+    for (int c = 0; c < 4; ++c) {
+      state = state * 1664525u + 1013904223u;
+      p[c] = backdrop ? stored[c] : std::uint8_t(state >> 24);
+    }
+  }
+  const Image before = image;
+  const Display display{ToneMap::None, Encoding::Srgb};
+  applyDisplay(image, display, &background);
+  const std::array<std::uint8_t, 4> shown = backgroundBytes(background, display);
+  EXPECT_EQ(shown[0], 10);
+  EXPECT_EQ(std::lround(srgbEncoded(1.0f / 255) * 255), 13);
+  for (int x = 0; x < image.width; ++x) {
+    const std::uint8_t* was = before.pixel(x, 0);
+    const std::uint8_t* is = image.pixel(x, 0);
+    const bool backdrop = std::equal(was, was + 4, stored);
+    for (int c = 0; c < 3; ++c)
+      EXPECT_EQ(is[c], backdrop ? shown[std::size_t(c)] : std::lround(srgbEncoded(Real(was[c]) / 255) * 255))
+          << "pixel " << x << " channel " << c;
+    EXPECT_EQ(is[3], was[3]) << "pixel " << x;
   }
 }
 
