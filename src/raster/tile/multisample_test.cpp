@@ -8,9 +8,12 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
+#include <hwy/targets.h>
 #include <tbb/global_control.h>
 
 #include <cmath>
+#include <cstring>
+#include <vector>
 
 namespace illum {
 namespace {
@@ -150,6 +153,62 @@ TEST(Multisample, SameBytesOnEveryThreadCount) {
   const Image all = renderScene(s);
   const tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
   EXPECT_EQ(renderScene(s).rgba, all.rgba);
+}
+
+// resolvePixel's definition as it reads, divisions and all: colour Σ(c·a) / Σa (Σc / n where no
+// sample has alpha), alpha Σa / n, each rounded to nearest (halves up).
+std::uint32_t resolvedByTheDefinition(const std::uint32_t* samples, int n) {
+  std::uint64_t weighted[3] = {}, plain[3] = {}, alpha = 0;
+  for (int s = 0; s < n; ++s) {
+    const std::uint64_t a = samples[s] >> 24;
+    for (int c = 0; c < 3; ++c) weighted[c] += (samples[s] >> (8 * c) & 0xFF) * a, plain[c] += samples[s] >> (8 * c) & 0xFF;
+    alpha += a;
+  }
+  const auto rounded = [](std::uint64_t sum, std::uint64_t over) { return std::uint32_t((2 * sum + over) / (2 * over)); };
+  std::uint32_t out = rounded(alpha, std::uint64_t(n)) << 24;
+  for (int c = 0; c < 3; ++c) out |= (alpha > 0 ? rounded(weighted[c], alpha) : rounded(plain[c], std::uint64_t(n))) << (8 * c);
+  return out;
+}
+
+TEST(Multisample, ResolvingRowsIsResolvingEachPixelOnEveryTarget) {
+  // Rows of 37 pixels (a vector's tail too) of 2, 4 and 8 samples: pixels whose samples agree,
+  // opaque ones that differ (an edge between two surfaces), translucent ones, in random order.
+  std::uint32_t state = 2024;
+  const auto next = [&] { return state = state * 1664525u + 1013904223u; };
+  constexpr int kRows = 3, kCount = 37, kRowPixels = 64;
+  constexpr std::uint32_t kBackground = 0xFF302010u;
+  for (const int samples : {2, 4, 8}) {
+    std::vector<std::uint32_t> src(std::size_t(kRows * kRowPixels * samples));
+    for (std::size_t p = 0; p < src.size() / std::size_t(samples); ++p) {
+      const std::uint32_t kind = next() >> 30, a = next() | 0xFF000000u, b = next() | 0xFF000000u;
+      for (int s = 0; s < samples; ++s) {
+        std::uint32_t& w = src[p * std::size_t(samples) + std::size_t(s)];
+        if (kind == 0) w = p % 5 == 0 ? kBackground : a;          // agreeing
+        else if (kind == 1) w = (next() & 1) ? a : b;             // opaque, mixed
+        else if (kind == 2) w = next();                           // any alpha
+        else w = s == 0 ? (a & 0x7FFFFFFFu) : a;                  // one translucent sample
+      }
+    }
+    std::vector<std::uint8_t> expected(std::size_t(kRows * kCount * 4));
+    std::size_t expectedUnlike = 0;
+    for (int r = 0; r < kRows; ++r)
+      for (int x = 0; x < kCount; ++x) {
+        const std::uint32_t* pixel = &src[std::size_t((r * kRowPixels + x) * samples)];
+        const std::uint32_t w = resolvePixel(pixel, samples);
+        EXPECT_EQ(w, resolvedByTheDefinition(pixel, samples));
+        std::memcpy(&expected[std::size_t((r * kCount + x) * 4)], &w, 4);
+        expectedUnlike += w != kBackground;
+      }
+    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+      hwy::SetSupportedTargetsForTest(target);
+      std::vector<std::uint8_t> actual(expected.size());
+      const std::size_t unlike =
+          resolvePixels(src.data(), samples, kRowPixels, actual.data(), kCount * 4, kCount, kRows, kBackground);
+      EXPECT_EQ(actual, expected) << hwy::TargetName(target) << ", " << samples << " samples";
+      EXPECT_EQ(unlike, expectedUnlike) << hwy::TargetName(target) << ", " << samples << " samples";
+    }
+    hwy::SetSupportedTargetsForTest(0);
+  }
 }
 
 TEST(Multisample, PatternsAreTheStandardOnes) {
