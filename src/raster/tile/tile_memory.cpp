@@ -92,10 +92,11 @@ std::size_t ResolvePixels(const std::uint32_t* src, int samples, int srcRowPixel
   const auto leads = hn::Eq(hn::And(hn::Iota(du, 0), hn::Set(du, std::uint32_t(samples - 1))), hn::Zero(du));
   const auto backgroundWord = hn::Set(du, background);
 #if HWY_TARGET != HWY_SCALAR
-  // Mixed pixels summed in the vector: 2 or 4 samples, a pixel's lanes inside one 128-bit block.
-  const bool sumsInBlocks = (samples == 2 || samples == 4) && lanes >= 4;
+  // Mixed pixels summed in the vector: 2, 4 or 8 samples (a vector holds whole pixels).
+  const bool sumsInVector = samples >= 2 && samples <= 8 && lanes >= 4;
   const int shift = __builtin_ctz(unsigned(samples));
-  const auto channel = hn::Set(du, 0xFFu), eleven = hn::Set(du, 0x7FFu), half = hn::Set(du, std::uint32_t(samples / 2));
+  const auto channel = hn::Set(du, 0xFFu), redAndBlue = hn::Set(du, 0x00FF00FFu);
+  const auto half = hn::Set(du, std::uint32_t(samples / 2)), halves = hn::Set(du, std::uint32_t(samples / 2) * 0x10001u);
 #endif
   for (int r = 0; r < rows; ++r) {
     const std::uint32_t* row = src + std::size_t(r) * std::size_t(srcRowPixels) * std::size_t(samples);
@@ -113,19 +114,21 @@ std::size_t ResolvePixels(const std::uint32_t* src, int samples, int srcRowPixel
         continue;
       }
 #if HWY_TARGET != HWY_SCALAR
-      if (sumsInBlocks && x + perVector <= count && hn::AllTrue(du, hn::Eq(hn::ShiftRight<24>(w), channel))) {
+      if (sumsInVector && x + perVector <= count && hn::AllTrue(du, hn::Eq(hn::ShiftRight<24>(w), channel))) {
         // Opaque samples, some pixels mixed: each pixel's colour is (s + samples/2) / samples of
-        // its channels' sums s (resolvePixel's shifts), all pixels of the vector at once. The
-        // channels lie 11 bits apart, so that one sum over a pixel's lanes (within a 128-bit
-        // block: swapped neighbours, then swapped pairs) holds all three, each ≤ 4·255 < 2^11.
-        const auto fields = hn::Or(hn::Or(hn::And(w, channel), hn::ShiftLeft<3>(hn::And(w, hn::ShiftLeft<8>(channel)))),
-                                   hn::ShiftLeft<6>(hn::And(w, hn::ShiftLeft<16>(channel))));
-        auto sums = hn::Add(fields, hn::Shuffle2301(fields));
-        if (samples == 4) sums = hn::Add(sums, hn::Shuffle1032(sums));
-        const auto mean = [&](auto sum) { return hn::ShiftRightSame(hn::Add(hn::And(sum, eleven), half), shift); };
-        const auto resolved = hn::Or(hn::Or(hn::Set(du, 0xFF000000u), mean(sums)),
-                                     hn::Or(hn::ShiftLeft<8>(mean(hn::ShiftRight<11>(sums))),
-                                            hn::ShiftLeft<16>(mean(hn::ShiftRight<22>(sums)))));
+        // its channels' sums s (resolvePixel's shifts), all pixels of the vector at once. Red and
+        // blue are summed together, 16 bits apart, green alone (each sum ≤ 8·255 < 2^16), over a
+        // pixel's lanes: swapped neighbours, swapped pairs (inside a 128-bit block), swapped blocks.
+        const auto sumOfPixel = [&](auto v) {
+          v = hn::Add(v, hn::Shuffle2301(v));
+          if (samples >= 4) v = hn::Add(v, hn::Shuffle1032(v));
+          if (samples >= 8) v = hn::Add(v, hn::SwapAdjacentBlocks(v));
+          return v;
+        };
+        const auto redBlue = sumOfPixel(hn::And(w, redAndBlue)), green = sumOfPixel(hn::And(hn::ShiftRight<8>(w), channel));
+        const auto resolved =
+            hn::Or(hn::Or(hn::Set(du, 0xFF000000u), hn::And(hn::ShiftRightSame(hn::Add(redBlue, halves), shift), redAndBlue)),
+                   hn::ShiftLeft<8>(hn::ShiftRightSame(hn::Add(green, half), shift)));
         HWY_ALIGN std::uint32_t firsts[hn::MaxLanes(du)];
         hn::Store(hn::Compress(resolved, leads), du, firsts);
         std::memcpy(to + 4 * x, firsts, 4 * std::size_t(perVector));
