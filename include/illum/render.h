@@ -88,7 +88,8 @@ class Renderer {
               FloatImage* linear = nullptr);
 
   // Called with the fraction of the picture done, from the rendering threads (the ray and path
-  // tracers, tile by tile), so that a long render can show its progress.
+  // tracers, tile by tile, one call at a time, each fraction larger than the last), so that a long
+  // render can show its progress.
   void onProgress(std::function<void(double)> progress) { progress_ = std::move(progress); }
   // A flag read between tiles (and between a frame's batches of triangles): once it is set, the
   // frame in flight stops early and render() returns a picture that is not to be used. A viewer

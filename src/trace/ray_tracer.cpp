@@ -16,6 +16,7 @@
 
 #include <array>
 #include <atomic>
+#include <mutex>
 #include <chrono>
 #include <cmath>
 #include <cstring>
@@ -236,12 +237,20 @@ void traceScene(const Scene& scene, Image& image, RenderStats& stats, PixelProbe
   tbb::combinable<TileCounts> counts;
   std::atomic<int> done{0};
   const int tiles = tilesX * tilesY;
+  // Fractions go out one at a time and only ever growing: two threads finishing tiles together
+  // could otherwise hand them over in the other order.
+  std::mutex reporting;
+  int reported = 0;
   tbb::parallel_for(tbb::blocked_range<int>(0, tiles), [&](const tbb::blocked_range<int>& r) {
     TileCounts& local = counts.local();
     for (int t = r.begin(); t < r.end(); ++t) {
       if (cancel && cancel->load(std::memory_order_relaxed)) return;
       frame.tile(t % tilesX * kTile, t / tilesX * kTile, local);
-      if (progress) progress(double(++done) / tiles);
+      const int finished = ++done;
+      if (progress) {
+        const std::lock_guard lock(reporting);
+        if (finished > reported) reported = finished, progress(double(finished) / tiles);
+      }
     }
   });
   if (denoised && !(cancel && cancel->load())) {
