@@ -269,11 +269,16 @@ std::size_t ShownPairs(const std::uint32_t* winners, int samples, std::uint32_t*
   HWY_ALIGN std::uint32_t firstOf[hn::MaxLanes(du)];
   for (int k = 0; k < lanes; ++k) firstOf[k] = std::uint32_t(k & ~(samples - 1));
   const auto first = hn::SetTableIndices(du, firstOf);
-  const std::uint64_t group = samples >= 64 ? ~std::uint64_t(0) : (std::uint64_t(1) << samples) - 1;
   // Each lane's pixel (from the vector's first), and the lanes that are a pixel's first sample.
   const int shift = __builtin_ctz(unsigned(samples));
   const auto lanePixel = hn::ShiftRightSame(hn::Iota(du, 0), shift);
-  const auto leads = hn::Eq(hn::And(hn::Iota(du, 0), hn::Set(du, std::uint32_t(samples - 1))), hn::Zero(du));
+  const auto sampleOf = hn::And(hn::Iota(du, 0), hn::Set(du, std::uint32_t(samples - 1)));
+  const auto leads = hn::Eq(sampleOf, hn::Zero(du));
+  // Row k − 1: each lane's sample k back in its pixel (itself where there is none).
+  HWY_ALIGN std::uint32_t back[(kSamplesMax - 1) * hn::MaxLanes(du)];
+  for (int k = 1; k < samples; ++k)
+    for (int lane = 0; lane < lanes; ++lane)
+      back[(k - 1) * lanes + lane] = std::uint32_t((lane & (samples - 1)) >= k ? lane - k : lane);
   for (int i = 0; i < words; i += lanes) {
     const auto w = hn::LoadU(du, winners + i);
     if (hn::AllTrue(du, hn::Eq(w, none))) continue;
@@ -285,19 +290,18 @@ std::size_t ShownPairs(const std::uint32_t* winners, int samples, std::uint32_t*
       n += hn::CountTrue(du, some);
       continue;
     }
-    std::uint8_t bytes[8] = {};
-    hn::StoreMaskBits(du, agree, bytes);
-    std::uint64_t same = 0;
-    std::memcpy(&same, bytes, sizeof same);
-    for (int g = 0; g < lanes; g += samples) {
-      const int index = (i + g) >> shift;
-      const std::uint32_t w0 = winners[i + g];
-      if ((same >> g & group) == group) {
-        if (w0 != kNoWinner) one(index, w0);
-      } else {
-        shown.forEachShown(index, one);
-      }
+    // Some pixel's samples differ: a lane shows a record of its own when it has one and none of
+    // its pixel's earlier samples (k lanes back, k = 1 .. samples − 1) shows the same. The lanes
+    // kept are in pixel order, then sample order, as forEachShown gives them.
+    auto fresh = hn::Ne(w, none);
+    for (int k = 1; k < samples; ++k) {
+      const auto earlier = hn::TableLookupLanes(w, hn::SetTableIndices(du, back + (k - 1) * lanes));
+      const auto firstFew = hn::Lt(sampleOf, hn::Set(du, std::uint32_t(k)));  // no sample k back
+      fresh = hn::And(fresh, hn::Or(firstFew, hn::Ne(w, earlier)));
     }
+    hn::StoreU(hn::Compress(lanePixel + hn::Set(du, std::uint32_t(i / samples)), fresh), du, pixel + n);
+    hn::StoreU(hn::Compress(w, fresh), du, slot + n);
+    n += hn::CountTrue(du, fresh);
   }
   return n;
 }
@@ -367,6 +371,10 @@ void finishVisible(const VisibleLayout& layout, VisibleBatch& batch) {
   HWY_DYNAMIC_DISPATCH(FinishVisible)(layout, batch);
 }
 
+std::size_t shownPairs(const std::uint32_t* winners, int samples, std::uint32_t* pixel, std::uint32_t* slot) {
+  return HWY_DYNAMIC_DISPATCH(ShownPairs)(winners, samples, pixel, slot);
+}
+
 namespace {
 
 // Where an object's per-vertex values go in a ShownRecord, for the frame's shading.
@@ -405,8 +413,7 @@ void VisibleShader::shadeAll(ShownLists& lists) {
   // The pairs, then each record's pixels laid out record by record (a counting sort).
   const std::size_t n = records_.size(), room = kTileBlock * std::size_t(out_.count) + 16;
   if (lists.pairPixel.size() < room) lists.pairPixel.resize(room), lists.pairSlot.resize(room);
-  const std::size_t pairs =
-      HWY_DYNAMIC_DISPATCH(ShownPairs)(out_.winners, out_.count, lists.pairPixel.data(), lists.pairSlot.data());
+  const std::size_t pairs = shownPairs(out_.winners, out_.count, lists.pairPixel.data(), lists.pairSlot.data());
   if (pairs == 0) return;
   lists.start.assign(n + 1, 0);
   for (std::size_t k = 0; k < pairs; ++k) ++lists.start[lists.pairSlot[k] + 1];

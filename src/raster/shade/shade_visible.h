@@ -126,6 +126,12 @@ void gatherShown(const VisibleLayout& layout, const ShownRecord& record, const P
                  const std::uint32_t* pixels, std::size_t count, VisibleBatch& batch);
 void finishVisible(const VisibleLayout& layout, VisibleBatch& batch);
 
+// The (pixel, record) pairs of a tile's winners (`samples` a pixel, kTileSize² pixels), pixel by
+// pixel, each record a pixel's samples show once, in sample order (VisibleSamples::forEachShown,
+// a vector at a time): pixel[k] and slot[k], k < the count returned. Both hold at least
+// kTileBlock·samples + 16 words.
+std::size_t shownPairs(const std::uint32_t* winners, int samples, std::uint32_t* pixel, std::uint32_t* slot);
+
 // The pixels each record shows in a tile, record by record (a counting sort of the pixels by the
 // records their samples show), reused from tile to tile.
 struct ShownLists {

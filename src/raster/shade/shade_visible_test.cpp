@@ -1,0 +1,49 @@
+// The pairs a tile's visible samples are shaded by: on every SIMD target, each record a pixel's
+// samples show, once, in pixel and then sample order, as forEachShown lists them one pixel at a time.
+#include "raster/shade/shade_visible.h"
+
+#include <hwy/targets.h>
+#include <gtest/gtest.h>
+
+#include <utility>
+#include <vector>
+
+namespace illum {
+namespace {
+
+TEST(ShownPairs, AreForEachShownsPixelByPixelOnEveryTarget) {
+  std::uint32_t state = 99;
+  const auto next = [&] { return state = state * 1664525u + 1013904223u; };
+  for (const int samples : {1, 2, 4, 8, 16}) {
+    const std::size_t pixels = std::size_t(kTileSize) * kTileSize, room = kTileBlock * std::size_t(samples) + 16;
+    std::vector<std::uint32_t> winners(kTileBlock * std::size_t(samples), kNoWinner);
+    // Empty pixels, pixels of one record, of two or three (record 0 among them), in runs.
+    for (std::size_t p = 0; p < pixels; ++p) {
+      const std::uint32_t kind = (next() >> 28) % 4, a = next() >> 29, b = next() >> 30;
+      for (int s = 0; s < samples; ++s) {
+        std::uint32_t& w = winners[p * std::size_t(samples) + std::size_t(s)];
+        const std::uint32_t pick = next() >> 30;
+        if (kind == 0) w = kNoWinner;
+        else if (kind == 1) w = a;
+        else if (kind == 2) w = pick & 1 ? a : b;
+        else w = pick == 0 ? kNoWinner : pick == 1 ? a : pick == 2 ? b : 0;
+      }
+    }
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> expected;
+    const VisibleSamples shown{samples, nullptr, winners.data()};
+    for (std::size_t p = 0; p < pixels; ++p)
+      shown.forEachShown(int(p), [&](int index, std::uint32_t slot) { expected.emplace_back(std::uint32_t(index), slot); });
+    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+      hwy::SetSupportedTargetsForTest(target);
+      std::vector<std::uint32_t> pixel(room), slot(room);
+      const std::size_t n = shownPairs(winners.data(), samples, pixel.data(), slot.data());
+      std::vector<std::pair<std::uint32_t, std::uint32_t>> actual;
+      for (std::size_t k = 0; k < n; ++k) actual.emplace_back(pixel[k], slot[k]);
+      EXPECT_EQ(actual, expected) << hwy::TargetName(target) << ", " << samples << " samples";
+    }
+    hwy::SetSupportedTargetsForTest(0);
+  }
+}
+
+}  // namespace
+}  // namespace illum
