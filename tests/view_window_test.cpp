@@ -2,6 +2,7 @@
 // key events, screenshots. What the window shows is asserted against what `illum render` draws.
 #include "view_window.h"
 
+#include <cstring>
 #include <fstream>
 #include <thread>
 
@@ -56,7 +57,7 @@ TEST_F(ViewWindow, ShowsWhatRenderDrawsAndTurnsWhenDragged) {
   ASSERT_EQ(crop(first, 320, 200).rgba, expected.rgba) << "the window is not the picture `illum render` draws";
   EXPECT_EQ(first.width, 320);  // no panels: the window is the picture
   // A left drag turns the view about the focal point: most of the objects' pixels change.
-  v->drag(100, 100, 180, 110);
+  v->key("3");
   const Image turned = v->waitFor([&](const Image& s) { return differingPixels(crop(s, 320, 200), expected) > 3000; });
   EXPECT_GT(differingPixels(crop(turned, 320, 200), expected), 3000u);
   // Enter: back to the framing, the very same bytes.
@@ -186,6 +187,32 @@ TEST_F(ViewWindow, AModelIsFramedAsRenderFramesItWithThePanelsBeside) {
 #ifdef ILLUM_SCREENSHOT
   writePng(ILLUM_SCREENSHOT, withReport);
 #endif
+  EXPECT_EQ(v->quit(), 0);
+}
+
+TEST_F(ViewWindow, ThePanelsStayAsDrawnWhileTheViewTurnsAndFollowAKey) {
+  // The panels' strip is drawn again only when what it shows changes: an axis view (key 3) turns
+  // the picture and leaves the strip's pixels as they were; Q checks a box there (ambient
+  // occlusion, near the top, where the short window shows it), and Q again brings back the very
+  // strip the turn kept.
+  auto v = std::make_unique<Viewer>(display, dir.path(), scene.string());
+  const auto strip = [](const Image& s) {
+    Image out(s.width - 320, s.height);
+    for (int y = 0; y < s.height; ++y) std::memcpy(out.pixel(0, y), s.pixel(320, y), std::size_t(out.width) * 4);
+    return out;
+  };
+  const Image before = v->settled();
+  ASSERT_EQ(before.width, 320 + 460);
+  v->key("3");
+  const Image turned = v->waitFor([&](const Image& s) { return differingPixels(crop(s, 320, 200), crop(before, 320, 200)) > 3000; });
+  EXPECT_GT(differingPixels(crop(turned, 320, 200), crop(before, 320, 200)), 3000u);
+  EXPECT_EQ(strip(turned).rgba, strip(before).rgba);
+  v->key("q");
+  const Image checked = v->waitFor([&](const Image& s) { return strip(s).rgba != strip(before).rgba; });
+  EXPECT_NE(strip(checked).rgba, strip(before).rgba);
+  v->key("q");
+  const Image back = v->waitFor([&](const Image& s) { return strip(s).rgba == strip(before).rgba; });
+  EXPECT_EQ(strip(back).rgba, strip(before).rgba);
   EXPECT_EQ(v->quit(), 0);
 }
 

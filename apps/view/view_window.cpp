@@ -22,6 +22,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <vector>
 #include <ctime>
 #include <filesystem>
 #include <memory>
@@ -41,6 +42,14 @@ struct Window {
   SDL_Window* window = nullptr;
   SDL_Renderer* renderer = nullptr;
   std::unique_ptr<PictureTexture> picture;
+  // The panels' strip as last drawn (drawWindowAround): what ImGui drew there and where the picture
+  // and the window's edges were. The window's surface keeps it from one frame to the next.
+  struct {
+    std::uint64_t drawn = 0;
+    SDL_Rect picture{0, 0, 0, 0};
+    int width = 0, height = 0;
+    bool valid = false;
+  } strip;
   bool imgui = false;
   ~Window() {
     if (imgui) {
@@ -112,6 +121,65 @@ void fillAround(const Window& w, const SDL_Rect& picture, bool panels) {
   const SDL_Rect below{0, picture.h, picture.w, height - picture.h};
   for (const SDL_Rect& rect : {right, below})
     if (rect.w > 0 && rect.h > 0) SDL_RenderFillRect(w.renderer, &rect);
+}
+
+// Around the picture just copied to its place (`shown`): the rest of the window filled and ImGui's
+// frame drawn over both. The panels' strip is only drawn again when what ImGui draws there changed
+// (the window's surface keeps it): while a drag turns the view, the panels stay as they were, and
+// filling and drawing them took half of presenting's own time. ImGui's lists are told apart by
+// where they draw: the panels' lie wholly in the strip; the foreground list (the lights'
+// handles, the watched pixel's mark: marks on the picture) is clipped to the picture; another list
+// reaching into the strip (the list of keys, dragged over the edge) has it all drawn again. A
+// list's place is its vertices' (the panels' clipping rectangle is the whole window).
+void drawWindowAround(Window& w, const SDL_Rect& shown, bool panels) {
+  ImDrawData& data = *ImGui::GetDrawData();
+  const ImDrawList* foreground = ImGui::GetForegroundDrawList();
+  const float right = float(shown.w);
+  std::uint64_t drawn = 1469598103934665603ull;  // FNV-1a over the strip's lists
+  const auto mix = [&](const void* bytes, std::size_t size) {
+    const auto* p = static_cast<const unsigned char*>(bytes);
+    for (std::size_t i = 0; i < size; ++i) drawn = (drawn ^ p[i]) * 1099511628211ull;
+  };
+  std::vector<ImDrawList*> onPicture;
+  bool reachesStrip = false;
+  for (int l = 0; l < data.CmdListsCount; ++l) {
+    ImDrawList& list = *data.CmdLists[l];
+    if (&list == foreground)
+      for (ImDrawCmd& cmd : list.CmdBuffer) cmd.ClipRect.z = std::min(cmd.ClipRect.z, right);
+    float left = right, last = 0;  // the list's vertices' extent across
+    for (const ImDrawVert& v : list.VtxBuffer) left = std::min(left, v.pos.x), last = std::max(last, v.pos.x);
+    bool callback = false;
+    for (const ImDrawCmd& cmd : list.CmdBuffer) callback = callback || cmd.UserCallback;
+    if (left < right || callback) {
+      onPicture.push_back(&list);
+      reachesStrip = reachesStrip || callback || (&list != foreground && last > right);
+      continue;
+    }
+    mix(list.VtxBuffer.Data, std::size_t(list.VtxBuffer.Size) * sizeof(ImDrawVert));
+    mix(list.IdxBuffer.Data, std::size_t(list.IdxBuffer.Size) * sizeof(ImDrawIdx));
+    for (const ImDrawCmd& cmd : list.CmdBuffer) {
+      mix(&cmd.ClipRect, sizeof cmd.ClipRect);
+      mix(&cmd.TextureId, sizeof cmd.TextureId);
+      mix(&cmd.VtxOffset, sizeof cmd.VtxOffset);
+      mix(&cmd.IdxOffset, sizeof cmd.IdxOffset);
+      mix(&cmd.ElemCount, sizeof cmd.ElemCount);
+    }
+  }
+  int width = 0, height = 0;
+  SDL_GetRendererOutputSize(w.renderer, &width, &height);
+  mix(&panels, sizeof panels);
+  const bool kept = w.strip.valid && !reachesStrip && drawn == w.strip.drawn && width == w.strip.width &&
+                    height == w.strip.height && SDL_RectEquals(&shown, &w.strip.picture);
+  w.strip = {drawn, shown, width, height, !reachesStrip};
+  if (!kept) {
+    fillAround(w, shown, panels);
+    ImGui_ImplSDLRenderer_RenderDrawData(&data);
+    return;
+  }
+  ImDrawData picture = data;
+  picture.CmdLists = onPicture.data();
+  picture.CmdListsCount = int(onPicture.size());
+  if (picture.CmdListsCount > 0) ImGui_ImplSDLRenderer_RenderDrawData(&picture);
 }
 
 // The CPU time this thread has used, in milliseconds: presenting's own cost, apart from the
@@ -411,8 +479,7 @@ int runViewer(const std::vector<std::string>& files, const cli::SceneOptions& op
       shown = {0, 0, quick ? state.scene().width : p.width(), quick ? state.scene().height : p.height()};
       SDL_RenderCopy(w.renderer, p.texture(), nullptr, &shown);
     }
-    fillAround(w, shown, state.toggles().panels);
-    ImGui_ImplSDLRenderer_RenderDrawData(ImGui::GetDrawData());
+    drawWindowAround(w, shown, state.toggles().panels);
     SDL_RenderPresent(w.renderer);
     if (fresh)
       pace.shown(frame.ms, std::chrono::duration<double, std::milli>(Clock::now() - presenting).count(),
