@@ -7,6 +7,7 @@
 #include "raster/pipeline.h"
 
 #include "raster/setup/bin.h"
+#include "raster/setup/object_reach.h"
 #include "raster/shade/draw.h"
 #include "raster/tile/multisample.h"
 #include "raster/lines/overlay.h"
@@ -38,15 +39,17 @@ constexpr std::size_t kBatchTiny = 1 << 16;
 
 // What the pipeline keeps from frame to frame.
 struct RasterPipeline::State {
-  // Every sample of every pixel. A tile drawn once, in the frame's last flush, lives in its
-  // thread's memory instead (Framebuffer::lendTile): the framebuffer's own blocks are touched only
-  // by tiles that several flushes draw.
+  // Every sample of the pixels of the tiles in progress. A tile drawn once, in the frame's last
+  // flush, lives in its thread's memory instead (Framebuffer::lendTile); one that no object still
+  // to come can reach is finished when its last one is drawn and gives its block back
+  // (BinnedFrame::finishEarly): the framebuffer's blocks are those of tiles that several flushes draw.
   Framebuffer fb;
   std::vector<std::size_t> tileFragments;
   std::vector<ShadedVertex> vertices;  // a run of objects' (BinnedFrame::drawObjects)
   struct Member {
     const Object* object;
     std::uint32_t index;  // in the scene
+    std::uint32_t order;  // in the drawing order
     std::size_t base;     // its first vertex in `vertices`
   };
   std::vector<Member> group;
@@ -76,6 +79,10 @@ struct RasterPipeline::State {
   };
   tbb::enumerable_thread_specific<TileList> tileLists;
   tbb::affinity_partitioner tileAffinity;
+  // Per tile: 1 + the drawing-order position of the last object that can reach it (0: none), and
+  // whether it is in the image already (BinnedFrame::finishEarly).
+  std::vector<std::uint32_t> lastReach;
+  std::vector<std::uint8_t> finished;
 };
 
 namespace {
@@ -83,23 +90,30 @@ namespace {
 // One frame through the pipeline, in the renderer's working memory.
 class BinnedFrame {
  public:
+  // `image`, when given, takes the tiles that are finished before the frame is (finishEarly):
+  // only when nothing is drawn after the triangles.
   BinnedFrame(RasterPipeline::State& state, const Scene& scene, const FrameContext& frame,
-              const std::atomic<bool>* cancel)
+              const std::atomic<bool>* cancel, Image* image)
       : s_(state), frame_(frame), target_(frame, scene, state.fb, nullptr), cancel_(cancel),
-        samples_(std::max<int>(1, int(frame.samples.size()))) {
+        samples_(std::max<int>(1, int(frame.samples.size()))), image_(image),
+        background8_(packUnorm8(scene.background)) {
     s_.fb.reset(scene.width, scene.height, scene.background, samples_);
     tiles_.reset(frame.width, frame.height);
     s_.tileFragments.assign(std::size_t(tiles_.tileCount()), 0);
+    s_.finished.assign(std::size_t(tiles_.tileCount()), 0);
+    if (image_) s_.fb.imageOf(*image_);
   }
 
   // Draws the objects in the order given. A run of small objects goes through the vertex stage and
   // the set-up together, one parallel pass each for the run: a sphere of a few thousand vertices
   // alone would leave a core waiting at each pass's end.
   void drawObjects(const Scene& scene, std::span<const Object* const> order) {
+    findLastReach(order);
     auto& group = s_.group;
     group.clear();
     std::size_t vertices = 0;
-    for (const Object* object : order) {
+    for (std::size_t k = 0; k < order.size(); ++k) {
+      const Object* object = order[k];
       if (object->mesh->triangleCount() == 0) continue;  // points and lines only: drawn after the triangles
       const std::size_t n = object->mesh->positions.size();
       if (!group.empty() && vertices + n > kSmallRun) {
@@ -107,7 +121,7 @@ class BinnedFrame {
         group.clear();
         vertices = 0;
       }
-      group.push_back({object, std::uint32_t(object - scene.objects.data()), vertices});
+      group.push_back({object, std::uint32_t(object - scene.objects.data()), std::uint32_t(k), vertices});
       vertices += n;
     }
     if (!group.empty()) drawGroup(vertices);
@@ -122,7 +136,10 @@ class BinnedFrame {
     tbb::parallel_for(
         tbb::blocked_range<int>(0, tiles_.tileCount()),
         [&](const tbb::blocked_range<int>& range) {
-          for (int tile = range.begin(); tile < range.end(); ++tile) drawTile(tile);
+          for (int tile = range.begin(); tile < range.end(); ++tile) {
+            drawTile(tile);
+            finishEarly(tile);
+          }
         },
         s_.tileAffinity);
     used_ = 0;
@@ -133,19 +150,18 @@ class BinnedFrame {
   // into `image` by the thread that drew it (Framebuffer::toImage tile by tile), a tile that no
   // earlier flush drew in that thread's own memory (Framebuffer::lendTile). Returns the pixels
   // unlike the background; the framebuffer keeps only what earlier flushes drew.
-  std::size_t flushInto(Image& image, const Color4& background) {
-    s_.fb.imageOf(image);
-    const std::uint32_t background8 = packUnorm8(background);
+  std::size_t flushInto(Image& image) {
     std::atomic<std::size_t> unlike{0};
     tbb::parallel_for(
         tbb::blocked_range<int>(0, tiles_.tileCount()),
         [&](const tbb::blocked_range<int>& range) {
           std::size_t n = 0;
           for (int tile = range.begin(); tile < range.end(); ++tile) {
+            if (s_.finished[std::size_t(tile)]) continue;
             const bool lent = used_ > 0 && !s_.fb.drawn(tile);
             if (lent) s_.fb.lendTile(tile, s_.scratch.local().pixels);
             if (used_ > 0) drawTile(tile);
-            n += s_.fb.copyTile(tile, image, background8);
+            n += s_.fb.copyTile(tile, image, background8_);
             if (lent) s_.fb.returnTile(tile);
           }
           unlike += n;
@@ -153,7 +169,7 @@ class BinnedFrame {
         s_.tileAffinity);
     used_ = 0;
     batchedRecords_ = batchedTiny_ = 0;
-    return unlike;
+    return unlike + unlikeEarly_;
   }
 
   // Points, lines and overlay lines, after the triangles: into each sample's framebuffer, as a
@@ -209,6 +225,17 @@ class BinnedFrame {
       fragments += drawBlendedTile(target_, std::span(list.records).subspan(opaque), rect, scratch, planes);
   }
 
+  // A tile drawn by this flush or an earlier one, that no object still to be set up can reach,
+  // goes into the image now and gives its memory back (Framebuffer::releaseTile): a scene of many
+  // objects holds the samples of the tiles its objects in progress reach, not of the whole frame.
+  void finishEarly(int tile) {
+    const auto t = std::size_t(tile);
+    if (!image_ || s_.finished[t] || !s_.fb.drawn(tile) || s_.lastReach[t] > setUp_ || cancelled()) return;
+    unlikeEarly_ += s_.fb.copyTile(tile, *image_, background8_);
+    s_.fb.releaseTile(tile);
+    s_.finished[t] = 1;
+  }
+
   RenderStats stats() const {
     RenderStats s = stats_;
     for (std::size_t f : s_.tileFragments) s.fragmentsShaded += f;
@@ -262,12 +289,36 @@ class BinnedFrame {
       }, tbb::static_partitioner());
       if (s_.spans.size() < s_.pool.size()) s_.spans.resize(s_.pool.size());
       for (std::size_t c = c0; c < c1; ++c) {
+        const auto& [member, first, last] = ranges[c];
+        if (last == member->object->mesh->triangleCount()) setUp_ = member->order + 1;
         s_.spans[used_] = s_.pool[used_].bins.span();
         const RasterPipeline::State::Chunk& chunk = s_.pool[used_++];
         batchedRecords_ += chunk.records.size();
         batchedTiny_ += chunk.drawn - chunk.records.size();
         stats_.trianglesDrawn += chunk.drawn;
       }
+    }
+  }
+
+  // s_.lastReach for the objects of `order` (objectReach), when tiles can finish early: with two
+  // objects or more (one object's tiles are all finished at the frame's end).
+  void findLastReach(std::span<const Object* const> order) {
+    s_.lastReach.assign(std::size_t(tiles_.tileCount()), 0);
+    std::vector<std::uint32_t> drawn;
+    for (std::size_t k = 0; k < order.size(); ++k)
+      if (order[k]->mesh->triangleCount() > 0) drawn.push_back(std::uint32_t(k));
+    if (!image_ || drawn.size() < 2) {
+      image_ = nullptr;
+      return;
+    }
+    std::vector<PixelRect> reach(drawn.size());
+    tbb::parallel_for(std::size_t(0), drawn.size(), [&](std::size_t i) { reach[i] = objectReach(frame_, *order[drawn[i]]); });
+    const int tilesX = (frame_.width + kTileSize - 1) / kTileSize;
+    for (std::size_t i = 0; i < drawn.size(); ++i) {
+      const PixelRect& r = reach[i];
+      for (int ty = r.minY / kTileSize; r.minX <= r.maxX && ty <= r.maxY / kTileSize; ++ty)
+        for (int tx = r.minX / kTileSize; tx <= r.maxX / kTileSize; ++tx)
+          s_.lastReach[std::size_t(ty) * std::size_t(tilesX) + std::size_t(tx)] = drawn[i] + 1;
     }
   }
 
@@ -283,12 +334,18 @@ class BinnedFrame {
   TileBins tiles_;  // only its tile rectangles: the records are binned per chunk
   std::size_t used_ = 0, batchedRecords_ = 0, batchedTiny_ = 0;
   RenderStats stats_;
+  Image* image_;                 // where tiles finished early go (none: they are not)
+  std::uint32_t background8_;    // the background as an RGBA8 word
+  std::uint32_t setUp_ = 0;      // objects [0, setUp_) of the drawing order are set up in full
+  std::atomic<std::size_t> unlikeEarly_{0};  // pixels of the tiles finished early unlike the background
 };
 
 }  // namespace
 
 RasterPipeline::RasterPipeline() : state_(std::make_unique<State>()) {}
 RasterPipeline::~RasterPipeline() = default;
+
+std::size_t RasterPipeline::tileBlocksMade() const { return state_->fb.blocksMade(); }
 
 void RasterPipeline::draw(const Scene& scene, Image& image, RenderStats& stats, PixelProbe* probe,
                           const OcclusionQuery* occlusion, const std::atomic<bool>* cancel) {
@@ -301,15 +358,16 @@ void RasterPipeline::draw(const Scene& scene, Image& image, RenderStats& stats, 
   // coverage, depth and colour per sample and resolving them (shade_tile.h); each pixel shaded at
   // its centre, once per triangle that it shows.
   if (samples.size() > 1) frame.setSamples(samples);
-  BinnedFrame pass(*state_, scene, frame, cancel);
+  const bool afterTriangles = hasPointsOrLines(scene) || !overlay.empty();
+  BinnedFrame pass(*state_, scene, frame, cancel, afterTriangles ? nullptr : &image);
   pass.drawObjects(scene, drawingOrder(scene, frame));
-  if (hasPointsOrLines(scene) || !overlay.empty()) {
+  if (afterTriangles) {
     pass.flush();
     pass.drawAfterTriangles(scene, overlay);
     stats = pass.stats();
     stats.pixelsDrawn = state_->fb.toImage(image, scene.background);
   } else {
-    const std::size_t unlike = pass.flushInto(image, scene.background);
+    const std::size_t unlike = pass.flushInto(image);
     stats = pass.stats();
     stats.pixelsDrawn = unlike;
   }

@@ -31,6 +31,10 @@ class RasterPipeline {
   void draw(const Scene& scene, Image& image, RenderStats& stats, PixelProbe* probe,
             const OcclusionQuery* occlusion = nullptr, const std::atomic<bool>* cancel = nullptr);
 
+  // How many tiles' worth of samples the framebuffer holds (its blocks: Framebuffer::blocksMade),
+  // for the tests of what a frame keeps in memory.
+  std::size_t tileBlocksMade() const;
+
   struct State;
 
  private:

@@ -16,20 +16,43 @@ void Framebuffer::reset(int width, int height, const Color4& clearColor, int sam
   samples_ = samples;
   tilesX_ = (width + kTileSize - 1) / kTileSize;
   const std::size_t tiles = std::size_t(tilesX_) * std::size_t((height + kTileSize - 1) / kTileSize);
-  if (blocks_ != tiles * blockSize()) {
-    blocks_ = tiles * blockSize();
-    depth_.reset(new Real[blocks_]);
-    color_.reset(new std::uint32_t[blocks_]);
-  }
+  // The blocks made are kept for tiles of the same size; every one is free again.
+  if (samples != blockSamples_) pool_.clear(), blockSamples_ = samples;
+  free_.resize(pool_.size());
+  for (std::size_t b = 0; b < pool_.size(); ++b) free_[b] = std::uint32_t(pool_.size() - 1 - b);
   clear_ = packUnorm8(clearColor);
   cleared_.assign(tiles, 0);
-  block_.resize(tiles);
-  for (std::size_t t = 0; t < tiles; ++t) block_[t] = ownBlock(t);
+  block_.assign(tiles, Block{});
+  held_.assign(tiles, -1);
+}
+
+Framebuffer::Block Framebuffer::acquire(std::size_t tile) {
+  const std::lock_guard<std::mutex> lock(*poolMutex_);
+  if (free_.empty()) {
+    free_.push_back(std::uint32_t(pool_.size()));
+    pool_.push_back({std::unique_ptr<Real[]>(new Real[blockSize()]), std::unique_ptr<std::uint32_t[]>(new std::uint32_t[blockSize()])});
+  }
+  const std::uint32_t b = free_.back();
+  free_.pop_back();
+  held_[tile] = std::int32_t(b);
+  return {pool_[b].depth.get(), pool_[b].color.get()};
+}
+
+void Framebuffer::releaseTile(int tile) {
+  const auto t = std::size_t(tile);
+  if (held_[t] >= 0) {
+    const std::lock_guard<std::mutex> lock(*poolMutex_);
+    free_.push_back(std::uint32_t(held_[t]));
+  }
+  held_[t] = -1;
+  block_[t] = {};
+  cleared_[t] = 0;
 }
 
 void Framebuffer::clearTile(int x0, int y0) {
   const std::size_t t = tileOf(x0, y0);
   if (cleared_[t]) return;
+  if (!block_[t].depth) block_[t] = acquire(t);  // (a lent tile has its memory)
   fillTile(block_[t].depth, block_[t].color, blockSize(), clear_);
   cleared_[t] = 1;
 }

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <mutex>
 #include <vector>
 
 namespace illum {
@@ -105,9 +106,15 @@ class Framebuffer {
     block_[std::size_t(tile)] = {memory.depth.data(), memory.color.data()};
   }
   void returnTile(int tile) {
-    block_[std::size_t(tile)] = ownBlock(std::size_t(tile));
+    block_[std::size_t(tile)] = {};
     cleared_[std::size_t(tile)] = 0;
   }
+  // A tile finished before the frame is (nothing later reaches it), once copied into the image,
+  // gives its block back for another tile to draw in: the memory the framebuffer holds is that of
+  // the most tiles in progress at once, not of the frame. The tile is undrawn again.
+  void releaseTile(int tile);
+  // Blocks made so far (each a tile's samples), for the tests: what a frame held at most.
+  std::size_t blocksMade() const { return pool_.size(); }
 
   // The tile whose bottom-left pixel is (x0, y0) (multiples of kTileSize): kTileSize² pixels' depths
   // and RGBA8 words (their samples side by side), row by row from the bottom, then kTilePadding
@@ -117,8 +124,8 @@ class Framebuffer {
 
  private:
   struct Block {
-    Real* depth;
-    std::uint32_t* color;
+    Real* depth = nullptr;
+    std::uint32_t* color = nullptr;
   };
 
   std::size_t at(int x, int y, int sample) const { return inTile(x, y) * std::size_t(samples_) + std::size_t(sample); }
@@ -131,17 +138,25 @@ class Framebuffer {
   }
   std::size_t tileOf(int x, int y) const { return std::size_t(y / kTileSize) * std::size_t(tilesX_) + std::size_t(x / kTileSize); }
   std::size_t blockSize() const { return kTileBlock * std::size_t(samples_); }
-  Block ownBlock(std::size_t tile) const { return {&depth_[tile * blockSize()], &color_[tile * blockSize()]}; }
+  // A block of the pool for `tile` (thread-safe: tiles are cleared by the threads drawing them).
+  Block acquire(std::size_t tile);
 
   int width_ = 0, height_ = 0, tilesX_ = 0, samples_ = 1;
   std::uint32_t clear_ = 0;            // the clear colour as an RGBA8 word
   std::vector<std::uint8_t> cleared_;  // per tile: cleared since reset
-  std::vector<Block> block_;           // per tile: where its pixels are (its own block, or lent memory)
-  // The tiles' own blocks, left uninitialised until a tile is cleared: a frame whose tiles are all
-  // drawn in lent memory never touches them.
-  std::size_t blocks_ = 0;  // pixels' worth of blocks allocated
-  std::unique_ptr<std::uint32_t[]> color_;
-  std::unique_ptr<Real[]> depth_;
+  std::vector<Block> block_;           // per tile: where its pixels are (a block of the pool, lent memory, or none)
+  // The blocks tiles are drawn in, made when a tile is first cleared and no block is free, and
+  // kept from frame to frame (their memory is touched once): a frame whose tiles are all drawn in
+  // lent memory makes none.
+  struct OwnBlock {
+    std::unique_ptr<Real[]> depth;
+    std::unique_ptr<std::uint32_t[]> color;
+  };
+  std::vector<OwnBlock> pool_;            // every block made, of blockSize() for blockSamples_
+  int blockSamples_ = 0;
+  std::vector<std::uint32_t> free_;       // those no tile holds
+  std::vector<std::int32_t> held_;        // per tile: the index in pool_ of the block it holds, or −1
+  std::unique_ptr<std::mutex> poolMutex_ = std::make_unique<std::mutex>();
 };
 
 }  // namespace illum

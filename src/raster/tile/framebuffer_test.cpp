@@ -1,6 +1,7 @@
 // The framebuffer's tiles: cleared when first drawn, copied into an image with its rows flipped
-// and the pixels unlike the background counted, and a tile drawn in lent memory (the last pass of
-// a frame) copied from there without touching the framebuffer's own block.
+// and the pixels unlike the background counted, a tile drawn in lent memory (the last pass of
+// a frame) copied from there without touching the framebuffer's blocks, and a tile released once
+// it is finished giving its block to the next tile drawn.
 #include "raster/tile/framebuffer.h"
 
 #include <gtest/gtest.h>
@@ -71,6 +72,36 @@ TEST(Framebuffer, LentTileIsDrawnAndCopiedFromItsMemoryAndForgottenWhenReturned)
   EXPECT_EQ(fb.toImage(image, kClear), 1u);  // tile 0's pixel; tile 3 is background again
   EXPECT_EQ(pixelOf(image, 3, kHeight - 4), packUnorm8(kRed));
   EXPECT_EQ(pixelOf(image, 69, 0), packUnorm8(kClear));
+}
+
+TEST(Framebuffer, ReleasedTileGivesItsBlockToTheNextTileAndIsBackgroundAgain) {
+  Framebuffer fb;
+  fb.reset(kWidth, kHeight, kClear, 4);
+  EXPECT_EQ(fb.blocksMade(), 0u);
+  fb.clearTile(0, 0);  // tile 0
+  EXPECT_TRUE(fb.depthTest(3, 3, Real(0.5), 2));
+  fb.writeColor(3, 3, kRed, 2);
+  fb.clearTile(64, 0);  // tile 1
+  EXPECT_EQ(fb.blocksMade(), 2u);
+  Image image;
+  fb.imageOf(image);
+  EXPECT_EQ(fb.copyTile(0, image, packUnorm8(kClear)), 1u);  // a quarter red: the tile is finished
+  EXPECT_NE(pixelOf(image, 3, kHeight - 4), packUnorm8(kClear));
+  fb.releaseTile(0);
+  EXPECT_FALSE(fb.drawn(0));
+  fb.clearTile(0, 64);  // tile 2 takes tile 0's block, cleared
+  EXPECT_EQ(fb.blocksMade(), 2u);
+  EXPECT_EQ(fb.depth(3, 67, 2), Real(1));
+  EXPECT_EQ(fb.toImage(image, kClear), 0u);  // tile 0 is the clear colour again, as is all else
+  fb.clearTile(0, 0);  // tile 0 again: no block is free
+  EXPECT_EQ(fb.blocksMade(), 3u);
+  EXPECT_EQ(fb.depth(3, 3, 2), Real(1));
+  // A new frame of the same samples keeps the blocks; of other samples, makes new ones.
+  fb.reset(kWidth, kHeight, kClear, 4);
+  for (int tile = 0; tile < 3; ++tile) fb.clearTile(tile % 2 * 64, tile / 2 * 64);
+  EXPECT_EQ(fb.blocksMade(), 3u);
+  fb.reset(kWidth, kHeight, kClear, 8);
+  EXPECT_EQ(fb.blocksMade(), 0u);
 }
 
 }  // namespace
