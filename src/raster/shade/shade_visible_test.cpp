@@ -1,5 +1,6 @@
 // The pairs a tile's visible samples are shaded by: on every SIMD target, each record a pixel's
-// samples show, once, in pixel and then sample order, as forEachShown lists them one pixel at a time.
+// samples show, once, in pixel and then sample order, as forEachShown lists them one pixel at a
+// time; then grouped record by record, each record's pixels in the pairs' order.
 #include "raster/shade/shade_visible.h"
 
 #include <hwy/targets.h>
@@ -43,6 +44,35 @@ TEST(ShownPairs, AreForEachShownsPixelByPixelOnEveryTarget) {
     }
     hwy::SetSupportedTargetsForTest(0);
   }
+}
+
+TEST(GroupByRecord, LaysThePairsOutRecordByRecordInTheirOrderOnEveryTarget) {
+  std::uint32_t state = 5;
+  const auto next = [&] { return state = state * 1664525u + 1013904223u; };
+  // Few records (each picked out a vector at a time) and many (a counting sort); pair counts that
+  // end inside a vector; records no pixel shows.
+  for (const std::size_t records : {1, 2, 5, 8, 9, 40})
+    for (const std::size_t pairs : {1, 15, 16, 17, 1000, 4096}) {
+      std::vector<std::uint32_t> pixel(pairs + 16), slot(pairs + 16);
+      for (std::size_t k = 0; k < pairs; ++k) pixel[k] = next() % 4096, slot[k] = (next() >> 8) % (records == 40 ? 20 : records);
+      for (std::size_t k = pairs; k < pairs + 16; ++k) pixel[k] = 7, slot[k] = 0;  // past the end: not pairs
+      std::vector<std::uint32_t> expected, expectedStart;
+      for (std::uint32_t r = 0; r < records; ++r) {
+        expectedStart.push_back(std::uint32_t(expected.size()));
+        for (std::size_t k = 0; k < pairs; ++k)
+          if (slot[k] == r) expected.push_back(pixel[k]);
+      }
+      expectedStart.push_back(std::uint32_t(expected.size()));
+      for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+        hwy::SetSupportedTargetsForTest(target);
+        std::vector<std::uint32_t> start(records + 1, 12345), out(pairs + 16);
+        groupByRecord(pixel.data(), slot.data(), pairs, records, start.data(), out.data());
+        out.resize(pairs);
+        EXPECT_EQ(out, expected) << hwy::TargetName(target) << ", " << records << " records, " << pairs << " pairs";
+        EXPECT_EQ(start, expectedStart) << hwy::TargetName(target) << ", " << records << " records, " << pairs << " pairs";
+      }
+      hwy::SetSupportedTargetsForTest(0);
+    }
 }
 
 }  // namespace
