@@ -54,7 +54,11 @@ TEST(GroupByRecord, LaysThePairsOutRecordByRecordInTheirOrderOnEveryTarget) {
   for (const std::size_t records : {1, 2, 5, 8, 9, 40})
     for (const std::size_t pairs : {1, 15, 16, 17, 1000, 4096}) {
       std::vector<std::uint32_t> pixel(pairs + 16), slot(pairs + 16);
-      for (std::size_t k = 0; k < pairs; ++k) pixel[k] = next() % 4096, slot[k] = (next() >> 8) % (records == 40 ? 20 : records);
+      // Runs of one record, as neighbouring pixels have them, of 1 to 40 pairs.
+      for (std::size_t k = 0; k < pairs;) {
+        const std::uint32_t record = (next() >> 8) % std::uint32_t(records == 40 ? 20 : records);
+        for (std::size_t run = 1 + (next() >> 8) % 40; run > 0 && k < pairs; --run, ++k) pixel[k] = next() % 4096, slot[k] = record;
+      }
       for (std::size_t k = pairs; k < pairs + 16; ++k) pixel[k] = 7, slot[k] = 0;  // past the end: not pairs
       std::vector<std::uint32_t> expected, expectedStart;
       for (std::uint32_t r = 0; r < records; ++r) {
