@@ -172,18 +172,22 @@ std::uint32_t resolvedByTheDefinition(const std::uint32_t* samples, int n) {
 
 TEST(Multisample, ResolvingRowsIsResolvingEachPixelOnEveryTarget) {
   // Rows of 37 pixels (a vector's tail too) of 2, 4 and 8 samples: pixels whose samples agree,
-  // opaque ones that differ (an edge between two surfaces), translucent ones, in random order.
+  // opaque ones that differ (an edge between two surfaces), translucent ones, in random order;
+  // then mostly the first two (whole vectors of pixels resolved at once), a translucent one now
+  // and then.
   std::uint32_t state = 2024;
   const auto next = [&] { return state = state * 1664525u + 1013904223u; };
   constexpr int kRows = 3, kCount = 37, kRowPixels = 64;
   constexpr std::uint32_t kBackground = 0xFF302010u;
+  for (const bool mostlyOpaque : {false, true})
   for (const int samples : {2, 4, 8}) {
     std::vector<std::uint32_t> src(std::size_t(kRows * kRowPixels * samples));
     for (std::size_t p = 0; p < src.size() / std::size_t(samples); ++p) {
-      const std::uint32_t kind = next() >> 30, a = next() | 0xFF000000u, b = next() | 0xFF000000u;
+      const std::uint32_t kind = !mostlyOpaque ? next() >> 30 : next() % 60 == 0 ? 3 : next() >> 31;
+      const std::uint32_t a = next() | 0xFF000000u, b = next() | 0xFF000000u;
       for (int s = 0; s < samples; ++s) {
         std::uint32_t& w = src[p * std::size_t(samples) + std::size_t(s)];
-        if (kind == 0) w = p % 5 == 0 ? kBackground : a;          // agreeing
+        if (kind == 0) w = p % 5 == 0 ? kBackground : p % 3 == 0 ? a & 0x80FFFFFFu : a;  // agreeing
         else if (kind == 1) w = (next() & 1) ? a : b;             // opaque, mixed
         else if (kind == 2) w = next();                           // any alpha
         else w = s == 0 ? (a & 0x7FFFFFFFu) : a;                  // one translucent sample
@@ -204,8 +208,8 @@ TEST(Multisample, ResolvingRowsIsResolvingEachPixelOnEveryTarget) {
       std::vector<std::uint8_t> actual(expected.size());
       const std::size_t unlike =
           resolvePixels(src.data(), samples, kRowPixels, actual.data(), kCount * 4, kCount, kRows, kBackground);
-      EXPECT_EQ(actual, expected) << hwy::TargetName(target) << ", " << samples << " samples";
-      EXPECT_EQ(unlike, expectedUnlike) << hwy::TargetName(target) << ", " << samples << " samples";
+      EXPECT_EQ(actual, expected) << hwy::TargetName(target) << ", " << samples << " samples" << (mostlyOpaque ? ", mostly opaque" : "");
+      EXPECT_EQ(unlike, expectedUnlike) << hwy::TargetName(target) << ", " << samples << " samples" << (mostlyOpaque ? ", mostly opaque" : "");
     }
     hwy::SetSupportedTargetsForTest(0);
   }

@@ -97,11 +97,59 @@ std::size_t ResolvePixels(const std::uint32_t* src, int samples, int srcRowPixel
   const int shift = __builtin_ctz(unsigned(samples));
   const auto channel = hn::Set(du, 0xFFu), redAndBlue = hn::Set(du, 0x00FF00FFu);
   const auto half = hn::Set(du, std::uint32_t(samples / 2)), halves = hn::Set(du, std::uint32_t(samples / 2) * 0x10001u);
+  // Opaque samples, some pixels mixed: each pixel's colour is (s + samples/2) / samples of its
+  // channels' sums s (resolvePixel's shifts), all pixels of the vector at once, in every lane of
+  // the pixel. Red and blue are summed together, 16 bits apart, green alone (each sum ≤ 8·255 <
+  // 2^16), over a pixel's lanes: swapped neighbours, swapped pairs (inside a 128-bit block),
+  // swapped blocks.
+  const auto resolveOpaque = [&](auto w) {
+    const auto sumOfPixel = [&](auto v) {
+      v = hn::Add(v, hn::Shuffle2301(v));
+      if (samples >= 4) v = hn::Add(v, hn::Shuffle1032(v));
+      if (samples >= 8) v = hn::Add(v, hn::SwapAdjacentBlocks(v));
+      return v;
+    };
+    const auto redBlue = sumOfPixel(hn::And(w, redAndBlue)), green = sumOfPixel(hn::And(hn::ShiftRight<8>(w), channel));
+    return hn::Or(hn::Or(hn::Set(du, 0xFF000000u), hn::And(hn::ShiftRightSame(hn::Add(redBlue, halves), shift), redAndBlue)),
+                  hn::ShiftLeft<8>(hn::ShiftRightSame(hn::Add(green, half), shift)));
+  };
+#endif
+#if HWY_TARGET != HWY_SCALAR
+  // A vector of pixels from `samples` vectors of samples, where every pixel's samples agree or all
+  // are opaque: each vector's pixels' words (in their first lanes) brought together by halving
+  // (ConcatEven keeps the even lanes of two vectors), and stored as one. False (nothing written)
+  // where some pixel is neither.
+  const auto wholeVector = [&](const std::uint32_t* from, std::uint8_t* to) {
+    hn::Vec<decltype(du)> v[kSamplesMax];
+    for (int k = 0; k < samples; ++k) {
+      const auto w = hn::LoadU(du, from + std::size_t(k) * std::size_t(lanes));
+      if (hn::AllTrue(du, hn::Eq(w, hn::TableLookupLanes(w, first)))) {
+        v[k] = w;
+        continue;
+      }
+      if (!(sumsInVector && hn::AllTrue(du, hn::Eq(hn::ShiftRight<24>(w), channel)))) return false;
+      v[k] = resolveOpaque(w);
+    }
+    for (int n = samples; n > 1; n /= 2)
+      for (int k = 0; k < n / 2; ++k) v[k] = hn::ConcatEven(du, v[2 * k + 1], v[2 * k]);
+    hn::StoreU(v[0], du, reinterpret_cast<std::uint32_t*>(to));
+    unlike += hn::CountTrue(du, hn::Ne(v[0], backgroundWord));
+    return true;
+  };
 #endif
   for (int r = 0; r < rows; ++r) {
     const std::uint32_t* row = src + std::size_t(r) * std::size_t(srcRowPixels) * std::size_t(samples);
     std::uint8_t* to = dst + r * dstStride;
     for (int x = 0; x < count; x += perVector) {
+#if HWY_TARGET != HWY_SCALAR
+      // (A vector's worth of pixels at a time where the row has them; its first pixel then starts
+      // a group of `samples` vectors.)
+      if (samples <= 8 && x % lanes == 0 && x + lanes <= count &&
+          wholeVector(row + std::size_t(x) * std::size_t(samples), to + 4 * x)) {
+        x += lanes - perVector;
+        continue;
+      }
+#endif
       const auto w = hn::LoadU(du, row + std::size_t(x) * std::size_t(samples));
       const auto agree = hn::Eq(w, hn::TableLookupLanes(w, first));
       if (x + perVector <= count && hn::AllTrue(du, agree)) {  // each pixel's samples agree: its first
@@ -115,20 +163,7 @@ std::size_t ResolvePixels(const std::uint32_t* src, int samples, int srcRowPixel
       }
 #if HWY_TARGET != HWY_SCALAR
       if (sumsInVector && x + perVector <= count && hn::AllTrue(du, hn::Eq(hn::ShiftRight<24>(w), channel))) {
-        // Opaque samples, some pixels mixed: each pixel's colour is (s + samples/2) / samples of
-        // its channels' sums s (resolvePixel's shifts), all pixels of the vector at once. Red and
-        // blue are summed together, 16 bits apart, green alone (each sum ≤ 8·255 < 2^16), over a
-        // pixel's lanes: swapped neighbours, swapped pairs (inside a 128-bit block), swapped blocks.
-        const auto sumOfPixel = [&](auto v) {
-          v = hn::Add(v, hn::Shuffle2301(v));
-          if (samples >= 4) v = hn::Add(v, hn::Shuffle1032(v));
-          if (samples >= 8) v = hn::Add(v, hn::SwapAdjacentBlocks(v));
-          return v;
-        };
-        const auto redBlue = sumOfPixel(hn::And(w, redAndBlue)), green = sumOfPixel(hn::And(hn::ShiftRight<8>(w), channel));
-        const auto resolved =
-            hn::Or(hn::Or(hn::Set(du, 0xFF000000u), hn::And(hn::ShiftRightSame(hn::Add(redBlue, halves), shift), redAndBlue)),
-                   hn::ShiftLeft<8>(hn::ShiftRightSame(hn::Add(green, half), shift)));
+        const auto resolved = resolveOpaque(w);
         HWY_ALIGN std::uint32_t firsts[hn::MaxLanes(du)];
         hn::Store(hn::Compress(resolved, leads), du, firsts);
         std::memcpy(to + 4 * x, firsts, 4 * std::size_t(perVector));
