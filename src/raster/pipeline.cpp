@@ -79,9 +79,9 @@ struct RasterPipeline::State {
   };
   tbb::enumerable_thread_specific<TileList> tileLists;
   tbb::affinity_partitioner tileAffinity;
-  // Per tile: 1 + the drawing-order position of the last object that can reach it (0: none), and
-  // whether it is in the image already (BinnedFrame::finishEarly).
-  std::vector<std::uint32_t> lastReach;
+  // Per tile: the last object that can reach it, and whether it is in the image already
+  // (BinnedFrame::finishEarly).
+  TileReach reach;
   std::vector<std::uint8_t> finished;
 };
 
@@ -108,7 +108,7 @@ class BinnedFrame {
   // the set-up together, one parallel pass each for the run: a sphere of a few thousand vertices
   // alone would leave a core waiting at each pass's end.
   void drawObjects(const Scene& scene, std::span<const Object* const> order) {
-    findLastReach(order);
+    if (image_ && !s_.reach.find(frame_, order)) image_ = nullptr;  // (one object: its tiles finish at the end)
     auto& group = s_.group;
     group.clear();
     std::size_t vertices = 0;
@@ -230,7 +230,7 @@ class BinnedFrame {
   // objects holds the samples of the tiles its objects in progress reach, not of the whole frame.
   void finishEarly(int tile) {
     const auto t = std::size_t(tile);
-    if (!image_ || s_.finished[t] || !s_.fb.drawn(tile) || s_.lastReach[t] > setUp_ || cancelled()) return;
+    if (!image_ || s_.finished[t] || !s_.fb.drawn(tile) || !s_.reach.reachedOnlyBefore(tile, setUp_) || cancelled()) return;
     unlikeEarly_ += s_.fb.copyTile(tile, *image_, background8_);
     s_.fb.releaseTile(tile);
     s_.finished[t] = 1;
@@ -297,28 +297,6 @@ class BinnedFrame {
         batchedTiny_ += chunk.drawn - chunk.records.size();
         stats_.trianglesDrawn += chunk.drawn;
       }
-    }
-  }
-
-  // s_.lastReach for the objects of `order` (objectReach), when tiles can finish early: with two
-  // objects or more (one object's tiles are all finished at the frame's end).
-  void findLastReach(std::span<const Object* const> order) {
-    s_.lastReach.assign(std::size_t(tiles_.tileCount()), 0);
-    std::vector<std::uint32_t> drawn;
-    for (std::size_t k = 0; k < order.size(); ++k)
-      if (order[k]->mesh->triangleCount() > 0) drawn.push_back(std::uint32_t(k));
-    if (!image_ || drawn.size() < 2) {
-      image_ = nullptr;
-      return;
-    }
-    std::vector<PixelRect> reach(drawn.size());
-    tbb::parallel_for(std::size_t(0), drawn.size(), [&](std::size_t i) { reach[i] = objectReach(frame_, *order[drawn[i]]); });
-    const int tilesX = (frame_.width + kTileSize - 1) / kTileSize;
-    for (std::size_t i = 0; i < drawn.size(); ++i) {
-      const PixelRect& r = reach[i];
-      for (int ty = r.minY / kTileSize; r.minX <= r.maxX && ty <= r.maxY / kTileSize; ++ty)
-        for (int tx = r.minX / kTileSize; tx <= r.maxX / kTileSize; ++tx)
-          s_.lastReach[std::size_t(ty) * std::size_t(tilesX) + std::size_t(tx)] = drawn[i] + 1;
     }
   }
 

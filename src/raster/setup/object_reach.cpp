@@ -1,5 +1,7 @@
 #include "raster/setup/object_reach.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 #include <span>
@@ -65,6 +67,24 @@ PixelRect objectReach(const FrameContext& frame, const Object& object) {
   r.minX = std::max(r.minX, 0), r.minY = std::max(r.minY, 0);
   r.maxX = std::min(r.maxX, frame.width - 1), r.maxY = std::min(r.maxY, frame.height - 1);
   return r;
+}
+
+bool TileReach::find(const FrameContext& frame, std::span<const Object* const> order) {
+  const int tilesX = (frame.width + kTileSize - 1) / kTileSize, tilesY = (frame.height + kTileSize - 1) / kTileSize;
+  last_.assign(std::size_t(tilesX) * std::size_t(tilesY), 0);
+  std::vector<std::uint32_t> drawn;
+  for (std::size_t k = 0; k < order.size(); ++k)
+    if (order[k]->mesh->triangleCount() > 0) drawn.push_back(std::uint32_t(k));
+  if (drawn.size() < 2) return false;
+  std::vector<PixelRect> reach(drawn.size());
+  tbb::parallel_for(std::size_t(0), drawn.size(), [&](std::size_t i) { reach[i] = objectReach(frame, *order[drawn[i]]); });
+  for (std::size_t i = 0; i < drawn.size(); ++i) {  // (in order: the last one to reach a tile stays)
+    const PixelRect& r = reach[i];
+    for (int ty = r.minY / kTileSize; r.minX <= r.maxX && ty <= r.maxY / kTileSize; ++ty)
+      for (int tx = r.minX / kTileSize; tx <= r.maxX / kTileSize; ++tx)
+        last_[std::size_t(ty) * std::size_t(tilesX) + std::size_t(tx)] = drawn[i] + 1;
+  }
+  return true;
 }
 
 }  // namespace illum

@@ -101,5 +101,46 @@ TEST(ObjectReach, IsTheWholeFrameAcrossTheEyeAndNothingOffScreen) {
   EXPECT_GT(r.minY, r.maxY);
 }
 
+TEST(TileReach, NamesTheLastObjectThatReachesEachTile) {
+  // Two small cubes (side 1/4) in a 256×64 frame seen at 90° from z = 2, 2.5 units left and right
+  // of the middle: their near faces (at distance 1.875, 34 pixels a unit across) project to
+  // pixels 83–88 and 168–173, with the margin 75–96 and 160–181: tiles 1 and 2. Tiles 0 and 3
+  // no object reaches.
+  Scene scene = defaultScene();
+  scene.width = 256, scene.height = 64;
+  scene.camera = Camera{};
+  scene.camera.eye = {0, 0, 2};
+  scene.camera.fovy = 90;
+  Object cube = scene.objects[0];
+  cube.mesh = std::make_shared<const Mesh>(makeCube(Real(0.25)));
+  Object left = cube, right = cube, empty = cube;
+  left.worldFromObject = glm::translate(Mat4(1), Vec3(-2.5f, 0, 0));
+  right.worldFromObject = glm::translate(Mat4(1), Vec3(2.5f, 0, 0));
+  empty.mesh = std::make_shared<const Mesh>();  // no triangles: not among the objects drawn
+  const FrameContext frame = FrameContext::fromScene(scene);
+  EXPECT_EQ(objectReach(frame, left).minX / kTileSize, 1);
+  EXPECT_EQ(objectReach(frame, left).maxX / kTileSize, 1);
+  EXPECT_EQ(objectReach(frame, right).minX / kTileSize, 2);
+  EXPECT_EQ(objectReach(frame, right).maxX / kTileSize, 2);
+  TileReach reach;
+  const Object* order[] = {&left, &empty, &right};
+  ASSERT_TRUE(reach.find(frame, order));
+  EXPECT_TRUE(reach.reachedOnlyBefore(0, 0));   // nothing reaches it
+  EXPECT_FALSE(reach.reachedOnlyBefore(1, 0));  // the left cube's: done once it is set up
+  EXPECT_TRUE(reach.reachedOnlyBefore(1, 1));
+  EXPECT_FALSE(reach.reachedOnlyBefore(2, 2));  // the right cube's: once it is too (third in the order)
+  EXPECT_TRUE(reach.reachedOnlyBefore(2, 3));
+  EXPECT_TRUE(reach.reachedOnlyBefore(3, 0));
+  // The left cube drawn again last: its tile waits for that.
+  const Object* leftAgain[] = {&left, &right, &left};
+  ASSERT_TRUE(reach.find(frame, leftAgain));
+  EXPECT_FALSE(reach.reachedOnlyBefore(1, 2));
+  EXPECT_TRUE(reach.reachedOnlyBefore(1, 3));
+  EXPECT_TRUE(reach.reachedOnlyBefore(2, 2));
+  // One object drawn: nothing is worked out.
+  const Object* one[] = {&left, &empty};
+  EXPECT_FALSE(reach.find(frame, one));
+}
+
 }  // namespace
 }  // namespace illum
