@@ -103,7 +103,7 @@ TEST(ObjectReach, IsTheWholeFrameAcrossTheEyeAndNothingOffScreen) {
 
 TEST(TileReach, NamesTheLastObjectThatReachesEachTile) {
   // Two small cubes (side 1/4) in a 256×64 frame seen at 90° from z = 2, 2.5 units left and right
-  // of the middle: their near faces (at distance 1.875, 34 pixels a unit across) project to
+  // of the middle: their near faces (at distance 1.875, 17 pixels a unit across) project to
   // pixels 83–88 and 168–173, with the margin 75–96 and 160–181: tiles 1 and 2. Tiles 0 and 3
   // no object reaches.
   Scene scene = defaultScene();
