@@ -274,19 +274,23 @@ class BinnedFrame {
       if (batchedRecords_ >= kBatchRecords || batchedTiny_ >= kBatchTiny) flush();
       const std::size_t c1 = std::min(chunks, c0 + slice);
       if (s_.pool.size() < used_ + (c1 - c0)) s_.pool.resize(used_ + (c1 - c0));
-      // Statically partitioned: a chunk's arena is set up, and later reused, by the same thread.
+      // A chunk at a time to whichever thread is free: chunks differ in cost (multisampled Phong
+      // lights the pixels of its tiny front faces at setup, and a mesh's back half has none), and
+      // a static split left a core idle for a fifth of a frame.
       tbb::parallel_for(tbb::blocked_range<std::size_t>(c0, c1, 1), [&](const tbb::blocked_range<std::size_t>& range) {
        for (std::size_t c = range.begin(); c < range.end(); ++c) {
         const auto& [member, first, last] = ranges[c];
         RasterPipeline::State::Chunk& chunk = s_.pool[used_ + (c - c0)];
         chunk.records.reset(target_.layouts[member->index], last - first);
         chunk.bins.reset(frame_.width, frame_.height);
-        const SetupBinning binning{chunk.bins, target_.tiny[member->index] != 0, target_.shadeOwner[member->index]};
+        const bool litAtSetup = frame_.samples.size() > 1 && frame_.shading == Shading::Phong;
+        const SetupBinning binning{chunk.bins, target_.tiny[member->index] != 0, target_.shadeOwner[member->index],
+                                   litAtSetup ? &target_.setups[member->index] : nullptr};
         chunk.drawn = setupTriangles(frame_, *member->object, member->index, ofMember(*member), first, last,
                                      chunk.records, &binning);
         chunk.bins.finish();
        }
-      }, tbb::static_partitioner());
+      }, tbb::simple_partitioner());
       if (s_.spans.size() < s_.pool.size()) s_.spans.resize(s_.pool.size());
       for (std::size_t c = c0; c < c1; ++c) {
         const auto& [member, first, last] = ranges[c];

@@ -81,7 +81,9 @@ std::size_t setupTriangles(const FrameContext& frame, const Object& object, std:
   const int samples = frame.samples.size() > 1 ? int(frame.samples.size()) : 1;
   if (tiny && frame.shading != Shading::Phong)
     batch.emplace(binning->bins.fragments, frame.shading == Shading::Flat, binning->bins.tilesX(), 0, samples);
-  if (tiny && frame.shading == Shading::Phong)
+  if (tiny && frame.shading == Shading::Phong && samples > 1)
+    batch.emplace(binning->bins.fragments, false, binning->bins.tilesX(), 0, samples, binning->lighting);
+  if (tiny && frame.shading == Shading::Phong && samples == 1)
     surfaces.emplace(binning->bins.surfaces, false, binning->bins.tilesX(), binning->shadeOwner);
   // While a group of triangles set up at once (below) holds the batch's lanes, a tiny triangle
   // that comes one by one is covered alone.
@@ -169,10 +171,11 @@ std::size_t setupTriangles(const FrameContext& frame, const Object& object, std:
     // cover nothing are dropped, the rest go one by one (which flushes the batch before it
     // appends tiny pixels of its own). Where few are tiny (a coarser mesh, or one seen close),
     // the next groups go one by one instead. Either way the same pixels in the same order.
-    const TinyGroupSource source{vertices.data(), nullptr, frame.width, frame.height, binning->bins.tilesX(),
+    TinyGroupSource source{vertices.data(), nullptr, frame.width, frame.height, binning->bins.tilesX(),
                                  frame.lightModel.twoSided, frame.shading == Shading::Flat,
                                  frame.shading == Shading::Phong, vertices.size(), reach, samples,
                                  frame.samples.data()};
+    source.frontOnly = binning->lighting != nullptr;
     const std::size_t group = std::size_t(tinyGroupCapacity());
     const auto recordsIn = [&](int tile) { return binning->bins.recordsIn(tile); };
     constexpr int kMostOneByOne = 5;  // at most 2^5 − 1 groups one by one between tries

@@ -12,6 +12,7 @@
 #include "raster/frame_context.h"
 #include "raster/setup/setup.h"
 #include "raster/setup/vertex.h"
+#include "shading/shade_points.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -97,6 +98,8 @@ struct SetupBinning {
   TileBins& bins;
   bool tiny = false;
   std::uint32_t shadeOwner = 0;  // the owner that Phong's tiny pixels name (DrawTarget::shadeOwner)
+  // Multisampled Phong: the object's lighting, which colours its tiny triangles' samples at setup.
+  const ShadeSetup* lighting = nullptr;
 };
 
 // Clips and sets up triangles [first, last) of `object` (its vertices already through the vertex

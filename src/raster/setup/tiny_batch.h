@@ -18,6 +18,8 @@
 
 #include <illum/lighting.h>
 
+#include "shading/shade_points.h"
+
 #include <cstddef>
 #include <cstdint>
 
@@ -85,6 +87,10 @@ void setTinySurfaceLanes(TinyBatchLanes& lanes, int j, const SurfaceVertices& v)
 constexpr std::size_t kTinyBatchRoom = TinyBatchLanes::kCapacity * (kTinyPixels + 1);
 std::size_t coverTinyBatch(const TinyBatchLanes& batch, std::uint32_t members, bool flat, TinyFragment* out,
                            std::uint16_t* covered);
+// Multisampled Phong: the same covered samples, each coloured by `lighting` at its pixel's centre
+// as the Deferred route colours it (each pixel of a triangle lit once).
+std::size_t coverTinyBatch(const TinyBatchLanes& batch, std::uint32_t members, const ShadeSetup& lighting,
+                           TinyFragment* out, std::uint16_t* covered);
 // The same for Phong: the visible surface there, as coverTinySurface writes it, named `owner`.
 std::size_t coverTinyBatch(const TinyBatchLanes& batch, std::uint32_t members, std::uint32_t owner, TinySurface* out,
                            std::uint16_t* covered);
@@ -105,6 +111,7 @@ struct TinyGroupSource {
   FrameContext::SampleReach reach;
   int samples = 1;
   const SubpixelOffset* sampleOffsets = nullptr;  // the frame's `samples` offsets
+  bool frontOnly = false;  // only front faces are fast
 };
 
 // How many triangles setupTinyGroup takes at a time on this CPU (at most kCapacity).
@@ -129,7 +136,9 @@ class TinyBatch {
  public:
   // Multisampled in one pass, `samples` is the frame's sample count (4, 8 or 16: the standard
   // pattern, multisamplePattern).
-  TinyBatch(TinyRuns<Pixel>& out, bool flat, int tilesX, std::uint32_t owner = 0, int samples = 1);
+  // With `lighting` (multisampled Phong), fragments are lit at setup (coverTinyBatch).
+  TinyBatch(TinyRuns<Pixel>& out, bool flat, int tilesX, std::uint32_t owner = 0, int samples = 1,
+            const ShadeSetup* lighting = nullptr);
   TinyBatch(const TinyBatch&) = delete;
   TinyBatch& operator=(const TinyBatch&) = delete;
 
@@ -177,6 +186,7 @@ class TinyBatch {
   bool flat_;
   int tilesX_;
   std::uint32_t owner_;
+  const ShadeSetup* lighting_;
   int size_ = 0;               // add: the lanes used
   std::uint32_t members_ = 0;  // the lanes to cover
   int tile_[TinyBatchLanes::kCapacity];

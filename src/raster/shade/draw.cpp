@@ -18,11 +18,15 @@ Route chooseRoute(const FrameContext& frame, const Object& object, bool transluc
   if (sizeof(Real) != 4) return Route::Deferred;
   const bool textured = drawnTexture(object) != nullptr;
   if (frame.shading != Shading::Phong) return textured ? Route::Deferred : Route::Colored;
-  // The visible surface is one per pixel: a multisampled tile keeps what each sample shows. Pixels
-  // whose ambient is occluded are lit with their occlusion, which the Deferred route asks for.
+  // The visible surface is one per pixel: a multisampled tile keeps what each sample shows.
   const bool oneSample = frame.samples.size() <= 1;
-  return oneSample && !textured && !mapsDrawn(object, frame.litPerPixel()) && !frame.occlusion ? Route::Surface
-                                                                                             : Route::Deferred;
+  return oneSample && litFromSurface(frame, object) ? Route::Surface : Route::Deferred;
+}
+
+bool litFromSurface(const FrameContext& frame, const Object& object) {
+  // Pixels whose ambient is occluded are lit with their occlusion, which the Deferred route asks for.
+  return sizeof(Real) == 4 && frame.shading == Shading::Phong && drawnTexture(object) == nullptr &&
+         !mapsDrawn(object, frame.litPerPixel()) && !frame.occlusion;
 }
 
 DrawTarget::DrawTarget(const FrameContext& frame, const Scene& scene, Framebuffer& fb, PixelProbe* probe)
@@ -33,8 +37,11 @@ DrawTarget::DrawTarget(const FrameContext& frame, const Scene& scene, Framebuffe
     colored.push_back(!o.mesh->colors.empty());
     route.push_back(chooseRoute(frame, o, frame.blend && isTranslucent(o)));
     // Tiny triangles are worked out at setup as the tile would draw them: coloured (at every
-    // sample, multisampled), or as visible surface (without vertex colours).
-    tiny.push_back(route.back() == Route::Colored || (route.back() == Route::Surface && colored.back() == 0));
+    // sample, multisampled), or as visible surface (without vertex colours); multisampled, Phong's
+    // are lit there, at every sample (without vertex colours).
+    const bool litAtSetup = frame.samples.size() > 1 && route.back() == Route::Deferred && litFromSurface(frame, o);
+    tiny.push_back(route.back() == Route::Colored ||
+                   ((route.back() == Route::Surface || litAtSetup) && colored.back() == 0));
   }
   // Objects that share a material usually come together: each is compared with the last few
   // owners found, not with every object before it.

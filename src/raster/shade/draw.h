@@ -29,6 +29,10 @@ enum class Route : std::uint8_t {
   Blended,   // translucent under blending: fragment by fragment, in order (drawRecord)
 };
 Route chooseRoute(const FrameContext& frame, const Object& object, bool translucent);
+// Phong without a texture, glTF's maps or ambient occlusion, in float channels: each pixel's colour
+// is the lighting of its surface alone (the Surface route at one sample; multisampled, its tiny
+// triangles lit at setup).
+bool litFromSurface(const FrameContext& frame, const Object& object);
 
 // What every triangle of a frame draws into.
 struct DrawTarget {
@@ -47,7 +51,7 @@ struct DrawTarget {
   std::vector<std::uint32_t> shadeOwner;
   // Per object: its tiny triangles worked out at setup, without records (tile_raster.h): coloured
   // (Colored, at every sample when multisampled), or as visible surface (Surface, without vertex
-  // colours).
+  // colours), or multisampled Phong's lit at every sample (litFromSurface, without vertex colours).
   std::vector<std::uint8_t> tiny;
 
   DrawTarget(const FrameContext& frame, const Scene& scene, Framebuffer& fb, PixelProbe* probe);
