@@ -587,9 +587,14 @@ std::size_t RasterizeSurface(const TriangleSetup& t, const PixelRect& tile, Real
 // DepthPassTwoRows keeps them): their sum rounds as the integer's conversion does, and its sign is
 // the integer's. kEveryVector: write is called for every vector, also under an empty mask, where
 // it must change nothing (no branch on whether a sample passed).
-template <bool kSplit, bool kEveryVector, class D, class Write>
+// With `shade` (not null), write(at, pass, color) instead: color the lanes' pixels' RGBA8 words,
+// shade(l0, l1, l2) of their centres' barycentrics worked out for as many pixels of a row as a
+// vector has lanes at once (the first time one of them has a sample passing), not for each vector
+// of samples, which holds a few pixels (or part of one) each.
+template <bool kSplit, bool kEveryVector, class D, class Write, class Shade = std::nullptr_t>
 HWY_INLINE std::size_t SamplesPassIn(D d, const TriangleSetup& t, const PixelRect& tile, const SamplePlanes& planes,
-                                     const Write& write) {
+                                     const Write& write, const Shade& shade = nullptr) {
+  constexpr bool kShade = !std::is_same_v<Shade, std::nullptr_t>;
   const int minX = std::max(t.minX, tile.minX), maxX = std::min(t.maxX, tile.maxX);
   const int minY = std::max(t.minY, tile.minY), maxY = std::min(t.maxY, tile.maxY);
   using T = hn::TFromD<D>;  // the edge values' lanes: float (split) or double
@@ -605,6 +610,7 @@ HWY_INLINE std::size_t SamplesPassIn(D d, const TriangleSetup& t, const PixelRec
   // whole vectors of integers, converted exactly.
   HWY_ALIGN T high[3][2 * kSamplesMax], low[3][2 * kSamplesMax], centre[3][2 * kSamplesMax];
   HWY_ALIGN Real pixelOf[2 * kSamplesMax];
+  HWY_ALIGN std::uint32_t pixelIndex[2 * kSamplesMax];  // pixelOf as an index
   {
     const hn::Rebind<std::int32_t, D> di;
     const int shift = __builtin_ctz(unsigned(samples));  // samples is a power of two
@@ -617,6 +623,7 @@ HWY_INLINE std::size_t SamplesPassIn(D d, const TriangleSetup& t, const PixelRec
       const auto pixel = hn::ShiftRightSame(hn::Iota(di, k), shift);
       const auto x = hn::LoadU(di, planes.laneX + k), y = hn::LoadU(di, planes.laneY + k);
       hn::Store(hn::ConvertTo(dr, pixel), dr, pixelOf + k);
+      hn::Store(hn::BitCast(hn::Rebind<std::uint32_t, D>(), pixel), hn::Rebind<std::uint32_t, D>(), pixelIndex + k);
       const auto pixelT = toT(pixel);
       for (int i = 0; i < 3; ++i) {
         const auto s = x * hn::Set(di, t.edge[i].a) + y * hn::Set(di, t.edge[i].b);
@@ -684,6 +691,9 @@ HWY_INLINE std::size_t SamplesPassIn(D d, const TriangleSetup& t, const PixelRec
       Ehigh[i] = first == minX ? rowHigh[i] : rowHigh[i] + hn::Set(d, T(first - minX)) * stepX[i];
       for (int v = 0; v < vectors; ++v) h[i][v] = Ehigh[i] + hn::Load(d, high[i] + v * lanes);
     }
+    // kShade: the colours of the row's pixels [shadedFrom, shadedFrom + lanes), once asked for.
+    [[maybe_unused]] int shadedFrom = -1;
+    [[maybe_unused]] hn::VFromD<hn::Rebind<std::uint32_t, D>> shaded;
     for (int x = first; x <= last; x += pixels) {
       if (x != first)
         for (int i = 0; i < 3; ++i) {
@@ -713,7 +723,24 @@ HWY_INLINE std::size_t SamplesPassIn(D d, const TriangleSetup& t, const PixelRec
           if constexpr (kSplit) return toReal((Ehigh[i] + hn::Load(d, centre[i] + k)) + Elow[i]) * invArea;
           else return toReal(Ehigh[i] + hn::Load(d, centre[i] + k)) * invArea;
         };
-        write(at, pass, centreAt(0), centreAt(1), centreAt(2));
+        if constexpr (kShade) {
+          const hn::Rebind<std::uint32_t, D> du;
+          const int from = first + (x - first) / lanes * lanes;  // (x − first is a multiple of pixels)
+          if (from != shadedFrom) {
+            // Each pixel's exact edge values (the same integers centreAt sums, so the same bits).
+            shadedFrom = from;
+            const V dx = hn::Iota(d, T(from - minX));
+            const auto at = [&](int i) {
+              if constexpr (kSplit) return toReal((rowHigh[i] + dx * stepX[i]) + Elow[i]) * invArea;
+              else return toReal(rowHigh[i] + dx * stepX[i]) * invArea;
+            };
+            shaded = shade(at(0), at(1), at(2));
+          }
+          const auto lanesPixel = hn::Add(hn::Set(du, std::uint32_t(x - from)), hn::Load(du, pixelIndex + k));
+          write(at, pass, hn::TableLookupLanes(shaded, hn::IndicesFromVec(du, lanesPixel)));
+        } else {
+          write(at, pass, centreAt(0), centreAt(1), centreAt(2));
+        }
       }
     }
   }
@@ -740,17 +767,17 @@ HWY_INLINE bool SamplesSplitExact(const TriangleSetup& t, const PixelRect& tile,
   return true;
 }
 
-template <bool kEveryVector, class Write>
+template <bool kEveryVector, class Write, class Shade = std::nullptr_t>
 HWY_INLINE std::size_t SamplesPass(const TriangleSetup& t, const PixelRect& tile, const SamplePlanes& planes,
-                                   const Write& write) {
+                                   const Write& write, const Shade& shade = nullptr) {
   if (std::max(t.minX, tile.minX) > std::min(t.maxX, tile.maxX) || std::max(t.minY, tile.minY) > std::min(t.maxY, tile.maxY))
     return 0;
 #if HWY_TARGET != HWY_SCALAR
   if constexpr (sizeof(Real) == 4)
     if (SamplesSplitExact(t, tile, planes))
-      return SamplesPassIn<true, kEveryVector>(hn::ScalableTag<float>(), t, tile, planes, write);
+      return SamplesPassIn<true, kEveryVector>(hn::ScalableTag<float>(), t, tile, planes, write, shade);
 #endif
-  return SamplesPassIn<false, kEveryVector>(DD(), t, tile, planes, write);
+  return SamplesPassIn<false, kEveryVector>(DD(), t, tile, planes, write, shade);
 }
 
 std::size_t RasterizeSamples(const TriangleSetup& t, const PixelRect& tile, const SamplePlanes& planes,
@@ -766,13 +793,19 @@ std::size_t RasterizeSamples(const TriangleSetup& t, const PixelRect& tile, cons
 
 std::size_t RasterizeSamplesColored(const TriangleSetup& t, const PixelRect& tile, const SamplePlanes& planes,
                                     const Color4* lit, std::uint32_t packed, bool clearWinners) {
-  const bool opaque = lit && Opaque(lit);
-  return SamplesPass<false>(t, tile, planes, [&](std::size_t at, auto pass, auto l0, auto l1, auto l2) {
-    const hn::Rebind<std::uint32_t, hn::DFromV<decltype(l0)>> du;
-    const auto color = lit ? GouraudPixels(t, lit, opaque, l0, l1, l2) : hn::Set(du, packed);
+  const auto store = [&](std::size_t at, auto pass, auto color) {
+    const hn::DFromV<decltype(color)> du;
     hn::BlendedStore(color, hn::RebindMask(du, pass), du, planes.color + at);
     if (clearWinners) hn::BlendedStore(hn::Set(du, kNoWinner), hn::RebindMask(du, pass), du, planes.winners + at);
-  });
+  };
+  if (!lit)
+    return SamplesPass<false>(t, tile, planes, [&](std::size_t at, auto pass, auto l0, auto, auto) {
+      store(at, pass, hn::Set(hn::Rebind<std::uint32_t, hn::DFromV<decltype(l0)>>(), packed));
+    });
+  // Gouraud: each pixel's colour worked out once, not once per vector of its samples.
+  const bool opaque = Opaque(lit);
+  return SamplesPass<false>(t, tile, planes, store,
+                            [&](auto l0, auto l1, auto l2) { return GouraudPixels(t, lit, opaque, l0, l1, l2); });
 }
 
 }  // namespace illum::HWY_NAMESPACE
