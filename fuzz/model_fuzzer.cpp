@@ -48,5 +48,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   } catch (const illum::InputError&) {
   }
   std::filesystem::remove(file);
+  std::error_code left;  // (the folder is empty now; if not, it stays)
+  std::filesystem::remove(dir, left);
   return 0;
 }

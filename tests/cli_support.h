@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -47,8 +48,10 @@ inline RunResult runIllum(const std::string& args) { return runShell(std::string
 class TempDir {
  public:
   TempDir() {
-    path_ = fs::temp_directory_path() / ("illum_test_" + std::to_string(::getpid()) + "_" +
-                                         testing::UnitTest::GetInstance()->current_test_info()->name());
+    // A parameterized test's name is NAME/INDEX: one directory, not a directory left behind around it.
+    std::string name = testing::UnitTest::GetInstance()->current_test_info()->name();
+    std::replace(name.begin(), name.end(), '/', '_');
+    path_ = fs::temp_directory_path() / ("illum_test_" + std::to_string(::getpid()) + "_" + name);
     fs::remove_all(path_);
     fs::create_directories(path_);
   }

@@ -101,7 +101,10 @@ TEST(Docs, EveryShellExampleRunsAndShowsItsOutput) {
       fs::remove_all(cwd);
       fs::create_directories(cwd);
       const std::optional<illum::test::RunResult> run = runExample(language, blocks[i].text, cwd);
-      if (!run) continue;
+      if (!run) {
+        fs::remove_all(cwd);
+        continue;
+      }
       const illum::test::RunResult& r = *run;
       const std::string where = doc.filename().string() + ":" + std::to_string(blocks[i].line);
       EXPECT_EQ(r.exitCode, 0) << where << "\n" << blocks[i].text << r.err;
