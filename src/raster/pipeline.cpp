@@ -283,9 +283,9 @@ class BinnedFrame {
         RasterPipeline::State::Chunk& chunk = s_.pool[used_ + (c - c0)];
         chunk.records.reset(target_.layouts[member->index], last - first);
         chunk.bins.reset(frame_.width, frame_.height);
-        const bool litAtSetup = frame_.samples.size() > 1 && frame_.shading == Shading::Phong;
-        const SetupBinning binning{chunk.bins, target_.tiny[member->index] != 0, target_.shadeOwner[member->index],
-                                   litAtSetup ? &target_.setups[member->index] : nullptr};
+        const std::uint32_t i = member->index;
+        const SetupBinning binning{chunk.bins, target_.tiny[i] != 0, target_.shadeOwner[i],
+                                   target_.tinyLit[i] ? &target_.setups[i] : nullptr};
         chunk.drawn = setupTriangles(frame_, *member->object, member->index, ofMember(*member), first, last,
                                      chunk.records, &binning);
         chunk.bins.finish();

@@ -75,15 +75,15 @@ std::size_t setupTriangles(const FrameContext& frame, const Object& object, std:
   const auto& indices = object.mesh->indices;
   [[maybe_unused]] const bool tiny = binning && binning->tiny;
 #if !ILLUM_USE_DOUBLE
-  // Tiny triangles' pixels: colours, or Phong's visible surface.
+  // Tiny triangles' pixels: colours (multisampled Phong's lit here), or Phong's visible surface.
   std::optional<TinyBatch<TinyFragment>> batch;
   std::optional<TinyBatch<TinySurface>> surfaces;
   const int samples = frame.samples.size() > 1 ? int(frame.samples.size()) : 1;
   if (tiny && frame.shading != Shading::Phong)
     batch.emplace(binning->bins.fragments, frame.shading == Shading::Flat, binning->bins.tilesX(), 0, samples);
-  if (tiny && frame.shading == Shading::Phong && samples > 1)
+  if (tiny && binning->lighting)
     batch.emplace(binning->bins.fragments, false, binning->bins.tilesX(), 0, samples, binning->lighting);
-  if (tiny && frame.shading == Shading::Phong && samples == 1)
+  if (tiny && frame.shading == Shading::Phong && !binning->lighting)
     surfaces.emplace(binning->bins.surfaces, false, binning->bins.tilesX(), binning->shadeOwner);
   // While a group of triangles set up at once (below) holds the batch's lanes, a tiny triangle
   // that comes one by one is covered alone.
@@ -172,9 +172,11 @@ std::size_t setupTriangles(const FrameContext& frame, const Object& object, std:
     // appends tiny pixels of its own). Where few are tiny (a coarser mesh, or one seen close),
     // the next groups go one by one instead. Either way the same pixels in the same order.
     TinyGroupSource source{vertices.data(), nullptr, frame.width, frame.height, binning->bins.tilesX(),
-                                 frame.lightModel.twoSided, frame.shading == Shading::Flat,
-                                 frame.shading == Shading::Phong, vertices.size(), reach, samples,
-                                 frame.samples.data()};
+                           frame.lightModel.twoSided, frame.shading == Shading::Flat,
+                           frame.shading == Shading::Phong, vertices.size(), reach, samples,
+                           frame.samples.data()};
+    // Lit at setup, before the depth test, a back face would be lit for nothing where it is hidden
+    // (as a closed mesh's nearly all are): it keeps its record, which the tile's depth bounds skip.
     source.frontOnly = binning->lighting != nullptr;
     const std::size_t group = std::size_t(tinyGroupCapacity());
     const auto recordsIn = [&](int tile) { return binning->bins.recordsIn(tile); };

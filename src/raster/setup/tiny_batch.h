@@ -111,7 +111,7 @@ struct TinyGroupSource {
   FrameContext::SampleReach reach;
   int samples = 1;
   const SubpixelOffset* sampleOffsets = nullptr;  // the frame's `samples` offsets
-  bool frontOnly = false;  // only front faces are fast
+  bool frontOnly = false;  // only front faces (window area > 0) are fast
 };
 
 // How many triangles setupTinyGroup takes at a time on this CPU (at most kCapacity).

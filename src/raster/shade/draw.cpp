@@ -42,6 +42,7 @@ DrawTarget::DrawTarget(const FrameContext& frame, const Scene& scene, Framebuffe
     const bool litAtSetup = frame.samples.size() > 1 && route.back() == Route::Deferred && litFromSurface(frame, o);
     tiny.push_back(route.back() == Route::Colored ||
                    ((route.back() == Route::Surface || litAtSetup) && colored.back() == 0));
+    tinyLit.push_back(tiny.back() && litAtSetup);
   }
   // Objects that share a material usually come together: each is compared with the last few
   // owners found, not with every object before it.

@@ -53,6 +53,8 @@ struct DrawTarget {
   // (Colored, at every sample when multisampled), or as visible surface (Surface, without vertex
   // colours), or multisampled Phong's lit at every sample (litFromSurface, without vertex colours).
   std::vector<std::uint8_t> tiny;
+  // Per object, of those: lit at setup (multisampled Phong, litFromSurface), with its `setups`.
+  std::vector<std::uint8_t> tinyLit;
 
   DrawTarget(const FrameContext& frame, const Scene& scene, Framebuffer& fb, PixelProbe* probe);
   const AttributeLayout& layout(const DrawRecord& r) const { return layouts[r.object]; }
