@@ -11,210 +11,17 @@
 
 #include "raster/coverage/interpolate-inl.h"
 #include "raster/setup/tiny_batch.h"
+#include "raster/setup/tiny_cover-inl.h"
 
 #include <algorithm>
 #include <bit>
 #include <cstddef>
 #include <cstring>
-#include <memory>
-#include <span>
 #include <type_traits>
 
 HWY_BEFORE_NAMESPACE();
 namespace illum::HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
-
-// Bit j: lane j of the mask `m` (of at most 16 lanes); and back.
-template <class D, class M>
-HWY_INLINE std::uint32_t MaskBits(D d, M m) {
-  std::uint8_t bits[8] = {};
-  hn::StoreMaskBits(d, m, bits);
-  return std::uint32_t(bits[0]) | std::uint32_t(bits[1]) << 8;
-}
-template <class D>
-HWY_INLINE auto MaskFromBits(D d, std::uint32_t bits) {
-  const std::uint8_t bytes[8] = {std::uint8_t(bits), std::uint8_t(bits >> 8)};
-  return hn::LoadMaskBits(d, bytes);
-}
-
-// A box of pixels `w` wide as TinySampleSlot's fields: lane k at column k mod w, row k / w.
-struct TinySampleRows {
-  std::uint32_t offset[kTinyPixels + 1][kTinyPixels];
-};
-constexpr TinySampleRows makeTinySampleRows() {
-  TinySampleRows rows{};
-  for (int w = 1; w <= kTinyPixels; ++w)
-    for (int k = 0; k < kTinyPixels; ++k)
-      rows.offset[w][k] = std::uint32_t(16 * (k % w)) | std::uint32_t(16 * (k / w)) << TinySampleSlot::kRowShift;
-  return rows;
-}
-alignas(64) inline constexpr TinySampleRows kTinySampleRows = makeTinySampleRows();
-
-// The batch in groups of as many triangles as a float vector has lanes. A group's pixels are
-// laid out in slots, triangle after triangle (each its bounds' pixels, kTinyLanes' order), and
-// each vector of slots looks its triangles' values up in the group's rows (TableLookupLanes): the
-// edge values c·A + r·B from the first pixel's, exact in float as in VisitTiny, then barycentrics,
-// depth and the rest as the tile rasterizer has them: coverage for every slot, then, for the
-// covered ones, compressed in the slots' order, emit(at, count, of, l0, l1, l2, z, tag) stores
-// a vector's `count` pixels from out[at] on (or its whole vector: the last one's rest lands in the
-// room past them); of(row) looks each lane's triangle's value up in a row of the batch's lanes.
-// Multisampled (kSamples), a slot is one sample of a pixel (TinySampleSlot): its coverage and
-// depth from the edge values at the sample, (c + x')·A + (r + y')·B with the sample's offset
-// (x', y') in sixteenths — each product and sum an integer of at most 2^24 (floatExact at every
-// sample of the bounds), so exact as rasterizeSamples' — and l0, l1, l2 the pixel centre's, for
-// the colour. Returns how many pixels (samples) are covered.
-template <bool kSamples, class Emit>
-std::size_t CoverGroups(const TinyBatchLanes& b, std::uint32_t members, std::uint16_t* covered, const Emit& emit) {
-  const hn::ScalableTag<float> df;
-  const hn::RebindToUnsigned<decltype(df)> du;
-  const hn::RebindToSigned<decltype(df)> di;
-  using VF = hn::VFromD<decltype(df)>;
-  using VU = hn::VFromD<decltype(du)>;
-  constexpr int kGroupMax = std::min<int>(TinyBatchLanes::kCapacity, int(hn::MaxLanes(df)));
-  static_assert(TinyBatchLanes::kCapacity % kGroupMax == 0);
-  const int group = std::min<int>(kGroupMax, int(hn::Lanes(df)));
-  constexpr int kSlots = kGroupMax * kTinyPixels * (kSamples ? kSamplesMax : 1);
-  // A slot: its triangle in the group above kTriangleShift, below it the pixel's offset (row <<
-  // kTileShift | column) or, multisampled, TinySampleSlot's fields.
-  constexpr int kOffsetBits = kSamples ? TinySampleSlot::kBits : 12, kTileShift = 6;
-  constexpr std::uint32_t kOffsetMask = (1u << kOffsetBits) - 1;
-  static_assert(kTileSize == 1 << kTileShift && (kTinyPixels - 1) * (kTileSize + 1) < 1 << 12);
-  const int sampleShift = __builtin_ctz(unsigned(b.samples));
-  const VF zero = hn::Zero(df);
-  std::size_t n = 0;
-  for (int g = 0; g < TinyBatchLanes::kCapacity; g += group) {
-    const std::uint32_t inGroup = (members >> g) & ((1u << group) - 1);
-    if (inGroup == 0) continue;
-    // Slot s: triangle slot[s] >> kOffsetBits of the group, pixel (or sample) slot[s] & kOffsetMask
-    // of its bounds.
-    HWY_ALIGN std::uint32_t slot[kSlots + kGroupMax];
-    int slots = 0;
-    [[maybe_unused]] int slotsOf[TinyBatchLanes::kCapacity];  // multisampled: each triangle's
-    for (std::uint32_t m = inGroup; m != 0; m &= m - 1) {
-      const int j = __builtin_ctz(m);
-      if constexpr (kSamples) {
-        // Each sample's box of pixels, a whole row of the table at a time.
-        const int before = slots;
-        for (int s = 0; s < b.samples; ++s) {
-          const std::uint32_t base = std::uint32_t(j) << kOffsetBits | b.sampleBase[s][g + j];
-          const std::uint32_t* offsets = kTinySampleRows.offset[b.sampleWidth[s][g + j]];
-          for (int k = 0; k < kTinyPixels; ++k) slot[slots + k] = base + offsets[k];
-          slots += b.sampleCount[s][g + j];
-        }
-        slotsOf[j] = slots - before;
-      } else {
-        const std::uint32_t* offsets = kTinyLanes.offset[b.width[g + j]];
-        for (int k = 0; k < kTinyPixels; ++k)  // a whole row of the table: no branch per pixel
-          slot[slots + k] = std::uint32_t(j) << kOffsetBits | offsets[k];
-        slots += b.count[g + j];
-      }
-    }
-    for (int k = slots; k < slots + group; ++k) slot[k] = 0;  // the rest
-    const auto triangleOf = [&](VU v) {
-      return hn::IndicesFromVec(df, hn::BitCast(di, hn::ShiftRight<kOffsetBits>(v)));
-    };
-    const VU offsetMask = hn::Set(du, kOffsetMask), columnMask = hn::Set(du, kTileSize - 1);
-    // A slot's pixel column and row in its bounds; multisampled, also its sample's (in pixels).
-    const auto toFloat = [&](VU u) { return hn::ConvertTo(df, hn::BitCast(di, u)); };
-    const auto pixelOf = [&](VU v, VF& c, VF& r) {
-      if constexpr (kSamples) {
-        c = toFloat(hn::ShiftRight<TinySampleSlot::kSubShift>(hn::And(v, hn::Set(du, TinySampleSlot::kFieldMask))));
-        r = toFloat(hn::ShiftRight<TinySampleSlot::kSubShift>(
-            hn::And(hn::ShiftRight<TinySampleSlot::kRowShift>(v), hn::Set(du, TinySampleSlot::kFieldMask))));
-      } else {
-        const VU offset = hn::And(v, offsetMask);
-        c = toFloat(hn::And(offset, columnMask));
-        r = toFloat(hn::ShiftRight<kTileShift>(offset));
-      }
-    };
-    const auto sampleOf = [&](VU v, VF& c, VF& r) {
-      const VF sixteenth = hn::Set(df, 1.0f / 16);
-      c = toFloat(hn::And(v, hn::Set(du, TinySampleSlot::kFieldMask))) * sixteenth -
-          hn::Set(df, float(TinySampleSlot::kColumnBias) / 16);
-      r = toFloat(hn::And(hn::ShiftRight<TinySampleSlot::kRowShift>(v), hn::Set(du, TinySampleSlot::kFieldMask))) *
-              sixteenth -
-          hn::Set(df, float(TinySampleSlot::kRowBias) / 16);
-    };
-    // The edge values at (c, r) of the bounds: c·A + r·B from the first pixel's.
-    const auto edgeValues = [&](VF c, VF r, const auto& of, VF (&E)[3]) {
-      for (int i = 0; i < 3; ++i) E[i] = of(b.edge[i]) + hn::MulAdd(c, of(b.stepX[i]), r * of(b.stepY[i]));
-    };
-    const auto coveredAt = [&](VU v, VF& c, VF& r) {
-      if constexpr (kSamples) sampleOf(v, c, r);
-      else pixelOf(v, c, r);
-    };
-    // First the coverage of every slot; the covered ones' slots are kept, in order, for the rest
-    // (fewer than half of a dense mesh's slots are covered, and working their edge values out
-    // again costs less than keeping every slot's).
-    // Per vector of slots: its covered lanes and how many slots before it are covered.
-    std::uint32_t coveredLanes[kSlots + 1];
-    int keptBefore[kSlots + 1];
-    HWY_ALIGN std::uint32_t keptSlot[kSlots + kGroupMax];
-    int kept = 0;
-    for (int s0 = 0; s0 < slots; s0 += group) {
-      const VU v = hn::Load(du, slot + s0);
-      const auto lanesOf = triangleOf(v);
-      const auto of = [&](const float* values) { return hn::TableLookupLanes(hn::LoadU(df, values + g), lanesOf); };
-      VF c, r, E[3];
-      coveredAt(v, c, r);
-      edgeValues(c, r, of, E);
-      auto covers = hn::FirstN(df, std::size_t(slots - s0));
-      for (int i = 0; i < 3; ++i) covers = hn::And(covers, E[i] + of(b.bias[i]) >= zero);
-      hn::StoreU(hn::Compress(v, hn::RebindMask(du, covers)), du, keptSlot + kept);
-      coveredLanes[s0 / group] = MaskBits(df, covers);
-      keptBefore[s0 / group] = kept;
-      kept += int(hn::CountTrue(df, covers));
-    }
-    coveredLanes[(slots + group - 1) / group] = 0;  // the slots' end
-    keptBefore[(slots + group - 1) / group] = kept;
-    for (int k = kept; k < kept + group; ++k) keptSlot[k] = 0;  // the last vector's rest
-    // Then depth and the rest of the covered pixels.
-    for (int k0 = 0; k0 < kept; k0 += group) {
-      const VU v = hn::Load(du, keptSlot + k0);
-      const auto lanesOf = triangleOf(v);
-      const auto of = [&](const auto* values) {
-        const VF value = hn::TableLookupLanes(hn::LoadU(df, reinterpret_cast<const float*>(values) + g), lanesOf);
-        if constexpr (std::is_same_v<std::remove_cv_t<std::remove_pointer_t<decltype(values)>>, float>) return value;
-        else return hn::BitCast(du, value);  // the same lanes, as bits
-      };
-      VF c, r, E[3];
-      coveredAt(v, c, r);
-      edgeValues(c, r, of, E);
-      const VF invArea = of(b.invArea);
-      VF l0 = E[0] * invArea, l1 = E[1] * invArea, l2 = E[2] * invArea;
-      const VF z = l0 * of(b.z[0]) + l1 * of(b.z[1]) + l2 * of(b.z[2]);
-      VU tag;
-      if constexpr (kSamples) {
-        // The pixel centre's weights, and the sample's place in the tile's sample planes.
-        pixelOf(v, c, r);
-        edgeValues(c, r, of, E);
-        l0 = E[0] * invArea, l1 = E[1] * invArea, l2 = E[2] * invArea;
-        const VU pixel = hn::Add(hn::ShiftLeft<kTileShift>(hn::BitCast(du, hn::ConvertTo(di, r))),
-                                 hn::BitCast(du, hn::ConvertTo(di, c)));
-        const VU sample = hn::And(hn::ShiftRight<TinySampleSlot::kSampleShift>(v), hn::Set(du, kSamplesMax - 1));
-        tag = hn::Add(of(b.firstTag), hn::Add(hn::ShiftLeftSame(pixel, sampleShift), sample));
-      } else {
-        tag = hn::Add(of(b.firstTag), hn::And(v, offsetMask));
-      }
-      emit(n + std::size_t(k0), std::min(group, kept - k0), of, l0, l1, l2, z, tag);
-    }
-    n += std::size_t(kept);
-    // How many of the slots before slot s are covered.
-    const auto keptAt = [&](int s) {
-      return keptBefore[s / group] + __builtin_popcount(coveredLanes[s / group] & ((1u << (s % group)) - 1));
-    };
-    int end = 0, before = 0;  // the members' slots, one after another from slot 0
-    for (std::uint32_t m = inGroup; m != 0; m &= m - 1) {
-      const int j = __builtin_ctz(m);
-      if constexpr (kSamples) end += slotsOf[j];
-      else end += b.count[g + j];
-      const int after = keptAt(end);
-      covered[g + j] = std::uint16_t(after - before);
-      before = after;
-    }
-  }
-  return n;
-}
 
 std::size_t CoverTinyBatch(const TinyBatchLanes& b, std::uint32_t members, bool flat, TinyFragment* out,
                            std::uint16_t* covered) {
@@ -265,109 +72,6 @@ std::size_t CoverTinySurfaceBatch(const TinyBatchLanes& b, std::uint32_t members
       out[at + std::size_t(k)] = {tags[k], depth[k], owner, {position[0][k], position[1][k], position[2][k]},
                                   {unit[0][k], unit[1][k], unit[2][k]}};
   });
-}
-
-
-// Multisampled Phong (CoverTinyLitBatch): each covered sample's values until its colour is known,
-// and the pixels (of a triangle) lit once, whichever of their samples are covered.
-struct LitScratch {
-  static constexpr std::size_t kMaxLanes = HWY_MAX_BYTES / sizeof(float);
-  static constexpr std::size_t kRoom = kTinyBatchRoom * kSamplesMax + 2 * kMaxLanes;
-  // A key per (triangle of the batch, pixel of its bounds): the triangle above kPixelBits, below
-  // the pixel's offset from the bounds' first, row · kTileSize + column (< 32 · 64). One more key
-  // for the lanes past the last sample.
-  static constexpr int kPixelBits = 11;
-  static constexpr std::uint32_t kSpareKey = std::uint32_t(TinyBatchLanes::kCapacity) << kPixelBits;
-  alignas(64) float position[3][kRoom], normal[3][kRoom], depth[kRoom];
-  alignas(64) std::uint32_t tag[kRoom], key[kRoom];
-  // The pixels lit (one sample each): their surface, key and colour.
-  alignas(64) float litPosition[3][kRoom], litNormal[3][kRoom];
-  alignas(64) std::uint32_t litKey[kRoom], owner[kRoom], rgba[kRoom];
-  // Per key: first some sample of it (the one lit), then its place among the lit pixels. Only
-  // keys written in the same batch are read, so it is never cleared.
-  std::uint32_t of[kSpareKey + 1];
-};
-
-// A row of the batch's lanes that holds each triangle's place in it.
-alignas(64) inline constexpr std::uint32_t kTriangleInBatch[TinyBatchLanes::kCapacity] = {0, 1, 2,  3,  4,  5,  6,  7,
-                                                                                        8, 9, 10, 11, 12, 13, 14, 15};
-
-// The same covered samples as CoverTinyBatch's (Gouraud's), each coloured by Phong's lighting at
-// its pixel's centre: the surface there as CoverTinySurfaceBatch has it, lit by shadeOwnedPoints
-// as the Surface route lights it, once per pixel of a triangle (its covered samples share the
-// centre's surface, so any one of them stands for the others).
-std::size_t CoverTinyLitBatch(const TinyBatchLanes& b, std::uint32_t members, const ShadeSetup& lighting,
-                              TinyFragment* out, std::uint16_t* covered) {
-  const hn::ScalableTag<float> df;
-  const hn::RebindToUnsigned<decltype(df)> du;
-  const hn::RebindToSigned<decltype(df)> di;
-  using VF = hn::VFromD<decltype(df)>;
-  using VU = hn::VFromD<decltype(du)>;
-  static_assert(hn::MaxLanes(df) <= LitScratch::kMaxLanes);
-  thread_local std::unique_ptr<LitScratch> scratch;  // uninitialised: only what a batch uses is touched
-  if (!scratch) scratch.reset(new LitScratch);
-  LitScratch& s = *scratch;
-  const int sampleShift = __builtin_ctz(unsigned(b.samples));
-  const std::size_t n = CoverGroups<true>(
-      b, members, covered, [&](std::size_t at, int, const auto& of, VF l0, VF l1, VF l2, VF z, VU tag) {
-        VF p[3];
-        PerspectiveWeights(l0, l1, l2, of(b.invW[0]), of(b.invW[1]), of(b.invW[2]), p);
-        VF n[3], normal[3];
-        for (int c = 0; c < 3; ++c) {
-          hn::Store(Blend(p, of(b.position[c][0]), of(b.position[c][1]), of(b.position[c][2])), df, s.position[c] + at);
-          n[c] = Blend(p, of(b.normal[c][0]), of(b.normal[c][1]), of(b.normal[c][2]));
-        }
-        UnitNormal(n, of(b.negate) != hn::Zero(df), normal);
-        for (int c = 0; c < 3; ++c) hn::Store(normal[c], df, s.normal[c] + at);
-        hn::Store(z, df, s.depth + at);
-        hn::Store(tag, du, s.tag + at);
-        const VU pixel = hn::ShiftRightSame(hn::Sub(tag, of(b.firstTag)), sampleShift);
-        hn::Store(hn::Or(hn::ShiftLeft<LitScratch::kPixelBits>(of(kTriangleInBatch)), pixel), du, s.key + at);
-      });
-  if (n == 0) return 0;
-  const std::size_t lanes = hn::Lanes(du);
-  const VU spare = hn::Set(du, LitScratch::kSpareKey);
-  hn::StoreU(spare, du, s.key + n);
-  const auto indexOf = [&](VU key) { return hn::BitCast(di, key); };
-  const auto countUp = [&](std::size_t from) { return hn::Iota(du, std::uint32_t(from)); };
-  // Each key names one of its samples (any: they share a surface)...
-  for (std::size_t f = 0; f < n; f += lanes)
-    hn::ScatterIndex(countUp(f), du, s.of, indexOf(hn::LoadU(du, s.key + f)));
-  // ...whose surface is lit, its key's place among the lit ones noted.
-  std::size_t lit = 0;
-  for (std::size_t f = 0; f < n; f += lanes) {
-    const VU key = hn::LoadU(du, s.key + f);
-    const auto named = hn::And(hn::GatherIndex(du, s.of, indexOf(key)) == countUp(f), hn::FirstN(du, n - f));
-    const auto namedF = hn::RebindMask(df, named);
-    for (int c = 0; c < 3; ++c) {
-      hn::CompressStore(hn::LoadU(df, s.position[c] + f), namedF, df, s.litPosition[c] + lit);
-      hn::CompressStore(hn::LoadU(df, s.normal[c] + f), namedF, df, s.litNormal[c] + lit);
-    }
-    lit += hn::CompressStore(key, named, du, s.litKey + lit);
-  }
-  hn::StoreU(spare, du, s.litKey + lit);
-  for (std::size_t u = 0; u < lit; u += lanes) hn::ScatterIndex(countUp(u), du, s.of, indexOf(hn::LoadU(du, s.litKey + u)));
-  s.of[LitScratch::kSpareKey] = 0;  // the lanes past the last sample take the first colour
-  // Whole vectors of one owner: the last one filled up with copies of the last pixel lit.
-  const std::size_t whole = (lit + lanes - 1) / lanes * lanes;
-  for (int c = 0; c < 3; ++c) {
-    std::fill(s.litPosition[c] + lit, s.litPosition[c] + whole, s.litPosition[c][lit - 1]);
-    std::fill(s.litNormal[c] + lit, s.litNormal[c] + whole, s.litNormal[c][lit - 1]);
-  }
-  std::fill_n(s.owner, whole, 0u);
-  SurfacePoints points;
-  points.count = whole;
-  for (int c = 0; c < 3; ++c) points.position[c] = s.litPosition[c], points.normal[c] = s.litNormal[c];
-  for (int c = 0; c < 4; ++c) points.color[c] = s.litPosition[0];  // not read: no vertex colours
-  const std::uint8_t uncolored = 0;
-  shadeOwnedPoints(std::span(&lighting, 1), std::span(&uncolored, 1), points, s.owner, s.rgba);
-  for (std::size_t f = 0; f < n; f += lanes) {
-    const VU place = hn::GatherIndex(du, s.of, indexOf(hn::LoadU(du, s.key + f)));
-    const VU color = hn::GatherIndex(du, s.rgba, indexOf(place));
-    hn::StoreInterleaved3(hn::LoadU(du, s.tag + f), hn::BitCast(du, hn::LoadU(df, s.depth + f)), color, du,
-                          reinterpret_cast<std::uint32_t*>(out + f));
-  }
-  return n;
 }
 
 // The rows SetupTinyGroup works from, gathered from the vertices a field at a time over all the
@@ -633,7 +337,6 @@ namespace illum {
 
 HWY_EXPORT(CoverTinyBatch);
 HWY_EXPORT(CoverTinySurfaceBatch);
-HWY_EXPORT(CoverTinyLitBatch);
 HWY_EXPORT(TinyGroupCapacity);
 HWY_EXPORT(SetupTinyGroup);
 
@@ -647,11 +350,6 @@ void setupTinyGroup(const TinyGroupSource& source, int count, TinyBatchLanes& la
 std::size_t coverTinyBatch(const TinyBatchLanes& batch, std::uint32_t members, bool flat, TinyFragment* out,
                            std::uint16_t* covered) {
   return HWY_DYNAMIC_DISPATCH(CoverTinyBatch)(batch, members, flat, out, covered);
-}
-
-std::size_t coverTinyBatch(const TinyBatchLanes& batch, std::uint32_t members, const ShadeSetup& lighting,
-                           TinyFragment* out, std::uint16_t* covered) {
-  return HWY_DYNAMIC_DISPATCH(CoverTinyLitBatch)(batch, members, lighting, out, covered);
 }
 
 std::size_t coverTinyBatch(const TinyBatchLanes& batch, std::uint32_t members, std::uint32_t owner, TinySurface* out,
