@@ -31,6 +31,13 @@ constexpr int kPasses = 5;
 constexpr float kSigmaColor = 4.0f;    // in standard deviations of the pixel's noise
 constexpr float kSigmaNormal = 0.1f;   // |n_p − n_q| of unit normals
 constexpr float kSigmaAlbedo = 0.02f;  // |a_p − a_q|
+// The first-order fit at pixels that hold two surfaces (FitRows): how far a pixel's mean normal
+// falls short of a unit normal where it is wholly a mixture, the ridge on the fit's slopes (in
+// unscaled normal and albedo units), and how many times the variance left in the passes' value
+// the fit may differ from it by, squared, and still be taken (its weight e^(−d²/(k·var))).
+constexpr float kMixedShortfall = 0.02f;
+constexpr float kFitRidge = 1e-2f;
+constexpr float kFitAgreement = 8.0f;
 // Pixels around the picture, as far as the widest pass reaches (two taps of 2^(kPasses−1)), whose
 // normal is so far from any unit normal that their weight is exactly 0.
 constexpr int kPad = 2 << (kPasses - 1);
@@ -87,6 +94,14 @@ struct Planes {
 // squared distance in the six is its guides' share of the exponent.
 struct Guides {
   Plane normal[3], albedo[3];
+};
+
+// The first-order fit's input (the radiance as it came, not divided by the albedo: a pixel that
+// holds two surfaces is a mix of their radiances, weighed as its guides are) and its output: the
+// fitted radiance and its weight against the passes' value (0: not a mixture, or no fit).
+struct Fit {
+  Plane radiance[3];            // in: the radiance as it came
+  Plane fitted[3], weight;      // out
 };
 
 }  // namespace
@@ -194,6 +209,116 @@ void LuminanceRows(const Layout& layout, Planes& planes, int y0, int y1) {
     }
 }
 
+// The first-order fit at pixels that hold two surfaces, rows [y0, y1). Where a pixel's samples
+// saw two surfaces, its radiance, normal and albedo are the same mix of theirs: its guides match
+// no neighbour's, so the passes leave it as noisy as it came (half the built-in scene's error lies
+// in such pixels). A local first-order regression (as in Bitterli et al., "Nonlinearly Weighted
+// First-order Regression for Denoising Monte Carlo Renderings", EGSR 2016) fits the radiance over
+// the pixel and its 8 neighbours as an affine function of the guides,
+//   c(q) ≈ β₀ + βᵀ(g(q) − g(p))   (g: normal and albedo; a ridge kFitRidge on β),
+// and β₀ is the pixel's radiance as its mix of surfaces predicts it. It is taken in proportion to
+// how far the pixel's mean normal falls short of a unit one, and only where it agrees with the
+// passes' value within the noise left in that (where it does not, the radiance is not what the
+// guides say: a shadow's edge, a reflection). Each lane solves its own 7×7 normal equations by
+// Cholesky, the intercept last, so that it is the last forward substitution alone.
+void FitRows(const Layout& layout, const Guides& guides, const Planes& filtered, Fit& fit, int y0, int y1) {
+  const hn::ScalableTag<float> d;
+  using V = hn::VFromD<decltype(d)>;
+  const int lanes = int(hn::Lanes(d));
+  constexpr int kTerms = 7;  // the normal's and the albedo's differences, then the intercept
+  const std::ptrdiff_t stride = layout.stride;
+  // The guides come divided by their σ: the ridge in their units.
+  const float normalRidge = kFitRidge / (kSigmaNormal * kSigmaNormal), albedoRidge = kFitRidge / (kSigmaAlbedo * kSigmaAlbedo);
+  const float ridge[kTerms] = {normalRidge, normalRidge, normalRidge, albedoRidge, albedoRidge, albedoRidge, 0.0f};
+  const V zero = hn::Zero(d), one = hn::Set(d, 1.0f);
+  // A neighbour takes part if something was hit there (normal not 0) and it is in the picture
+  // (the padding's normal is kFarNormal).
+  const V unitScaled = hn::Set(d, 1.0f / (kSigmaNormal * kSigmaNormal)), farScaled = hn::Set(d, 4.0f / (kSigmaNormal * kSigmaNormal));
+  for (int y = y0; y < y1; ++y)
+    for (int x = 0; x < layout.width; x += lanes) {
+      const std::size_t p = layout.at(x, y);
+      V g[6];
+      for (int k = 0; k < 3; ++k) {
+        g[k] = hn::LoadU(d, guides.normal[k].data() + p);
+        g[3 + k] = hn::LoadU(d, guides.albedo[k].data() + p);
+      }
+      // The mean normal's length (unscaled) and how much of a mixture that makes the pixel.
+      const V n2 = hn::Add(hn::Add(hn::Mul(g[0], g[0]), hn::Mul(g[1], g[1])), hn::Mul(g[2], g[2]));
+      const V length = hn::Sqrt(hn::Div(n2, unitScaled));
+      V mixed = hn::Min(one, hn::Max(zero, hn::Div(hn::Sub(one, length), hn::Set(d, kMixedShortfall))));
+      mixed = hn::IfThenElseZero(hn::Gt(n2, zero), mixed);
+      if (hn::AllTrue(d, hn::Le(mixed, zero))) {
+        hn::StoreU(zero, d, fit.weight.data() + p);
+        continue;
+      }
+      // The normal equations AᵀA β = Aᵀc, lower triangle, with the ridge.
+      V a[kTerms][kTerms], b[kTerms][3];
+      for (int i = 0; i < kTerms; ++i) {
+        for (int j = 0; j <= i; ++j) a[i][j] = zero;
+        for (int k = 0; k < 3; ++k) b[i][k] = zero;
+      }
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const std::size_t q = std::size_t(std::ptrdiff_t(p) + std::ptrdiff_t(dy) * stride + dx);
+          V f[kTerms];
+          for (int k = 0; k < 3; ++k) {
+            f[k] = hn::LoadU(d, guides.normal[k].data() + q);
+            f[3 + k] = hn::LoadU(d, guides.albedo[k].data() + q);
+          }
+          const V q2 = hn::Add(hn::Add(hn::Mul(f[0], f[0]), hn::Mul(f[1], f[1])), hn::Mul(f[2], f[2]));
+          const auto takesPart = hn::And(hn::Gt(q2, zero), hn::Lt(q2, farScaled));
+          for (int k = 0; k < 6; ++k) f[k] = hn::IfThenElseZero(takesPart, hn::Sub(f[k], g[k]));
+          f[6] = hn::IfThenElseZero(takesPart, one);
+          V c[3];
+          for (int k = 0; k < 3; ++k) c[k] = hn::LoadU(d, fit.radiance[k].data() + q);
+          for (int i = 0; i < kTerms; ++i) {
+            for (int j = 0; j <= i; ++j) a[i][j] = hn::Add(a[i][j], hn::Mul(f[i], f[j]));
+            for (int k = 0; k < 3; ++k) b[i][k] = hn::Add(b[i][k], hn::Mul(f[i], c[k]));
+          }
+        }
+      for (int i = 0; i < kTerms; ++i) a[i][i] = hn::Add(a[i][i], hn::Set(d, ridge[i]));
+      // Cholesky, A = LLᵀ in place; a lane whose pivot is not positive takes no fit.
+      auto solvable = hn::Gt(mixed, zero);
+      V inverseDiagonal[kTerms];
+      for (int i = 0; i < kTerms; ++i)
+        for (int j = 0; j <= i; ++j) {
+          V sum = a[i][j];
+          for (int k = 0; k < j; ++k) sum = hn::Sub(sum, hn::Mul(a[i][k], a[j][k]));
+          if (i == j) {
+            const auto positive = hn::Gt(sum, hn::Set(d, 1e-12f));
+            solvable = hn::And(solvable, positive);
+            a[i][i] = hn::Sqrt(hn::IfThenElse(positive, sum, one));
+            inverseDiagonal[i] = hn::Div(one, a[i][i]);
+          } else {
+            a[i][j] = hn::Mul(sum, inverseDiagonal[j]);
+          }
+        }
+      // Forward substitution Lz = Aᵀc; the intercept β₀ = z_last / L_last,last.
+      V fitted[3];
+      for (int k = 0; k < 3; ++k) {
+        V z[kTerms];
+        for (int i = 0; i < kTerms; ++i) {
+          V sum = b[i][k];
+          for (int j = 0; j < i; ++j) sum = hn::Sub(sum, hn::Mul(a[i][j], z[j]));
+          z[i] = hn::Mul(sum, inverseDiagonal[i]);
+        }
+        fitted[k] = hn::Max(zero, hn::Mul(z[kTerms - 1], inverseDiagonal[kTerms - 1]));
+        hn::StoreU(fitted[k], d, fit.fitted[k].data() + p);
+      }
+      // Agreement with the passes' value (both divided by the albedo, as the variance is).
+      V difference[3];
+      for (int k = 0; k < 3; ++k) {
+        const V albedo = hn::Mul(g[3 + k], hn::Set(d, kSigmaAlbedo));
+        const V demodulation = hn::IfThenElse(hn::Gt(albedo, hn::Set(d, kDenoiseMinAlbedo)), albedo, one);
+        difference[k] = hn::Sub(hn::Div(fitted[k], demodulation), hn::LoadU(d, filtered.color[k].data() + p));
+      }
+      const V l = LuminanceOf(d, difference);
+      const V noise = hn::Add(hn::Mul(hn::Set(d, kFitAgreement), hn::LoadU(d, filtered.variance.data() + p)), hn::Set(d, 1e-8f));
+      const V agreement = ExpNegative(d, hn::Neg(hn::Div(hn::Mul(l, l), noise)));
+      hn::StoreU(hn::IfThenElseZero(solvable, hn::Mul(mixed, agreement)), d, fit.weight.data() + p);
+    }
+}
+
 }  // namespace illum::HWY_NAMESPACE
 HWY_AFTER_NAMESPACE();
 
@@ -202,6 +327,7 @@ namespace illum {
 
 HWY_EXPORT(FilterRows);
 HWY_EXPORT(LuminanceRows);
+HWY_EXPORT(FitRows);
 
 void denoise(const DenoiseInput& in, std::span<float> out) {
   const int w = in.width, h = in.height;
@@ -209,11 +335,18 @@ void denoise(const DenoiseInput& in, std::span<float> out) {
   const std::size_t size = layout.size();
   Planes planes[2];
   Guides guides;
-  PlaneArena arena(2 * 5 + 6, size);
+  Fit fit;
+  PlaneArena arena(2 * 5 + 6 + 3, size);
   std::size_t next = 0;
   for (Planes& p : planes)
     for (Plane* plane : {&p.color[0], &p.color[1], &p.color[2], &p.luminance, &p.variance}) plane->values = arena.plane(next++);
   for (int k = 0; k < 3; ++k) guides.normal[k].values = arena.plane(next++), guides.albedo[k].values = arena.plane(next++);
+  for (Plane* plane : {&fit.radiance[0], &fit.radiance[1], &fit.radiance[2]}) plane->values = arena.plane(next++);
+  // The fit's output goes where the passes are done with: the planes the last pass read.
+  const Planes& last = planes[kPasses % 2];
+  Planes& spent = planes[(kPasses + 1) % 2];
+  for (int k = 0; k < 3; ++k) fit.fitted[k].values = spent.color[k].values;
+  fit.weight.values = spent.luminance.values;
   // Every padded row, in parallel: the padding's colour 0 and its normal so far from any unit
   // normal that a tap there weighs exactly 0; inside, the demodulated colour, the guides, and the
   // variance estimated from a pixel's own samples, which is noisy itself: blurred 3×3 (1 2 1)
@@ -236,6 +369,7 @@ void denoise(const DenoiseInput& in, std::span<float> out) {
       for (int k = 0; k < 3; ++k) {
         fill(guides.normal[k].data(), kFarNormal);
         fill(guides.albedo[k].data(), 0.0f);
+        fill(fit.radiance[k].data(), 0.0f);
       }
       if (!inside) continue;
       for (int x = 0; x < w; ++x) {
@@ -244,6 +378,7 @@ void denoise(const DenoiseInput& in, std::span<float> out) {
           const float a = in.albedo[3 * i + std::size_t(k)];
           // The albedo divided out (1 where it is near black), multiplied back in at the end.
           planes[0].color[k].data()[at] = in.color[4 * i + std::size_t(k)] / demodulationOf(a);
+          fit.radiance[k].data()[at] = in.color[4 * i + std::size_t(k)];
           guides.normal[k].data()[at] = in.normal[3 * i + std::size_t(k)] * (1 / kSigmaNormal);
           guides.albedo[k].data()[at] = a * (1 / kSigmaAlbedo);
         }
@@ -270,13 +405,17 @@ void denoise(const DenoiseInput& in, std::span<float> out) {
       HWY_DYNAMIC_DISPATCH(FilterRows)(layout, guides, from, to, 1 << pass, rows.begin(), rows.end());
     });
   }
-  const Planes& last = planes[kPasses % 2];
   tbb::parallel_for(tbb::blocked_range<int>(0, h, 8), [&](const tbb::blocked_range<int>& rows) {
+    HWY_DYNAMIC_DISPATCH(FitRows)(layout, guides, last, fit, rows.begin(), rows.end());
     for (int y = rows.begin(); y < rows.end(); ++y)
       for (int x = 0; x < w; ++x) {
         const std::size_t i = std::size_t(y) * std::size_t(w) + std::size_t(x), at = layout.at(x, y);
-        for (int k = 0; k < 3; ++k)
-          out[4 * i + std::size_t(k)] = last.color[k].data()[at] * demodulationOf(in.albedo[3 * i + std::size_t(k)]);
+        const float weight = fit.weight.data()[at];
+        for (int k = 0; k < 3; ++k) {
+          float c = last.color[k].data()[at] * demodulationOf(in.albedo[3 * i + std::size_t(k)]);
+          if (weight > 0) c = weight * fit.fitted[k].data()[at] + (1 - weight) * c;
+          out[4 * i + std::size_t(k)] = c;
+        }
         out[4 * i + 3] = in.color[4 * i + 3];
       }
   });

@@ -9,6 +9,11 @@
 //   var'(p) = Σ (h w)² var(q) / (Σ h w)²   (the variance of the filtered value, for the next pass).
 // The colour filtered is the radiance divided by the albedo (texture detail is put back after,
 // not blurred), channel by channel where the albedo is not near black (demodulate).
+// A pixel that holds two surfaces (its mean normal shorter than a unit one) matches no neighbour
+// and comes out of the passes nearly as noisy as it went in; there a first-order fit of the
+// radiance over its 3×3 neighbours as an affine function of the guides (Bitterli et al. 2016's
+// regression, in its simplest form) gives its value as the mix its guides say it is, taken where
+// it agrees with the passes' value within the noise.
 // SIMD (Highway, with an exponential of plain multiplications and additions, so every target gives
 // the same bits) and threaded by rows: the same input gives the same bytes on every machine and
 // thread count.
@@ -27,7 +32,8 @@ struct DenoiseInput {
   int width = 0, height = 0;
   std::span<const float> color;     // RGBA per pixel: the radiance (linear, unclamped) and alpha
   std::span<const float> albedo;    // RGB per pixel: the first non-specular hit's albedo (0: none)
-  std::span<const float> normal;    // RGB per pixel: its unit normal (0 where nothing was hit)
+  std::span<const float> normal;    // RGB per pixel: its normal (0 where nothing was hit), a mean
+                                    // of unit normals: shorter than 1 where they differ
   // Per pixel: the variance of the mean of the samples' luminances, each sample's radiance
   // divided by its albedo (demodulationOf each channel).
   std::span<const float> variance;

@@ -85,6 +85,41 @@ TEST(Denoise, KeepsAnEdgeWhereTheNormalTurns) {
   }
 }
 
+TEST(Denoise, FitsPixelsThatHoldTwoSurfaces) {
+  // The same two walls, the edge slanted across column 32: there each pixel holds a share α(y) of
+  // the left wall and 1 − α of the right, its radiance and normal the same mix of theirs (the
+  // normal shorter than 1). Its guides match no neighbour, so only the first-order fit over its
+  // neighbours removes its noise: a mix that the guides predict exactly.
+  Noisy p(64, 32);
+  const float sigma = 0.05f;
+  double before = 0, after = 0;
+  std::vector<float> exact(p.variance.size());
+  for (int y = 0; y < p.h; ++y)
+    for (int x = 0; x < p.w; ++x) {
+      const std::size_t i = p.index(x, y);
+      const float left = x < 32 ? 1.0f : x > 32 ? 0.0f : (float(y) + 0.5f) / float(p.h);
+      exact[i] = left * 0.2f + (1 - left) * 0.8f;
+      for (int c = 0; c < 3; ++c) p.color[4 * i + std::size_t(c)] = exact[i] + sigma * noise(std::uint32_t(3 * i) + std::uint32_t(c));
+      p.variance[i] = sigma * sigma / 3;
+      p.normal[3 * i] = 1 - left, p.normal[3 * i + 2] = left;
+    }
+  const std::vector<float> out = p.filtered();
+  for (int y = 1; y + 1 < p.h; ++y) {
+    const std::size_t i = p.index(32, y);
+    for (int c = 0; c < 3; ++c) {
+      before += std::pow(p.color[4 * i + std::size_t(c)] - exact[i], 2);
+      after += std::pow(out[4 * i + std::size_t(c)] - exact[i], 2);
+    }
+  }
+  EXPECT_LT(after, before / 5) << "mean squared error on the mixed column " << before / double(3 * (p.h - 2)) << " → "
+                               << after / double(3 * (p.h - 2));
+  // The pure walls beside it keep their values.
+  for (int y = 0; y < p.h; ++y) {
+    EXPECT_NEAR(out[4 * p.index(31, y)], 0.2f, 0.03f) << "row " << y;
+    EXPECT_NEAR(out[4 * p.index(33, y)], 0.8f, 0.03f) << "row " << y;
+  }
+}
+
 TEST(Denoise, KeepsTextureDetailThroughTheAlbedo) {
   // A checkerboard texture under even light, without noise: nothing to remove, the pattern stays.
   Noisy p(32, 32);
@@ -104,7 +139,9 @@ TEST(Denoise, SameBitsOnEveryThreadCountAndSimdTarget) {
     for (int c = 0; c < 3; ++c) p.color[4 * i + std::size_t(c)] = 1 + noise(std::uint32_t(7 * i) + std::uint32_t(c));
     p.variance[i] = 0.3f;
     p.albedo[3 * i] = 0.5f + 0.4f * noise(std::uint32_t(i));
-    p.normal[3 * i] = 0.6f, p.normal[3 * i + 2] = 0.8f * (i % 5 ? 1.0f : -1.0f);
+    // Some pixels mixes of two surfaces (a normal shorter than 1), for the first-order fit.
+    const float length = i % 7 ? 1.0f : 0.9f + 0.1f * noise(std::uint32_t(11 * i));
+    p.normal[3 * i] = 0.6f * length, p.normal[3 * i + 2] = 0.8f * length * (i % 5 ? 1.0f : -1.0f);
   }
   std::vector<float> first;
   {

@@ -41,8 +41,10 @@ struct TileCounts {
 
 // The path tracer's picture before the denoiser, and its guides: per pixel the mean of all its
 // samples (RGBA, the "beauty" layer), the mean radiance of those that hit something (RGB, and the
-// pixel's alpha) and their share of the samples, albedo and normal (RGB), and the variance of
-// the mean's luminance.
+// pixel's alpha) and their share of the samples, and over the same samples (the hits: the
+// background is laid under the filtered radiance after) the mean albedo and normal (RGB) and the
+// variance of the mean's luminance. (Over every sample, a silhouette's guides were shortened by
+// the misses and matched no neighbour's: the filter left it noisy.)
 struct DenoiseBuffers {
   std::vector<float> beauty, color, coverage, albedo, normal, variance;
   explicit DenoiseBuffers(std::size_t pixels)
@@ -99,12 +101,13 @@ class TracedFrame {
           denoised_->color[4 * i + std::size_t(k)] = float(k < 3 ? hitMean[k] : c[3]);
         }
         denoised_->coverage[i] = float(coverage);
+        const Real hits = Real(std::max(f.hitCount, 1));
         for (int k = 0; k < 3; ++k) {
-          denoised_->albedo[3 * i + std::size_t(k)] = float(f.albedo[k] / Real(samples));
-          denoised_->normal[3 * i + std::size_t(k)] = float(f.normal[k] / Real(samples));
+          denoised_->albedo[3 * i + std::size_t(k)] = float(f.albedo[k] / hits);
+          denoised_->normal[3 * i + std::size_t(k)] = float(f.normal[k] / hits);
         }
-        const Real mean = f.luminance / Real(samples);
-        denoised_->variance[i] = float(std::max(Real(0), f.luminanceSquared / Real(samples) - mean * mean) / Real(samples));
+        const Real mean = f.luminance / hits;
+        denoised_->variance[i] = float(std::max(Real(0), f.luminanceSquared / hits - mean * mean) / hits);
       }
   }
 
@@ -179,7 +182,7 @@ class TracedFrame {
         if (!std::isfinite(radiance.r + radiance.g + radiance.b + radiance.a)) continue;
         pixel.all += radiance;
         if (first) pixel.hits += Color3(radiance);
-        if (denoised_) {
+        if (denoised_ && first) {
           PixelSums& f = pixel;
           f.albedo += guides.albedo;
           f.normal += guides.normal;
