@@ -336,6 +336,33 @@ TEST(PathTracer, TheDenoisersGuidesAreTheFirstSurfacesAlbedoAndNormal) {
   EXPECT_GT(at(normal, 16, 16, 2), 0.95f);
 }
 
+TEST(PathTracer, ASilhouettesGuidesAreThoseOfItsSamplesThatHitSomething) {
+  // The radiance filtered is the mean of the samples that hit something (the background is laid
+  // under it after), so the guides are too: where the floor's far edge or the ball meets the
+  // empty background, a pixel's albedo is still a surface's (0.5, 0.7, or the lamp's 1, or a mix),
+  // not shrunk by its misses, and where most samples missed its normal is about unit length.
+  Scene s = litRoom(48);
+  s.background = Color4(0);  // transparent: the beauty's alpha is the share of samples that hit
+  s.rayTracing.samples = 16;
+  s.rayTracing.denoise = true;
+  FloatImage linear;
+  renderScene(s, nullptr, nullptr, &linear);
+  const FloatLayer &albedo = layerOf(linear, "albedo"), &normal = layerOf(linear, "normal"), &beauty = layerOf(linear, "beauty");
+  int silhouettes = 0;
+  for (std::size_t i = 0; i < albedo.values.size() / 3; ++i) {
+    const float a = albedo.values[3 * i];
+    if (a == 0) continue;  // nothing hit
+    const float* n = &normal.values[3 * i];
+    const float alpha = beauty.values[4 * i + 3];
+    EXPECT_GE(a, 0.5f - 1e-6f) << "pixel " << i << ", alpha " << alpha;
+    if (alpha > 0.5f) continue;
+    // Mostly background: a mix of that few samples' normals stays about unit length.
+    ++silhouettes;
+    EXPECT_GT(std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]), 0.7f) << "pixel " << i << ", alpha " << alpha;
+  }
+  EXPECT_GE(silhouettes, 10);
+}
+
 TEST(PathTracer, TheSameBytesOnEveryThreadCount) {
   Scene s = defaultScene(LightingModel::BlinnPhong, Shading::Phong, RendererKind::Path);
   s.width = 160, s.height = 90;
