@@ -1,0 +1,120 @@
+// The À-trous passes over SIMD lanes (denoise.h), included once per Highway target by
+// denoise.cpp alone: the exponential and luminance every kernel shares, one pass over rows, and the
+// first pass's luminance plane.
+#if defined(ILLUM_IMAGE_DENOISE_PASSES_INL_H_) == defined(HWY_TARGET_TOGGLE)
+#ifdef ILLUM_IMAGE_DENOISE_PASSES_INL_H_
+#undef ILLUM_IMAGE_DENOISE_PASSES_INL_H_
+#else
+#define ILLUM_IMAGE_DENOISE_PASSES_INL_H_
+#endif
+
+#include <hwy/highway.h>
+
+#include "image/denoise_planes.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace illum::HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+using namespace illum::denoising;
+
+// e^x for x ≤ 0 (below −87: 0), of multiplications and additions only (no fused
+// multiply-add), so that every SIMD target gives the same bits: x = k·ln 2 + r, |r| ≤ ln 2 / 2,
+// e^r by its Taylor polynomial to r⁵/120 (relative error below 2e-6: weights), times 2^k from the bits.
+template <class D, class V = hn::VFromD<D>>
+HWY_INLINE V ExpNegative(D d, V x) {
+  const hn::RebindToSigned<D> di;
+  const auto underflows = hn::Lt(x, hn::Set(d, -87.0f));  // e^x below 2^−126: 0
+  x = hn::Max(x, hn::Set(d, -87.0f));
+  const V k = hn::Round(hn::Mul(x, hn::Set(d, 1.44269504088896341f)));
+  // ln 2 in two parts, the first with few enough bits that k·ln2Hi is exact (Cody and Waite).
+  const V r = hn::Sub(hn::Sub(x, hn::Mul(k, hn::Set(d, 0.693145751953125f))), hn::Mul(k, hn::Set(d, 1.42860682030941723e-6f)));
+  V p = hn::Set(d, 1.0f / 120);
+  for (const float c : {1.0f / 24, 1.0f / 6, 0.5f, 1.0f, 1.0f}) p = hn::Add(hn::Mul(p, r), hn::Set(d, c));
+  const auto scale = hn::BitCast(d, hn::ShiftLeft<23>(hn::Add(hn::ConvertTo(di, k), hn::Set(di, 127))));
+  return hn::IfThenZeroElse(underflows, hn::Mul(p, scale));
+}
+
+// Rec. 709 luminance of three colour vectors.
+template <class D, class V = hn::VFromD<D>>
+HWY_INLINE V LuminanceOf(D d, const V (&c)[3]) {
+  return hn::Add(hn::Add(hn::Mul(hn::Set(d, 0.2126f), c[0]), hn::Mul(hn::Set(d, 0.7152f), c[1])), hn::Mul(hn::Set(d, 0.0722f), c[2]));
+}
+
+// One pass over rows [y0, y1): `in` filtered into `out` (colour and variance planes), taps `step`
+// pixels apart (the output's luminance written beside its colour, for the next pass).
+void FilterRows(const Layout& layout, const Guides& guides, const Planes& in, Planes& out, int step, int y0, int y1) {
+  const hn::ScalableTag<float> d;
+  using V = hn::VFromD<decltype(d)>;
+  const int lanes = int(hn::Lanes(d));
+  constexpr float kB3[5] = {1.0f / 16, 1.0f / 4, 3.0f / 8, 1.0f / 4, 1.0f / 16};
+  const V sigmaColor2 = hn::Set(d, kSigmaColor * kSigmaColor), epsilon = hn::Set(d, 1e-8f);
+  const auto squared = [](V a, V b) {
+    const V t = hn::Sub(a, b);
+    return hn::Mul(t, t);
+  };
+  const std::ptrdiff_t stride = layout.stride;
+  const V centreWeight = hn::Set(d, kB3[2] * kB3[2]);
+  for (int y = y0; y < y1; ++y)
+    for (int x = 0; x < layout.width; x += lanes) {  // the last vector's rest lands in the padding
+      const std::size_t p = layout.at(x, y);
+      V c[3], n[3], a[3];
+      for (int k = 0; k < 3; ++k) {
+        c[k] = hn::LoadU(d, in.color[k].data() + p);
+        n[k] = hn::LoadU(d, guides.normal[k].data() + p);
+        a[k] = hn::LoadU(d, guides.albedo[k].data() + p);
+      }
+      const V l = hn::LoadU(d, in.luminance.data() + p);
+      const V invColor2 = hn::Div(hn::Set(d, 1.0f), hn::Add(hn::Mul(sigmaColor2, hn::LoadU(d, in.variance.data() + p)), epsilon));
+      V sumW = hn::Zero(d), sumV = hn::Zero(d), sum[3] = {hn::Zero(d), hn::Zero(d), hn::Zero(d)};
+      for (int dy = -2; dy <= 2; ++dy)
+        for (int dx = -2; dx <= 2; ++dx) {
+          if (dx == 0 && dy == 0) {
+            // The centre tap: every difference is 0, e^0 = 1 exactly, so its weight is the kernel's.
+            sumW = hn::Add(sumW, centreWeight);
+            for (int k = 0; k < 3; ++k) sum[k] = hn::Add(sum[k], hn::Mul(centreWeight, c[k]));
+            sumV = hn::Add(sumV, hn::Mul(hn::Mul(centreWeight, centreWeight), hn::LoadU(d, in.variance.data() + p)));
+            continue;
+          }
+          const std::size_t q = std::size_t(std::ptrdiff_t(p) + std::ptrdiff_t(dy * step) * stride + dx * step);
+          V qc[3], dg = hn::Zero(d);
+          for (int k = 0; k < 3; ++k) {
+            qc[k] = hn::LoadU(d, in.color[k].data() + q);
+            dg = hn::Add(dg, squared(n[k], hn::LoadU(d, guides.normal[k].data() + q)));
+            dg = hn::Add(dg, squared(a[k], hn::LoadU(d, guides.albedo[k].data() + q)));
+          }
+          const V dc = squared(l, hn::LoadU(d, in.luminance.data() + q));
+          const V e = hn::Add(hn::Mul(dc, invColor2), dg);
+          const V w = hn::Mul(hn::Set(d, kB3[dy + 2] * kB3[dx + 2]), ExpNegative(d, hn::Neg(e)));
+          sumW = hn::Add(sumW, w);
+          for (int k = 0; k < 3; ++k) sum[k] = hn::Add(sum[k], hn::Mul(w, qc[k]));
+          sumV = hn::Add(sumV, hn::Mul(hn::Mul(w, w), hn::LoadU(d, in.variance.data() + q)));
+        }
+      // The centre tap always counts (e = 0): sumW > 0.
+      const V inv = hn::Div(hn::Set(d, 1.0f), sumW);
+      V filtered[3];
+      for (int k = 0; k < 3; ++k) {
+        filtered[k] = hn::Mul(sum[k], inv);
+        hn::StoreU(filtered[k], d, out.color[k].data() + p);
+      }
+      hn::StoreU(LuminanceOf(d, filtered), d, out.luminance.data() + p);
+      hn::StoreU(hn::Mul(sumV, hn::Mul(inv, inv)), d, out.variance.data() + p);
+    }
+}
+
+// The luminance plane of the first pass's input, rows [y0, y1), as FilterRows writes the others'.
+void LuminanceRows(const Layout& layout, Planes& planes, int y0, int y1) {
+  const hn::ScalableTag<float> d;
+  const int lanes = int(hn::Lanes(d));
+  for (int y = y0; y < y1; ++y)
+    for (int x = 0; x < layout.width; x += lanes) {
+      const std::size_t p = layout.at(x, y);
+      const hn::VFromD<decltype(d)> c[3] = {hn::LoadU(d, planes.color[0].data() + p), hn::LoadU(d, planes.color[1].data() + p),
+                                            hn::LoadU(d, planes.color[2].data() + p)};
+      hn::StoreU(LuminanceOf(d, c), d, planes.luminance.data() + p);
+    }
+}
+
+}  // namespace illum::HWY_NAMESPACE
+HWY_AFTER_NAMESPACE();
+
+#endif  // ILLUM_IMAGE_DENOISE_PASSES_INL_H_
