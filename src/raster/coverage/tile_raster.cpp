@@ -693,7 +693,7 @@ HWY_INLINE std::size_t SamplesPassIn(D d, const TriangleSetup& t, const PixelRec
     }
     // kShade: the colours of the row's pixels [shadedFrom, shadedFrom + lanes), once asked for.
     [[maybe_unused]] int shadedFrom = -1;
-    [[maybe_unused]] hn::VFromD<hn::Rebind<std::uint32_t, D>> shaded;
+    [[maybe_unused]] hn::VFromD<hn::Rebind<std::uint32_t, D>> shaded = hn::Zero(hn::Rebind<std::uint32_t, D>());
     for (int x = first; x <= last; x += pixels) {
       if (x != first)
         for (int i = 0; i < 3; ++i) {
