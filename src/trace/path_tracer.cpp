@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace illum {
 namespace {
@@ -58,6 +59,15 @@ Color4 PathTracer::primary(const Ray& primaryRay, const RayHit* primaryHit, cons
       if (depth == 0) return stratifiedPair(sample.pixelSeed, dimension, sample.index);
       const Real u1 = rng.uniform();
       return Vec2(u1, rng.uniform());
+    };
+    // The path's choices at this surface (k's mirror or the BSDF, then reflect or refract, or which
+    // lobe): at the first surface stratified over the pixel's samples as well (dimension 4), so that
+    // a part mirror's share of them is k's, not a binomial draw around it.
+    std::optional<Vec2> firstChoices;
+    const auto choice = [&](int which) {
+      if (depth != 0) return rng.uniform();
+      if (!firstChoices) firstChoices = stratifiedPair(sample.pixelSeed, 4, sample.index);
+      return (*firstChoices)[which];
     };
     HitPoint h = hitPoint(rays_, ray, hit);
     const Object& object = *h.object;
@@ -138,7 +148,7 @@ Color4 PathTracer::primary(const Ray& primaryRay, const RayHit* primaryHit, cons
       features->normal = N;
       features = nullptr;
     }
-    if (idealChance > 0 && rng.uniform() < idealChance) {
+    if (idealChance > 0 && choice(0) < idealChance) {
       const Vec3 D = -wo;
       const Vec3 facing = glm::dot(h.normal, D) < 0 ? h.normal : -h.normal;
       const Real etaI = h.front ? Real(1) : optics.ior, etaT = h.front ? optics.ior : Real(1);
@@ -146,7 +156,7 @@ Color4 PathTracer::primary(const Ray& primaryRay, const RayHit* primaryHit, cons
       bool refracts = false;
       if (optics.transmits()) {
         const std::optional<Vec3> refracted = refractDirection(D, facing, etaI, etaT);
-        if (refracted && !(rng.uniform() < fresnelDielectric(-glm::dot(facing, D), etaI, etaT))) {
+        if (refracted && !(choice(1) < fresnelDielectric(-glm::dot(facing, D), etaI, etaT))) {
           direction = *refracted;
           refracts = true;
         }
@@ -242,8 +252,7 @@ Color4 PathTracer::primary(const Ray& primaryRay, const RayHit* primaryHit, cons
 
     // The next bounce, sampled from the BSDF.
     BsdfSample next;
-    const Real choice = rng.uniform();
-    if (!bsdf.sample(wo, choice, pair(1), next) || !(glm::dot(N, next.direction) > 0)) break;
+    if (!bsdf.sample(wo, choice(1), pair(1), next) || !(glm::dot(N, next.direction) > 0)) break;
     beta *= next.value.sum() * (glm::dot(N, next.direction) / next.pdf);
     // An interpolated normal tilts away from the facet near silhouettes: a direction sampled above
     // it but below the facet would re-enter the surface and its energy be lost, so it is turned

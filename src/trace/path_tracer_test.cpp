@@ -109,6 +109,22 @@ TEST(PathTracer, MirrorsAndGlassConserveEnergyInTheFurnace) {
   EXPECT_NEAR(glass.mean, 0.5, 0.01);
 }
 
+TEST(PathTracer, APartMirrorSendsItsShareOfAPixelsSamplesToTheMirror) {
+  // A sphere that is half mirror, its BSDF black: a path that takes the mirror sees the furnace's
+  // 0.5, one that takes the BSDF nothing. The choice is stratified over the pixel's samples, so
+  // every pixel's 16 samples send exactly 8 to the mirror: 0.25 everywhere, not a binomial spread
+  // around it (independent choices gave pixels from 0.0625 to 0.4375).
+  Object o;
+  o.mesh = std::make_shared<const Mesh>(makeSphere(1, 48, 24));
+  o.material = lambertian(0);
+  o.material.specular = Color4(0, 0, 0, 1);
+  o.optics.reflective = Color3(0.5f);
+  const Stats half = inTheFurnace(o, 32, 16);
+  ASSERT_GT(half.count, 250);
+  EXPECT_NEAR(half.min, 0.25, 1e-5);
+  EXPECT_NEAR(half.max, 0.25, 1e-5);
+}
+
 TEST(PathTracer, ALambertianPlaneUnderAUniformSkyHasAlbedoTimesSky) {
   Scene s = pathScene(16);
   s.camera.projection = Projection::Orthographic;
