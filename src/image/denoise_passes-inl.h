@@ -46,14 +46,14 @@ void FilterRows(const Layout& layout, const Guides& guides, const Planes& in, Pl
   const hn::ScalableTag<float> d;
   using V = hn::VFromD<decltype(d)>;
   const int lanes = int(hn::Lanes(d));
-  constexpr float kB3[5] = {1.0f / 16, 1.0f / 4, 3.0f / 8, 1.0f / 4, 1.0f / 16};
+  constexpr float kKernel[3] = {1.0f / 4, 1.0f / 2, 1.0f / 4};  // (1 2 1)/4 along each axis
   const V sigmaColor2 = hn::Set(d, kSigmaColor * kSigmaColor), epsilon = hn::Set(d, 1e-8f);
   const auto squared = [](V a, V b) {
     const V t = hn::Sub(a, b);
     return hn::Mul(t, t);
   };
   const std::ptrdiff_t stride = layout.stride;
-  const V centreWeight = hn::Set(d, kB3[2] * kB3[2]);
+  const V centreWeight = hn::Set(d, kKernel[1] * kKernel[1]);
   for (int y = y0; y < y1; ++y)
     for (int x = 0; x < layout.width; x += lanes) {  // the last vector's rest lands in the padding
       const std::size_t p = layout.at(x, y);
@@ -66,8 +66,8 @@ void FilterRows(const Layout& layout, const Guides& guides, const Planes& in, Pl
       const V l = hn::LoadU(d, in.luminance.data() + p);
       const V invColor2 = hn::Div(hn::Set(d, 1.0f), hn::Add(hn::Mul(sigmaColor2, hn::LoadU(d, in.variance.data() + p)), epsilon));
       V sumW = hn::Zero(d), sumV = hn::Zero(d), sum[3] = {hn::Zero(d), hn::Zero(d), hn::Zero(d)};
-      for (int dy = -2; dy <= 2; ++dy)
-        for (int dx = -2; dx <= 2; ++dx) {
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
           if (dx == 0 && dy == 0) {
             // The centre tap: every difference is 0, e^0 = 1 exactly, so its weight is the kernel's.
             sumW = hn::Add(sumW, centreWeight);
@@ -84,7 +84,7 @@ void FilterRows(const Layout& layout, const Guides& guides, const Planes& in, Pl
           }
           const V dc = squared(l, hn::LoadU(d, in.luminance.data() + q));
           const V e = hn::Add(hn::Mul(dc, invColor2), dg);
-          const V w = hn::Mul(hn::Set(d, kB3[dy + 2] * kB3[dx + 2]), ExpNegative(d, hn::Neg(e)));
+          const V w = hn::Mul(hn::Set(d, kKernel[dy + 1] * kKernel[dx + 1]), ExpNegative(d, hn::Neg(e)));
           sumW = hn::Add(sumW, w);
           for (int k = 0; k < 3; ++k) sum[k] = hn::Add(sum[k], hn::Mul(w, qc[k]));
           sumV = hn::Add(sumV, hn::Mul(hn::Mul(w, w), hn::LoadU(d, in.variance.data() + q)));

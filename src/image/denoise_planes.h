@@ -13,7 +13,7 @@ namespace illum::denoising {
 
 // The filter's constants, tuned on the Cornell box, the built-in scene and glTF models against
 // 4096-sample references (bench/denoise.sh).
-constexpr int kPasses = 5;
+constexpr int kPasses = 3;  // of the 3×3 kernel, taps 1, 2 and 4 pixels apart
 constexpr float kSigmaColor = 4.0f;    // in standard deviations of the pixel's noise
 constexpr float kSigmaNormal = 0.1f;   // |n_p − n_q| of unit normals
 constexpr float kSigmaAlbedo = 0.02f;  // |a_p − a_q|
@@ -24,9 +24,9 @@ constexpr float kSigmaAlbedo = 0.02f;  // |a_p − a_q|
 constexpr float kMixedShortfall = 0.02f;
 constexpr float kFitRidge = 1e-2f;
 constexpr float kFitAgreement = 8.0f;
-// Pixels around the picture, as far as the widest pass reaches (two taps of 2^(kPasses−1)), whose
+// Pixels around the picture, as far as the widest pass reaches (a tap 2^(kPasses−1) away), whose
 // normal is so far from any unit normal that their weight is exactly 0.
-constexpr int kPad = 2 << (kPasses - 1);
+constexpr int kPad = 1 << (kPasses - 1);
 constexpr float kFarNormal = 1e10f;
 // Floats after each padded row that belong to no pixel: a vector that starts at a row's last pixel
 // and a tap kPad to its right still ends inside its own row (and inside the planes at the last).
@@ -40,7 +40,7 @@ struct Plane {
   const float* data() const { return values; }
 };
 
-// One block for every plane (16 of them, 3 MiB each at 1000×600), asked to be backed by the
+// One block for every plane (19 of them, 3 MiB each at 1000×600), asked to be backed by the
 // kernel's transparent huge pages: first touching 4 KiB pages one by one cost the filter 10k page
 // faults a call, about a fifth of its time.
 class PlaneArena {
