@@ -16,6 +16,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 
@@ -27,6 +28,45 @@ using namespace denoising;
 HWY_EXPORT(FilterRows);
 HWY_EXPORT(LuminanceRows);
 HWY_EXPORT(FitRows);
+
+namespace {
+
+// Rows [y0, y1) of the first pass's input: a pixel whose luminance l exceeds the largest of its
+// 8 neighbours' m (in the picture) by less than kOutlierDeviations standard errors of its mean
+// (the blurred variance) gets the scale m / l in `scale` (else 1): such a pixel is most likely one
+// rare bright path among its samples (its own variance is what that path made it), which the
+// colour term would keep apart from its neighbours, where a converged small highlight stands out
+// by far more than its noise and stays.
+void outlierScales(const Layout& layout, const Planes& first, float* scale, int y0, int y1) {
+  for (int y = y0; y < y1; ++y)
+    for (int x = 0; x < layout.width; ++x) {
+      float brightest = 0;
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int qx = x + dx, qy = y + dy;
+          if ((dx == 0 && dy == 0) || qx < 0 || qy < 0 || qx >= layout.width || qy >= layout.height) continue;
+          brightest = std::max(brightest, first.luminance.data()[layout.at(qx, qy)]);
+        }
+      const std::size_t at = layout.at(x, y);
+      const float l = first.luminance.data()[at], deviation = std::sqrt(first.variance.data()[at]);
+      scale[at] = l > brightest && l - brightest < kOutlierDeviations * deviation ? brightest / l : 1.0f;
+    }
+}
+
+// The scales applied (after every pixel has been compared with its neighbours as they came): to
+// the colour the passes filter, its luminance and the radiance the fit reads.
+void dimOutliers(const Layout& layout, const float* scale, Planes& first, Fit& fit, int y0, int y1) {
+  for (int y = y0; y < y1; ++y)
+    for (int x = 0; x < layout.width; ++x) {
+      const std::size_t at = layout.at(x, y);
+      const float f = scale[at];
+      if (f == 1.0f) continue;
+      for (int k = 0; k < 3; ++k) first.color[k].data()[at] *= f, fit.radiance[k].data()[at] *= f;
+      first.luminance.data()[at] *= f;
+    }
+}
+
+}  // namespace
 
 void denoise(const DenoiseInput& in, std::span<float> out) {
   const int w = in.width, h = in.height;
@@ -96,6 +136,14 @@ void denoise(const DenoiseInput& in, std::span<float> out) {
   });
   tbb::parallel_for(tbb::blocked_range<int>(0, h, 8), [&](const tbb::blocked_range<int>& rows) {
     HWY_DYNAMIC_DISPATCH(LuminanceRows)(layout, planes[0], rows.begin(), rows.end());
+  });
+  // The outliers' scales go to a plane the first pass has yet to write.
+  float* scale = planes[1].luminance.data();
+  tbb::parallel_for(tbb::blocked_range<int>(0, h, 8), [&](const tbb::blocked_range<int>& rows) {
+    outlierScales(layout, planes[0], scale, rows.begin(), rows.end());
+  });
+  tbb::parallel_for(tbb::blocked_range<int>(0, h, 8), [&](const tbb::blocked_range<int>& rows) {
+    dimOutliers(layout, scale, planes[0], fit, rows.begin(), rows.end());
   });
   for (int pass = 0; pass < kPasses; ++pass) {
     const Planes& from = planes[pass % 2];

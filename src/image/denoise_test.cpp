@@ -66,6 +66,29 @@ TEST(Denoise, RemovesNoiseOnAFlatSurface) {
                                 << after / double(3 * p.variance.size());
 }
 
+TEST(Denoise, DimsABrightPixelItsNoiseExplainsAndKeepsAConvergedOne) {
+  // A flat grey surface with two pixels four times as bright: one whose samples disagree (one rare
+  // bright path: a standard error of 1.5 on its mean) on a surface facing elsewhere (as at a
+  // silhouette, where no neighbour's guides match and the passes leave it alone), and one whose
+  // samples agree (a small highlight, converged). The first is an outlier of its noise and comes
+  // out as its brightest neighbour; the second stays.
+  Noisy p(48, 32);
+  for (std::size_t i = 0; i < p.variance.size(); ++i) {
+    for (int c = 0; c < 3; ++c) p.color[4 * i + std::size_t(c)] = 0.5f;
+    p.variance[i] = 1e-6f;
+  }
+  const std::size_t firefly = p.index(10, 10), highlight = p.index(36, 20);
+  for (const std::size_t i : {firefly, highlight})
+    for (int c = 0; c < 3; ++c) p.color[4 * i + std::size_t(c)] = 2.0f;
+  p.variance[firefly] = 1.5f * 1.5f;
+  p.normal[3 * firefly] = 1, p.normal[3 * firefly + 2] = 0;
+  const std::vector<float> out = p.filtered();
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_NEAR(out[4 * firefly + std::size_t(c)], 0.5f, 0.01f);
+    EXPECT_NEAR(out[4 * highlight + std::size_t(c)], 2.0f, 0.01f);
+  }
+}
+
 TEST(Denoise, KeepsAnEdgeWhereTheNormalTurns) {
   // Two walls meeting at x = 32: different normals, different brightness, both noisy.
   Noisy p(64, 32);
