@@ -19,7 +19,7 @@ constexpr float kSigmaNormal = 0.1f;   // |n_p − n_q| of unit normals
 constexpr float kSigmaAlbedo = 0.02f;  // |a_p − a_q|
 // A pixel brighter than each of its 8 neighbours by less than this many standard errors of its own
 // mean (an excess its noise explains: a rare bright path, not a feature) is brought down to the
-// brightest of them before the passes (DimOutliers).
+// brightest of them before the passes (outlierScales and dimOutliers, denoise.cpp).
 constexpr float kOutlierDeviations = 4.0f;
 // The first-order fit at pixels that hold two surfaces (FitRows): how far a pixel's mean normal
 // falls short of a unit normal where it is wholly a mixture, the ridge on the fit's slopes (in
