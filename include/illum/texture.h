@@ -53,6 +53,9 @@ class Texture {
   const Image& level(int i) const { return levels_[std::size_t(i)]; }
   const Real* colorTable() const { return decode_; }
   static const Real* alphaTable();
+  // The colour table's entries as 32-bit floats, split into four planes of bytes (byte k of entry
+  // i at 256·k + i, 64-byte aligned): what a sampler looks up with byte permutes.
+  const std::uint8_t* colorTableBytes() const { return decodeBytes_; }
 
  private:
   // Each level an RGBA8 image, rows top to bottom as images are (row 0 is GL's v = 1 end).
@@ -60,6 +63,7 @@ class Texture {
   Vec4 texel(const Level& level, int x, int glRow) const;
   std::vector<Level> levels_;
   const Real* decode_;  // 256 entries: a colour byte's value (alpha is always byte/255)
+  const std::uint8_t* decodeBytes_;  // the same, as byte planes
   bool hasTransparency_ = false;
   TexelEncoding encoding_ = TexelEncoding::Linear;
   TextureWraps wraps_;

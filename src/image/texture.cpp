@@ -4,11 +4,14 @@
 
 #include <hwy/highway.h>
 
+#include "image/texel_lookup.h"
 #include "image/texture_lanes-inl.h"
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 
 namespace illum {
@@ -21,11 +24,23 @@ struct DecodeTables {
   // (srgbDecoded((k + ½)/255)): a linear value encodes to the number of thresholds at or below it,
   // which is round(srgbEncoded(v)·255) without a pow per texel.
   std::array<Real, 255> srgbThreshold;
+  // Each table's entries as floats in byte planes (Texture::colorTableBytes).
+  alignas(64) std::array<std::uint8_t, 1024> linearBytes, srgbBytes;
   DecodeTables() {
     for (int i = 0; i < 256; ++i) {
       linear[std::size_t(i)] = Real(i) / Real(255);
       srgb[std::size_t(i)] = srgbDecoded(Real(i) / 255);
     }
+    const auto planes = [](const std::array<Real, 256>& table, std::array<std::uint8_t, 1024>& bytes) {
+      for (std::size_t i = 0; i < 256; ++i) {
+        std::uint32_t bits;
+        const float value = float(table[i]);
+        std::memcpy(&bits, &value, 4);
+        for (std::size_t k = 0; k < 4; ++k) bytes[256 * k + i] = std::uint8_t(bits >> (8 * k));
+      }
+    };
+    planes(linear, linearBytes);
+    planes(srgb, srgbBytes);
     for (int k = 0; k < 255; ++k) srgbThreshold[std::size_t(k)] = srgbDecoded((Real(k) + Real(0.5)) / 255);
   }
 };
@@ -69,6 +84,7 @@ Image halved(const Image& prev, TexelEncoding encoding) {
 
 Texture::Texture(Image image, TexelEncoding encoding, TextureWraps wraps)
     : decode_(encoding == TexelEncoding::Srgb ? tables().srgb.data() : tables().linear.data()),
+      decodeBytes_(encoding == TexelEncoding::Srgb ? tables().srgbBytes.data() : tables().linearBytes.data()),
       encoding_(encoding),
       wraps_(wraps) {
   if (image.width <= 0 || image.height <= 0 || image.rgba.size() < std::size_t(image.width) * std::size_t(image.height) * 4) {
@@ -87,6 +103,21 @@ std::size_t Texture::byteSize() const {
 }
 
 const Real* Texture::alphaTable() { return tables().linear.data(); }
+
+namespace {
+std::atomic<bool> byteLookupsAllowed{true};
+}
+
+bool texelByteLookups() {
+#if defined(__x86_64__) || defined(__i386__)
+  static const bool vbmi = __builtin_cpu_supports("avx512vbmi");
+  return vbmi && byteLookupsAllowed.load(std::memory_order_relaxed);
+#else
+  return false;
+#endif
+}
+
+void setTexelByteLookupsForTest(bool allowed) { byteLookupsAllowed.store(allowed); }
 
 Vec4 Texture::texel(const Level& level, int x, int glRow) const {
   const std::uint8_t* p = level.pixel(x, level.height - 1 - glRow);

@@ -3,6 +3,7 @@
 // to be 1) gives the reference pipeline's bytes, which decode through Texture::sample's table.
 #include "render/reference_render.h"
 #include "render/square_test_support.h"
+#include "image/texel_lookup.h"
 
 #include <illum/display.h>
 #include <illum/render.h>
@@ -47,9 +48,12 @@ Scene decodeScene(TexelEncoding encoding, bool opaque, int pixels, Real texels, 
 }
 
 TEST(TextureDecode, EveryByteDrawsTheReferencePipelinesBytes) {
-  // On every SIMD target this CPU has: the table in registers (AVX-512) or gathered.
-  for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+  // On every SIMD target this CPU has: the table in registers (AVX-512: looked up with byte
+  // permutes where the CPU has VBMI, and with float permutes) or gathered.
+  for (const std::int64_t target : hwy::SupportedAndGeneratedTargets())
+   for (bool byteLookups : {true, false}) {
     hwy::SetSupportedTargetsForTest(target);
+    setTexelByteLookupsForTest(byteLookups);
     for (TexelEncoding encoding : {TexelEncoding::Srgb, TexelEncoding::Linear})
       for (bool opaque : {true, false})
         for (Shading shading : {Shading::Gouraud, Shading::Phong})
@@ -58,10 +62,12 @@ TEST(TextureDecode, EveryByteDrawsTheReferencePipelinesBytes) {
             const Image drawn = renderScene(scene);
             EXPECT_EQ(drawn.rgba, renderSceneReference(scene).rgba)
                 << (encoding == TexelEncoding::Srgb ? "srgb" : "linear") << (opaque ? " opaque " : " alpha ")
-                << toString(shading) << " " << texels << " " << hwy::TargetName(target);
+                << toString(shading) << " " << texels << " " << hwy::TargetName(target)
+                << (byteLookups && texelByteLookups() ? " byte lookups" : "");
           }
   }
   hwy::SetSupportedTargetsForTest(0);
+  setTexelByteLookupsForTest(true);
 }
 
 TEST(TextureDecode, TexelCentresShowTheirOwnBytes) {
