@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -104,20 +103,13 @@ std::size_t Texture::byteSize() const {
 
 const Real* Texture::alphaTable() { return tables().linear.data(); }
 
-namespace {
-std::atomic<bool> byteLookupsAllowed{true};
-}
-
-bool texelByteLookups() {
+bool cpuHasVbmi() {
 #if defined(__x86_64__) || defined(__i386__)
-  static const bool vbmi = __builtin_cpu_supports("avx512vbmi");
-  return vbmi && byteLookupsAllowed.load(std::memory_order_relaxed);
+  return __builtin_cpu_supports("avx512vbmi");
 #else
   return false;
 #endif
 }
-
-void setTexelByteLookupsForTest(bool allowed) { byteLookupsAllowed.store(allowed); }
 
 Vec4 Texture::texel(const Level& level, int x, int glRow) const {
   const std::uint8_t* p = level.pixel(x, level.height - 1 - glRow);

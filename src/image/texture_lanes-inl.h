@@ -165,16 +165,13 @@ HWY_INLINE void SampleLevelLanes(D d, const Texture& texture, int levelIndex, V 
   const auto rowStart = [&](auto r) { return (hn::Set(di, height - 1) - r) * hn::Set(di, width); };
   const auto* words = reinterpret_cast<const std::uint32_t*>(level.rgba.data());
   const Real* color = texture.colorTable();
-#if defined(ILLUM_TEXELS_AVX512)
-  const TableRegisters colorRegisters(color);
-#endif
   const bool linear = texture.encoding() == TexelEncoding::Linear;
   const bool opaque = !texture.hasTransparency();  // every alpha byte 255: 1 exactly
   const V max = hn::Set(d, Real(255));
   const auto fetch = [&](auto xi, auto row) {
     return hn::BitCast(di, hn::GatherIndex(du, words, hn::IfThenElseZero(activeI, row + xi)));
   };
-  const auto decode = [&](auto word, V (&t)[4]) {
+  const auto decode = [&](auto word, V (&t)[4], [[maybe_unused]] const auto& colorRegisters) {
     const auto mask = hn::Set(di, 0xFF);
     const decltype(word) bytes[4] = {hn::And(word, mask), hn::And(hn::ShiftRight<8>(word), mask),
                                      hn::And(hn::ShiftRight<16>(word), mask), hn::And(hn::ShiftRight<24>(word), mask)};
@@ -216,10 +213,15 @@ HWY_INLINE void SampleLevelLanes(D d, const Texture& texture, int levelIndex, V 
   } else
 #endif
   {
-    decode(w00, t00);
-    decode(w10, t10);
-    decode(w01, t01);
-    decode(w11, t11);
+#if defined(ILLUM_TEXELS_AVX512)
+    const TableRegisters colorRegisters(color);
+#else
+    const int colorRegisters = 0;  // (none: the table is gathered)
+#endif
+    decode(w00, t00, colorRegisters);
+    decode(w10, t10, colorRegisters);
+    decode(w01, t01, colorRegisters);
+    decode(w11, t11, colorRegisters);
   }
   const V bx = one - ax, by = one - ay;
   for (int c = 0; c < 4; ++c) out[c] = by * (bx * t00[c] + ax * t10[c]) + ay * (bx * t01[c] + ax * t11[c]);
