@@ -124,6 +124,61 @@ HWY_INLINE V MipLevelLanes(D d, V x) {
   return hn::ConvertTo(d, exponent) + p * t;
 }
 
+// A texel index k of a row or column of n, at most one texel outside [0, n) ([0, 2n) mirrored),
+// brought inside as `wrap` says (texelPair's wrapped, texture.cpp).
+template <class DI, class VI = hn::VFromD<DI>>
+HWY_INLINE VI WrappedLanes(DI di, VI k, int n, TextureWrap wrap) {
+  if (wrap == TextureWrap::ClampToEdge) return hn::Min(hn::Max(k, hn::Zero(di)), hn::Set(di, n - 1));
+  const VI span = wrap == TextureWrap::Repeat ? hn::Set(di, n) : hn::Set(di, 2 * n);
+  k = hn::IfThenElse(k < hn::Zero(di), k + span, k);
+  k = hn::IfThenElse(hn::Not(k < span), k - span, k);
+  if (wrap == TextureWrap::Repeat) return k;
+  return hn::IfThenElse(k < hn::Set(di, n), k, hn::Set(di, 2 * n - 1) - k);
+}
+
+// texelPair (texture.cpp) over lanes: the wrap mode, then GL_LINEAR along one axis of n texels,
+// the two texels around c·n − ½ and the second one's weight. (Functions rather than lambdas: a
+// lambda is not always inlined, and a call here saves every vector register around it.)
+template <class D, class V = hn::VFromD<D>, class VI = hn::VFromD<hn::RebindToSigned<D>>>
+HWY_INLINE void TexelPairLanes(D d, V c, int n, TextureWrap wrap, VI& i0, VI& i1, V& weight) {
+  const hn::RebindToSigned<D> di;
+  const V one = hn::Set(d, Real(1)), two = hn::Set(d, Real(2));
+  const V reduced = wrap == TextureWrap::ClampToEdge ? hn::Min(hn::Max(c, hn::Zero(d)), one)
+                    : wrap == TextureWrap::Repeat    ? c - hn::Floor(c)
+                                                     : c - two * hn::Floor(c / two);
+  const V x = reduced * hn::Set(d, Real(n)) - hn::Set(d, Real(0.5));
+  const V fx = hn::Floor(x);
+  weight = x - fx;
+  const VI i = hn::ConvertTo(di, fx);
+  i0 = WrappedLanes(di, i, n, wrap);
+  i1 = WrappedLanes(di, i + hn::Set(di, 1), n, wrap);
+}
+
+// A decode table read by gathering its entries.
+template <class D>
+struct GatheredTable {
+  D d;
+  const Real* table;
+  template <class VI>
+  HWY_INLINE hn::VFromD<D> operator()(VI index) const {
+    return hn::GatherIndex(d, table, index);
+  }
+};
+
+// A texel word's channels as the texture's tables decode them: colour bytes looked up (lookUp: the
+// table in registers or gathered) or, linear, byte/255 (one division, rounded as the table's entry
+// is); alpha byte/255, or 1 for an opaque texture.
+template <class D, class V = hn::VFromD<D>, class VI, class LookUp>
+HWY_INLINE void DecodeTexelLanes(D d, VI word, bool linear, bool opaque, const LookUp& lookUp, V (&t)[4]) {
+  const hn::RebindToSigned<D> di;
+  const V max = hn::Set(d, Real(255));
+  const VI mask = hn::Set(di, 0xFF);
+  const VI bytes[4] = {hn::And(word, mask), hn::And(hn::ShiftRight<8>(word), mask), hn::And(hn::ShiftRight<16>(word), mask),
+                       hn::And(hn::ShiftRight<24>(word), mask)};
+  t[3] = opaque ? hn::Set(d, Real(1)) : hn::ConvertTo(d, bytes[3]) / max;
+  for (int c = 0; c < 3; ++c) t[c] = linear ? hn::ConvertTo(d, bytes[c]) / max : lookUp(bytes[c]);
+}
+
 // Texture::sampleLevel of one level in the lanes of `active` (the others read a valid texel and
 // are left to the caller).
 template <class D, class V = hn::VFromD<D>, class M>
@@ -132,58 +187,21 @@ HWY_INLINE void SampleLevelLanes(D d, const Texture& texture, int levelIndex, V 
   const hn::RebindToUnsigned<D> du;
   const Image& level = texture.level(levelIndex);
   const int width = level.width, height = level.height;
-  // The wrap modes, then GL_LINEAR: the four texels around (u·w − 0.5, v·h − 0.5), as texelPair
-  // (texture.cpp) finds them.
-  const V half = hn::Set(d, Real(0.5)), one = hn::Set(d, Real(1));
-  const auto pair = [&](V c, int n, TextureWrap wrap, auto& i0, auto& i1, V& weight) {
-    const V two = hn::Set(d, Real(2));
-    const V reduced = wrap == TextureWrap::ClampToEdge ? hn::Min(hn::Max(c, hn::Zero(d)), one)
-                      : wrap == TextureWrap::Repeat    ? c - hn::Floor(c)
-                                                       : c - two * hn::Floor(c / two);
-    const V x = reduced * hn::Set(d, Real(n)) - half;
-    const V fx = hn::Floor(x);
-    weight = x - fx;
-    const auto vn = hn::Set(di, n), last = hn::Set(di, n - 1);
-    const auto wrapped = [&](auto k) {
-      if (wrap == TextureWrap::ClampToEdge) return hn::Min(hn::Max(k, hn::Zero(di)), last);
-      const auto span = wrap == TextureWrap::Repeat ? vn : hn::Set(di, 2 * n);
-      k = hn::IfThenElse(k < hn::Zero(di), k + span, k);
-      k = hn::IfThenElse(hn::Not(k < span), k - span, k);
-      if (wrap == TextureWrap::Repeat) return k;
-      return hn::IfThenElse(k < vn, k, hn::Set(di, 2 * n - 1) - k);
-    };
-    const auto i = hn::ConvertTo(di, fx);
-    i0 = wrapped(i);
-    i1 = wrapped(i + hn::Set(di, 1));
-  };
+  const V one = hn::Set(d, Real(1));
   hn::VFromD<decltype(di)> x0, x1, y0, y1;
   V ax, ay;
-  pair(u, width, texture.wraps().s, x0, x1, ax);
-  pair(v, height, texture.wraps().t, y0, y1, ay);
+  // The wrap modes, then GL_LINEAR: the four texels around (u·w − 0.5, v·h − 0.5).
+  TexelPairLanes(d, u, width, texture.wraps().s, x0, x1, ax);
+  TexelPairLanes(d, v, height, texture.wraps().t, y0, y1, ay);
   // Texel (x, GL row r) is the image's pixel (x, height − 1 − r); inactive lanes read texel 0.
   const auto activeI = hn::RebindMask(di, active);
   const auto rowStart = [&](auto r) { return (hn::Set(di, height - 1) - r) * hn::Set(di, width); };
   const auto* words = reinterpret_cast<const std::uint32_t*>(level.rgba.data());
-  const Real* color = texture.colorTable();
+  [[maybe_unused]] const Real* color = texture.colorTable();
   const bool linear = texture.encoding() == TexelEncoding::Linear;
   const bool opaque = !texture.hasTransparency();  // every alpha byte 255: 1 exactly
-  const V max = hn::Set(d, Real(255));
   const auto fetch = [&](auto xi, auto row) {
     return hn::BitCast(di, hn::GatherIndex(du, words, hn::IfThenElseZero(activeI, row + xi)));
-  };
-  const auto decode = [&](auto word, V (&t)[4], [[maybe_unused]] const auto& colorRegisters) {
-    const auto mask = hn::Set(di, 0xFF);
-    const decltype(word) bytes[4] = {hn::And(word, mask), hn::And(hn::ShiftRight<8>(word), mask),
-                                     hn::And(hn::ShiftRight<16>(word), mask), hn::And(hn::ShiftRight<24>(word), mask)};
-    // A linear byte's value is byte/255, as the table holds it (one division, rounded alike);
-    // sRGB colour bytes are looked up.
-    t[3] = opaque ? hn::Set(d, Real(1)) : hn::ConvertTo(d, bytes[3]) / max;
-    for (int c = 0; c < 3; ++c)
-#if defined(ILLUM_TEXELS_AVX512)
-      t[c] = linear ? hn::ConvertTo(d, bytes[c]) / max : colorRegisters(bytes[c]);
-#else
-      t[c] = linear ? hn::ConvertTo(d, bytes[c]) / max : hn::GatherIndex(d, color, bytes[c]);
-#endif
   };
   V t00[4], t10[4], t01[4], t11[4];
   const auto r0 = rowStart(y0), r1 = rowStart(y1);
@@ -208,20 +226,21 @@ HWY_INLINE void SampleLevelLanes(D d, const Texture& texture, int levelIndex, V 
     const decltype(w00) words[4] = {w00, w10, w01, w11};
     for (int k = 0; k < 4; ++k) {
       for (int c = 0; c < 3; ++c) (*texels[k])[c] = V{colors[3 * k + c]};
-      (*texels[k])[3] = opaque ? hn::Set(d, Real(1)) : hn::ConvertTo(d, hn::And(hn::ShiftRight<24>(words[k]), hn::Set(di, 0xFF))) / max;
+      (*texels[k])[3] = opaque ? hn::Set(d, Real(1))
+                                : hn::ConvertTo(d, hn::ShiftRight<24>(hn::BitCast(du, words[k]))) / hn::Set(d, Real(255));
     }
   } else
 #endif
   {
 #if defined(ILLUM_TEXELS_AVX512)
-    const TableRegisters colorRegisters(color);
+    const TableRegisters lookUp(color);
 #else
-    const int colorRegisters = 0;  // (none: the table is gathered)
+    const GatheredTable<D> lookUp{d, color};
 #endif
-    decode(w00, t00, colorRegisters);
-    decode(w10, t10, colorRegisters);
-    decode(w01, t01, colorRegisters);
-    decode(w11, t11, colorRegisters);
+    DecodeTexelLanes(d, w00, linear, opaque, lookUp, t00);
+    DecodeTexelLanes(d, w10, linear, opaque, lookUp, t10);
+    DecodeTexelLanes(d, w01, linear, opaque, lookUp, t01);
+    DecodeTexelLanes(d, w11, linear, opaque, lookUp, t11);
   }
   const V bx = one - ax, by = one - ay;
   for (int c = 0; c < 4; ++c) out[c] = by * (bx * t00[c] + ax * t10[c]) + ay * (bx * t01[c] + ax * t11[c]);
