@@ -52,8 +52,11 @@ template <class D, class V = hn::VFromD<D>>
 HWY_INLINE void TexelLanes(D d, const Texture& texture, const UvLanes<V>& at, V (&texel)[4]) {
   const V width = hn::Set(d, Real(texture.width())), height = hn::Set(d, Real(texture.height()));
   const V x0 = at.dx[0] * width, y0 = at.dx[1] * height, x1 = at.dy[0] * width, y1 = at.dy[1] * height;
-  const V right = hn::Sqrt(x0 * x0 + y0 * y0), up = hn::Sqrt(x1 * x1 + y1 * y1);
-  const V footprint = hn::IfThenElse(right < up, up, right);  // std::max's choice
+  // std::max of the two lengths (fragment.cpp) with one square root: it is monotonic and correctly
+  // rounded, so the root of the larger square is the larger root, bit for bit, and a NaN square
+  // is passed over or kept as std::max passes over or keeps its root.
+  const V right2 = x0 * x0 + y0 * y0, up2 = x1 * x1 + y1 * y1;
+  const V footprint = hn::Sqrt(hn::IfThenElse(right2 < up2, up2, right2));
 #if !ILLUM_USE_DOUBLE
   SampleTextureLanes(d, texture, at.uv[0], at.uv[1], footprint, texel);
 #else
