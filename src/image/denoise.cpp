@@ -36,20 +36,33 @@ namespace {
 // (the blurred variance) gets the scale m / l in `scale` (else 1): such a pixel is most likely one
 // rare bright path among its samples (its own variance is what that path made it), which the
 // colour term would keep apart from its neighbours, where a converged small highlight stands out
-// by far more than its noise and stays.
-void outlierScales(const Layout& layout, const Planes& first, float* scale, int y0, int y1) {
+// by far more than its noise and stays. A pixel that hit a surface is compared with the neighbours
+// that hit one, a pixel that hit nothing with those that hit nothing, and one that has none of its
+// kind around it is kept: a lone object a pixel wide on the background is not noise of the
+// background's.
+void outlierScales(const Layout& layout, const Planes& first, const Guides& guides, float* scale, int y0, int y1) {
+  const auto hit = [&](std::size_t at) {
+    float n2 = 0;
+    for (int k = 0; k < 3; ++k) n2 += guides.normal[k].data()[at] * guides.normal[k].data()[at];
+    return n2 > 0;
+  };
   for (int y = y0; y < y1; ++y)
     for (int x = 0; x < layout.width; ++x) {
+      const std::size_t at = layout.at(x, y);
+      const bool surface = hit(at);
       float brightest = 0;
+      bool compared = false;
       for (int dy = -1; dy <= 1; ++dy)
         for (int dx = -1; dx <= 1; ++dx) {
           const int qx = x + dx, qy = y + dy;
           if ((dx == 0 && dy == 0) || qx < 0 || qy < 0 || qx >= layout.width || qy >= layout.height) continue;
-          brightest = std::max(brightest, first.luminance.data()[layout.at(qx, qy)]);
+          const std::size_t q = layout.at(qx, qy);
+          if (hit(q) != surface) continue;
+          brightest = std::max(brightest, first.luminance.data()[q]);
+          compared = true;
         }
-      const std::size_t at = layout.at(x, y);
       const float l = first.luminance.data()[at], deviation = std::sqrt(first.variance.data()[at]);
-      scale[at] = l > brightest && l - brightest < kOutlierDeviations * deviation ? brightest / l : 1.0f;
+      scale[at] = compared && l > brightest && l - brightest < kOutlierDeviations * deviation ? brightest / l : 1.0f;
     }
 }
 
@@ -140,7 +153,7 @@ void denoise(const DenoiseInput& in, std::span<float> out) {
   // The outliers' scales go to a plane the first pass has yet to write.
   float* scale = planes[1].luminance.data();
   tbb::parallel_for(tbb::blocked_range<int>(0, h, 8), [&](const tbb::blocked_range<int>& rows) {
-    outlierScales(layout, planes[0], scale, rows.begin(), rows.end());
+    outlierScales(layout, planes[0], guides, scale, rows.begin(), rows.end());
   });
   tbb::parallel_for(tbb::blocked_range<int>(0, h, 8), [&](const tbb::blocked_range<int>& rows) {
     dimOutliers(layout, scale, planes[0], fit, rows.begin(), rows.end());

@@ -12,8 +12,9 @@
 //   var'(p) = Σ (h w)² var(q) / (Σ h w)²   (the variance of the filtered value, for the next pass).
 // The colour filtered is the radiance divided by the albedo (texture detail is put back after,
 // not blurred), channel by channel where the albedo is not near black (demodulate). Before the
-// passes, a pixel brighter than all 8 neighbours by less than 4 standard errors of its mean (one
-// rare bright path among its samples, most likely) is brought down to the brightest of them.
+// passes, a pixel brighter than all 8 neighbours of its kind (those that hit a surface, or those
+// that hit nothing, as it did) by less than 4 standard errors of its mean (one rare bright path
+// among its samples, most likely) is brought down to the brightest of them.
 // A pixel that holds two surfaces (its mean normal shorter than a unit one) matches no neighbour
 // and comes out of the passes nearly as noisy as it went in; there a first-order fit of the
 // radiance over its 3×3 neighbours as an affine function of the guides (Bitterli et al. 2016's

@@ -89,6 +89,36 @@ TEST(Denoise, DimsABrightPixelItsNoiseExplainsAndKeepsAConvergedOne) {
   }
 }
 
+TEST(Denoise, KeepsALoneObjectPixelThatItsNoiseWouldExplain) {
+  // A background (nothing hit: normal and albedo 0) of radiance 0.2 and, at one pixel, a surface a
+  // pixel wide of albedo 0.5, as bright as 1 (2 divided by its albedo, as the step compares it) and
+  // as noisy as a firefly (standard error 1, 0.5 once the variance is blurred 3×3: its excess of
+  // 1.8 is within 4 of them). It is the
+  // only pixel of its kind around, so the outlier step leaves it be (compared with its background
+  // neighbours it came out as 0.2: the object vanished).
+  Noisy p(32, 32);
+  for (std::size_t i = 0; i < p.variance.size(); ++i) {
+    for (int c = 0; c < 3; ++c) {
+      p.color[4 * i + std::size_t(c)] = 0.2f;
+      p.normal[3 * i + std::size_t(c)] = 0.0f;
+      p.albedo[3 * i + std::size_t(c)] = 0.0f;
+    }
+    p.variance[i] = 1e-6f;
+  }
+  const std::size_t object = p.index(16, 16);
+  for (int c = 0; c < 3; ++c) {
+    p.color[4 * object + std::size_t(c)] = 1.0f;
+    p.albedo[3 * object + std::size_t(c)] = 0.5f;
+  }
+  p.normal[3 * object + 2] = 1;
+  p.variance[object] = 1.0f;
+  const std::vector<float> out = p.filtered();
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_NEAR(out[4 * object + std::size_t(c)], 1.0f, 0.01f);
+    EXPECT_NEAR(out[4 * p.index(3, 3) + std::size_t(c)], 0.2f, 0.001f);
+  }
+}
+
 TEST(Denoise, KeepsAnEdgeWhereTheNormalTurns) {
   // Two walls meeting at x = 32: different normals, different brightness, both noisy.
   Noisy p(64, 32);
