@@ -63,7 +63,7 @@ HWY_INLINE void WordPairs(const std::uint32_t* words, hn::Vec512<std::int32_t> i
 // a 256-entry float table held as four planes of bytes (Texture::colorTableBytes) with AVX-512
 // VBMI's byte permutes: each plane's byte for all 64 bytes of a vector at once (two 128-entry
 // permutes and a blend on the byte's top bit), then each channel's four bytes brought together
-// into its lanes' floats (two permutes and a blend), 21 instructions a vector where float
+// into its lanes' floats (two permutes and a blend), 22 instructions a vector where float
 // permutes take 54. Out of line, compiled for VBMI, and called only where the CPU has it
 // (texelByteLookups): out[3v + c] is channel c of vector v.
 inline HWY_NOINLINE __attribute__((target(HWY_TARGET_STR ",avx512vbmi"))) void LookUpColorBytes(
