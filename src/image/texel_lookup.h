@@ -7,7 +7,7 @@
 
 namespace illum {
 
-bool cpuHasVbmi();
+bool cpuHasVbmi();  // asked of the CPU (texture.cpp)
 inline std::atomic<bool> texelByteLookupsAllowed{true};
 
 // True where the CPU has AVX-512 VBMI, unless a test has turned the byte permutes off. Inline: a

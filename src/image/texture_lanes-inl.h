@@ -165,9 +165,17 @@ struct GatheredTable {
   }
 };
 
+// A texel word's alpha: byte/255 (one division, rounded as the alpha table's entry is), or 1 for an
+// opaque texture (whose every alpha byte is 255).
+template <class D, class VI>
+HWY_INLINE hn::VFromD<D> AlphaLanes(D d, VI word, bool opaque) {
+  if (opaque) return hn::Set(d, Real(1));
+  return hn::ConvertTo(d, hn::And(hn::ShiftRight<24>(word), hn::Set(hn::DFromV<VI>(), 0xFF))) / hn::Set(d, Real(255));
+}
+
 // A texel word's channels as the texture's tables decode them: colour bytes looked up (lookUp: the
 // table in registers or gathered) or, linear, byte/255 (one division, rounded as the table's entry
-// is); alpha byte/255, or 1 for an opaque texture.
+// is); alpha as AlphaLanes.
 template <class D, class V = hn::VFromD<D>, class VI, class LookUp>
 HWY_INLINE void DecodeTexelLanes(D d, VI word, bool linear, bool opaque, const LookUp& lookUp, V (&t)[4]) {
   const hn::RebindToSigned<D> di;
@@ -175,7 +183,7 @@ HWY_INLINE void DecodeTexelLanes(D d, VI word, bool linear, bool opaque, const L
   const VI mask = hn::Set(di, 0xFF);
   const VI bytes[4] = {hn::And(word, mask), hn::And(hn::ShiftRight<8>(word), mask), hn::And(hn::ShiftRight<16>(word), mask),
                        hn::And(hn::ShiftRight<24>(word), mask)};
-  t[3] = opaque ? hn::Set(d, Real(1)) : hn::ConvertTo(d, bytes[3]) / max;
+  t[3] = AlphaLanes(d, word, opaque);
   for (int c = 0; c < 3; ++c) t[c] = linear ? hn::ConvertTo(d, bytes[c]) / max : lookUp(bytes[c]);
 }
 
@@ -219,15 +227,14 @@ HWY_INLINE void SampleLevelLanes(D d, const Texture& texture, int levelIndex, V 
   }
 #if defined(ILLUM_TEXELS_AVX512)
   if (texelByteLookups()) {
-    const __m512i words4[4] = {w00.raw, w10.raw, w01.raw, w11.raw};
-    __m512 colors[12];
-    LookUpColorBytes(texture.colorTableBytes(), words4, 4, colors);
-    V(*texels[4])[4] = {&t00, &t10, &t01, &t11};
     const decltype(w00) words[4] = {w00, w10, w01, w11};
+    const __m512i raw[4] = {w00.raw, w10.raw, w01.raw, w11.raw};
+    __m512 colors[12];
+    LookUpColorBytes(texture.colorTableBytes(), raw, 4, colors);
+    V(*texels[4])[4] = {&t00, &t10, &t01, &t11};
     for (int k = 0; k < 4; ++k) {
       for (int c = 0; c < 3; ++c) (*texels[k])[c] = V{colors[3 * k + c]};
-      (*texels[k])[3] = opaque ? hn::Set(d, Real(1))
-                                : hn::ConvertTo(d, hn::ShiftRight<24>(hn::BitCast(du, words[k]))) / hn::Set(d, Real(255));
+      (*texels[k])[3] = AlphaLanes(d, words[k], opaque);
     }
   } else
 #endif
