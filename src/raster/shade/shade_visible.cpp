@@ -19,26 +19,180 @@ HWY_BEFORE_NAMESPACE();
 namespace illum::HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
+// The values of the records whose pixels fill a vector, as each lane sees them: one record's,
+// broadcast (OneRecord: a record with a vector or more of pixels), or, where small records share
+// a vector, each lane its own record's, looked up by its index in the group (RecordGroup). Both
+// give a lane the same bits from the same record.
+template <class D, bool kSplit>
+struct OneRecord {
+  using V = hn::VFromD<D>;
+  using DI = hn::Rebind<std::int32_t, D>;
+  using VI = hn::VFromD<DI>;
+  using T = std::conditional_t<kSplit, float, double>;
+  D d;
+  const ShownRecord& rec;
+  // The first pixel's edge values (split: its multiple of 256, and the rest), and the steps.
+  T high[3], low[3], A[3], B[3];
+  int column0, row0;  // the first pixel in the tile
+
+  OneRecord(D dr, const ShownRecord& r, const PixelRect& rect, std::uint32_t firstPixel) : d(dr), rec(r) {
+    const TriangleSetup& t = *rec.setup;
+    column0 = int(firstPixel % kTileSize), row0 = int(firstPixel / kTileSize);
+    const int x0 = rect.minX + column0, y0 = rect.minY + row0;
+    const std::int64_t half = kSubpixelOne / 2;
+    for (int i = 0; i < 3; ++i) {
+      const std::int64_t e = t.edge[i].at(std::int64_t(x0) * kSubpixelOne + half, std::int64_t(y0) * kSubpixelOne + half);
+      const std::int64_t rest = kSplit ? (e & (kSubpixelOne - 1)) : 0;
+      high[i] = T(e - rest), low[i] = T(rest);
+      A[i] = T(std::int64_t(t.edge[i].a) * kSubpixelOne), B[i] = T(std::int64_t(t.edge[i].b) * kSubpixelOne);
+    }
+  }
+  void next(VI) {}
+  VI column() const { return hn::Set(DI(), column0); }
+  VI row() const { return hn::Set(DI(), row0); }
+  // Edge value i at the lanes' pixels dx, dy from the first one, as Real: with kSplit in float
+  // lanes, a multiple of 256 plus the rest, else in double lanes, half a vector at a time.
+  V edgeAt(int i, VI dx, VI dy) const {
+#if !ILLUM_USE_DOUBLE
+    if constexpr (kSplit) {
+      const V offset = hn::ConvertTo(d, dx) * hn::Set(d, A[i]) + hn::ConvertTo(d, dy) * hn::Set(d, B[i]);
+      return (hn::Set(d, high[i]) + offset) + hn::Set(d, low[i]);
+    } else
+#endif
+    {
+      const auto exact = [&](auto dd, auto x, auto y) {  // in double lanes
+        return hn::Set(dd, high[i]) + (hn::PromoteTo(dd, x) * hn::Set(dd, A[i]) + hn::PromoteTo(dd, y) * hn::Set(dd, B[i]));
+      };
+#if HWY_TARGET == HWY_SCALAR || ILLUM_USE_DOUBLE
+      const hn::Rebind<double, D> dd;
+      if constexpr (sizeof(Real) == 8) return exact(dd, dx, dy);
+      else return hn::DemoteTo(d, exact(dd, dx, dy));
+#else
+      const hn::Half<D> dh;
+      const hn::Half<DI> dih;
+      const hn::Rebind<double, decltype(dh)> dd;
+      const auto lower = hn::DemoteTo(dh, exact(dd, hn::LowerHalf(dih, dx), hn::LowerHalf(dih, dy)));
+      const auto upper = hn::DemoteTo(dh, exact(dd, hn::UpperHalf(dih, dx), hn::UpperHalf(dih, dy)));
+      return hn::Combine(d, upper, lower);
+#endif
+    }
+  }
+  V invArea() const { return hn::Set(d, rec.setup->invArea); }
+  V invW(int k) const { return hn::Set(d, rec.setup->invW[k]); }
+  V vertex(int k, int value) const { return hn::Set(d, rec.vertex[k][value]); }
+  V flat(int c) const { return hn::Set(d, rec.flat[c]); }
+  V step(int axis, int i) const { return hn::Set(d, axis == 0 ? rec.stepX[i] : rec.stepY[i]); }
+  Vec3L<V> dPdu() const { return Broadcast(d, rec.dPdu); }
+  Vec3L<V> dPdv() const { return Broadcast(d, rec.dPdv); }
+  auto negate() const { return hn::FirstN(d, rec.negate ? hn::Lanes(d) : 0); }
+  void slots(std::uint32_t* out, hn::Mask<D>, std::size_t n) const { std::fill_n(out, n, rec.slot); }
+};
+
+#if HWY_TARGET != HWY_SCALAR && !ILLUM_USE_DOUBLE
+// How many of a ShownRecord's values per vertex the layout names.
+inline int ValuesUsed(const VisibleLayout& layout) {
+  int n = 0;
+  for (const auto [at, size] : {std::pair{layout.lit, 4}, {layout.position, 3}, {layout.normal, 3}, {layout.color, 4},
+                                {layout.uv, 2}})
+    if (at >= 0) n = std::max(n, at + size);
+  return n;
+}
+
+// Up to a vector's lane count of small records, each value a row of the table, record by record.
+template <class D>
+struct RecordTable {
+  static constexpr std::size_t kRecords = hn::MaxLanes(D());
+  HWY_ALIGN float high[3][kRecords], low[3][kRecords], A[3][kRecords], B[3][kRecords];
+  HWY_ALIGN float invArea[kRecords], invW[3][kRecords];
+  HWY_ALIGN float vertex[3][ShownRecord::kValues][kRecords];
+  HWY_ALIGN float flat[4][kRecords], step[2][3][kRecords], dPdu[3][kRecords], dPdv[3][kRecords];
+  HWY_ALIGN std::int32_t column0[kRecords], row0[kRecords], negate[kRecords];
+  HWY_ALIGN std::uint32_t slot[kRecords];
+
+  // Record j's row entries, from the values OneRecord computes for it (kSplit).
+  void set(std::size_t j, const VisibleLayout& layout, const OneRecord<D, true>& one) {
+    const ShownRecord& r = one.rec;
+    for (int i = 0; i < 3; ++i) {
+      high[i][j] = one.high[i], low[i][j] = one.low[i], A[i][j] = one.A[i], B[i][j] = one.B[i];
+      invW[i][j] = r.setup->invW[i];
+      step[0][i][j] = r.stepX[i], step[1][i][j] = r.stepY[i];
+      dPdu[i][j] = r.dPdu[i], dPdv[i][j] = r.dPdv[i];
+    }
+    invArea[j] = r.setup->invArea;
+    const int values = ValuesUsed(layout);
+    for (int k = 0; k < 3; ++k)
+      for (int v = 0; v < values; ++v) vertex[k][v][j] = r.vertex[k][v];
+    for (int c = 0; c < 4; ++c) flat[c][j] = r.flat[c];
+    column0[j] = one.column0, row0[j] = one.row0, negate[j] = r.negate ? -1 : 0;
+    slot[j] = r.slot;
+  }
+};
+
+template <class D>
+struct RecordGroup {
+  using V = hn::VFromD<D>;
+  using DI = hn::Rebind<std::int32_t, D>;
+  using DU = hn::Rebind<std::uint32_t, D>;
+  using VI = hn::VFromD<DI>;
+  D d;
+  const RecordTable<D>& table;
+  // Each lane's record in the table, for float, signed and unsigned rows.
+  decltype(hn::IndicesFromVec(D(), hn::Zero(DI()))) of;
+  decltype(hn::IndicesFromVec(DI(), hn::Zero(DI()))) ofI;
+  decltype(hn::IndicesFromVec(DU(), hn::Zero(DU()))) ofU;
+
+  RecordGroup(D dr, const RecordTable<D>& t)
+      : d(dr), table(t), of(hn::IndicesFromVec(d, hn::Zero(DI()))), ofI(hn::IndicesFromVec(DI(), hn::Zero(DI()))),
+        ofU(hn::IndicesFromVec(DU(), hn::Zero(DU()))) {}
+
+  // The lanes' records for the next vector: `which` holds each lane's index in the table.
+  void next(VI which) {
+    of = hn::IndicesFromVec(d, which), ofI = hn::IndicesFromVec(DI(), which);
+    ofU = hn::IndicesFromVec(DU(), hn::BitCast(DU(), which));
+  }
+  V at(const float* row) const { return hn::TableLookupLanes(hn::Load(d, row), of); }
+  VI column() const { return hn::TableLookupLanes(hn::Load(DI(), table.column0), ofI); }
+  VI row() const { return hn::TableLookupLanes(hn::Load(DI(), table.row0), ofI); }
+  V edgeAt(int i, VI dx, VI dy) const {
+    const V offset = hn::ConvertTo(d, dx) * at(table.A[i]) + hn::ConvertTo(d, dy) * at(table.B[i]);
+    return (at(table.high[i]) + offset) + at(table.low[i]);
+  }
+  V invArea() const { return at(table.invArea); }
+  V invW(int k) const { return at(table.invW[k]); }
+  V vertex(int k, int value) const { return at(table.vertex[k][value]); }
+  V flat(int c) const { return at(table.flat[c]); }
+  V step(int axis, int i) const { return at(table.step[axis][i]); }
+  Vec3L<V> dPdu() const { return {at(table.dPdu[0]), at(table.dPdu[1]), at(table.dPdu[2])}; }
+  Vec3L<V> dPdv() const { return {at(table.dPdv[0]), at(table.dPdv[1]), at(table.dPdv[2])}; }
+  auto negate() const {
+    const auto n = hn::TableLookupLanes(hn::Load(DI(), table.negate), ofI);
+    return hn::RebindMask(d, hn::Ne(n, hn::Zero(DI())));
+  }
+  void slots(std::uint32_t* out, hn::Mask<D> shown, std::size_t) const {
+    const auto s = hn::TableLookupLanes(hn::Load(DU(), table.slot), ofU);
+    hn::StoreU(hn::Compress(s, hn::RebindMask(DU(), shown)), DU(), out);
+  }
+};
+#endif
+
 // Where each lane's pixel falls on the textures (texturePoint): its uv, and how uv changes one
 // pixel right (dx) and one up (dy), from the barycentrics moved by the record's steps.
 template <class V>
 struct UvLanes {
   V uv[2], dx[2], dy[2];
 };
-template <class D, class V = hn::VFromD<D>>
-HWY_INLINE UvLanes<V> UvAt(D d, const VisibleLayout& layout, const ShownRecord& rec, const V (&l)[3], const V (&invW)[3],
+template <class R, class V>
+HWY_INLINE UvLanes<V> UvAt(const VisibleLayout& layout, const R& rec, const V (&l)[3], const V (&invW)[3],
                            const V (&p)[3]) {
   const auto uvAt = [&](const V (&w)[3], V (&out)[2]) {
     for (int c = 0; c < 2; ++c)
-      out[c] = Blend(w, hn::Set(d, rec.vertex[0][layout.uv + c]), hn::Set(d, rec.vertex[1][layout.uv + c]),
-                     hn::Set(d, rec.vertex[2][layout.uv + c]));
+      out[c] = Blend(w, rec.vertex(0, layout.uv + c), rec.vertex(1, layout.uv + c), rec.vertex(2, layout.uv + c));
   };
   UvLanes<V> u;
   uvAt(p, u.uv);
   for (int axis = 0; axis < 2; ++axis) {
-    const Real(&step)[3] = axis == 0 ? rec.stepX : rec.stepY;
     V w[3], moved[2];
-    PerspectiveWeights(l[0] + hn::Set(d, step[0]), l[1] + hn::Set(d, step[1]), l[2] + hn::Set(d, step[2]), invW[0],
+    PerspectiveWeights(l[0] + rec.step(axis, 0), l[1] + rec.step(axis, 1), l[2] + rec.step(axis, 2), invW[0],
                        invW[1], invW[2], w);
     uvAt(w, moved);
     V(&delta)[2] = axis == 0 ? u.dx : u.dy;
@@ -74,8 +228,8 @@ HWY_INLINE void TexelLanes(D d, const Texture& texture, const UvLanes<V>& at, V 
 // (front) normal N, the record's ∂P/∂u made orthogonal to it, and the bitangent N × T on the side
 // ∂P/∂v points to; N where that frame or the normal is degenerate.
 template <class D, class V = hn::VFromD<D>>
-HWY_INLINE Vec3L<V> NormalFromMapLanes(D d, const Vec3L<V>& N, const ShownRecord& rec, const V (&texel)[4], Real scale) {
-  const Vec3L<V> dPdu = Broadcast(d, rec.dPdu), dPdv = Broadcast(d, rec.dPdv);
+HWY_INLINE Vec3L<V> NormalFromMapLanes(D d, const Vec3L<V>& N, const Vec3L<V>& dPdu, const Vec3L<V>& dPdv,
+                                       const V (&texel)[4], Real scale) {
   const Vec3L<V> t = dPdu - Dot(dPdu, N) * N;
   const V tLen = Length(t);
   const auto framed = tLen > hn::Zero(d);
@@ -91,72 +245,34 @@ HWY_INLINE Vec3L<V> NormalFromMapLanes(D d, const Vec3L<V>& N, const ShownRecord
   return Select(hn::And(framed, unit), mapped, N);
 }
 
-// gatherShown, its pixels in the widest Real lanes. Their edge values are exact integers, the
-// first pixel's plus dx·256a + dy·256b: with kSplit in float lanes, a multiple of 256 plus the
-// rest (exact while every part stays below 2^31, as SamplesPassIn keeps them), else in double
-// lanes, half a vector at a time, each converted to Real once.
-template <bool kSplit>
-HWY_INLINE void GatherShownIn(const VisibleLayout& layout, const ShownRecord& rec, const PixelRect& rect,
-                              const std::uint32_t* pixels, std::size_t count, VisibleBatch& b) {
-  const TriangleSetup& t = *rec.setup;
+// gatherShown's lanes, `count` pixels (tile indices) in the widest Real lanes, appended to the
+// batch: each lane's record as `rec` gives it (OneRecord, RecordGroup), its record's index in
+// the group from `which` (none for one record). The edge values are exact integers, the record's
+// first pixel's plus dx·256a + dy·256b.
+template <class R>
+HWY_INLINE void GatherLanes(const VisibleLayout& layout, R& rec, const std::uint32_t* pixels, const std::int32_t* which,
+                            std::size_t count, VisibleBatch& b) {
   const hn::ScalableTag<Real> dr;
   const hn::Rebind<std::uint32_t, decltype(dr)> du;
   const hn::Rebind<std::int32_t, decltype(dr)> di;
   using VR = hn::VFromD<decltype(dr)>;
   using VI = hn::VFromD<decltype(di)>;
-  using T = std::conditional_t<kSplit, float, double>;
-  // The first pixel's edge values (split: its multiple of 256, and the rest), and the steps.
-  const int x0 = rect.minX + int(pixels[0] % kTileSize), y0 = rect.minY + int(pixels[0] / kTileSize);
-  const std::int64_t half = kSubpixelOne / 2;
-  T high[3], low[3], A[3], B[3];
-  for (int i = 0; i < 3; ++i) {
-    const std::int64_t e = t.edge[i].at(std::int64_t(x0) * kSubpixelOne + half, std::int64_t(y0) * kSubpixelOne + half);
-    const std::int64_t rest = kSplit ? (e & (kSubpixelOne - 1)) : 0;
-    high[i] = T(e - rest), low[i] = T(rest);
-    A[i] = T(std::int64_t(t.edge[i].a) * kSubpixelOne), B[i] = T(std::int64_t(t.edge[i].b) * kSubpixelOne);
-  }
-  // Edge value i at the lanes' pixels dx, dy from the first one, as Real.
-  const auto edgeAt = [&](int i, VI dx, VI dy) -> VR {
-#if !ILLUM_USE_DOUBLE
-    if constexpr (kSplit) {
-      const VR offset = hn::ConvertTo(dr, dx) * hn::Set(dr, A[i]) + hn::ConvertTo(dr, dy) * hn::Set(dr, B[i]);
-      return (hn::Set(dr, high[i]) + offset) + hn::Set(dr, low[i]);  // a multiple of 256 plus the rest
-    } else
-#endif
-    {
-      const auto exact = [&](auto dd, auto x, auto y) {  // in double lanes
-        return hn::Set(dd, high[i]) + (hn::PromoteTo(dd, x) * hn::Set(dd, A[i]) + hn::PromoteTo(dd, y) * hn::Set(dd, B[i]));
-      };
-#if HWY_TARGET == HWY_SCALAR || ILLUM_USE_DOUBLE
-      const hn::Rebind<double, decltype(dr)> dd;
-      if constexpr (sizeof(Real) == 8) return exact(dd, dx, dy);
-      else return hn::DemoteTo(dr, exact(dd, dx, dy));
-#else
-      const hn::Half<decltype(dr)> dh;
-      const hn::Half<decltype(di)> dih;
-      const hn::Rebind<double, decltype(dh)> dd;
-      const auto lower = hn::DemoteTo(dh, exact(dd, hn::LowerHalf(dih, dx), hn::LowerHalf(dih, dy)));
-      const auto upper = hn::DemoteTo(dh, exact(dd, hn::UpperHalf(dih, dx), hn::UpperHalf(dih, dy)));
-      return hn::Combine(dr, upper, lower);
-#endif
-    }
+  const VR one = hn::Set(dr, Real(1));
+  const auto blend = [&](const VR (&p)[3], int value) {
+    return Blend(p, rec.vertex(0, value), rec.vertex(1, value), rec.vertex(2, value));
   };
-  const VR invArea = hn::Set(dr, t.invArea), one = hn::Set(dr, Real(1));
-  const VR invW[3] = {hn::Set(dr, t.invW[0]), hn::Set(dr, t.invW[1]), hn::Set(dr, t.invW[2])};
-  const auto vertex = [&](int k, int value) { return hn::Set(dr, rec.vertex[k][value]); };
-  const auto blend = [&](const VR (&p)[3], int value) { return Blend(p, vertex(0, value), vertex(1, value), vertex(2, value)); };
-  const auto negate = hn::FirstN(dr, rec.negate ? hn::Lanes(dr) : 0);
-  const auto column0 = hn::Set(di, x0 - rect.minX), row0 = hn::Set(di, y0 - rect.minY);
   const std::size_t lanes = hn::Lanes(dr);
   for (std::size_t i = 0; i < count; i += lanes) {
+    if (which) rec.next(hn::LoadU(di, which + i));
     const auto shown = hn::FirstN(dr, count - i);
     const auto index = hn::LoadU(du, pixels + i);  // (the list has room for a vector past its end)
     const auto indexI = hn::BitCast(di, index);
     static_assert(kTileSize == 64);
-    const VI dx = hn::And(indexI, hn::Set(di, kTileSize - 1)) - column0, dy = hn::ShiftRight<6>(indexI) - row0;
+    const VI dx = hn::And(indexI, hn::Set(di, kTileSize - 1)) - rec.column(), dy = hn::ShiftRight<6>(indexI) - rec.row();
     // The centres' barycentrics, as the rasterizer computes them.
+    const VR invArea = rec.invArea(), invW[3] = {rec.invW(0), rec.invW(1), rec.invW(2)};
     VR l[3];
-    for (int e = 0; e < 3; ++e) l[e] = edgeAt(e, dx, dy) * invArea;
+    for (int e = 0; e < 3; ++e) l[e] = rec.edgeAt(e, dx, dy) * invArea;
     VR p[3];
     PerspectiveWeights(l[0], l[1], l[2], invW[0], invW[1], invW[2], p);
     VR color[4];
@@ -165,7 +281,7 @@ HWY_INLINE void GatherShownIn(const VisibleLayout& layout, const ShownRecord& re
     // and a compressing store to memory is slow on some CPUs.)
     const auto keep = [&](VR v, Real* plane) { hn::StoreU(hn::Compress(v, shown), dr, plane + at); };
     if (layout.shading == Shading::Flat) {
-      for (int c = 0; c < 4; ++c) color[c] = hn::Set(dr, rec.flat[c]);
+      for (int c = 0; c < 4; ++c) color[c] = rec.flat(c);
     } else if (layout.shading == Shading::Gouraud) {
       for (int c = 0; c < 4; ++c) color[c] = blend(p, layout.lit + c);
     } else {
@@ -174,12 +290,12 @@ HWY_INLINE void GatherShownIn(const VisibleLayout& layout, const ShownRecord& re
         keep(blend(p, layout.position + c), b.position[c]);
         n[c] = blend(p, layout.normal + c);
       }
-      UnitNormal(n, negate, unit);
+      UnitNormal(n, rec.negate(), unit);
       for (int c = 0; c < 3; ++c) keep(unit[c], b.normal[c]);
       for (int c = 0; c < 4; ++c) color[c] = layout.color >= 0 ? blend(p, layout.color + c) : one;
     }
     UvLanes<VR> uv;
-    if (layout.uv >= 0) uv = UvAt(dr, layout, rec, l, invW, p);
+    if (layout.uv >= 0) uv = UvAt(layout, rec, l, invW, p);
     if (layout.texture) {
       VR texel[4];
       TexelLanes(dr, *layout.texture, uv, texel);
@@ -207,40 +323,94 @@ HWY_INLINE void GatherShownIn(const VisibleLayout& layout, const ShownRecord& re
         VR n[3], front[3];
         for (int c = 0; c < 3; ++c) n[c] = blend(p, layout.normal + c);
         UnitNormal(n, hn::FirstN(dr, 0), front);
-        const Vec3L<VR> bent = NormalFromMapLanes(dr, Vec3L<VR>{front[0], front[1], front[2]}, rec, texel, maps->normalScale);
+        const Vec3L<VR> bent = NormalFromMapLanes(dr, Vec3L<VR>{front[0], front[1], front[2]}, rec.dPdu(), rec.dPdv(),
+                                                  texel, maps->normalScale);
         const VR out[3] = {bent.x, bent.y, bent.z};
-        for (int c = 0; c < 3; ++c) keep(rec.negate ? hn::Neg(out[c]) : out[c], b.normal[c]);
+        const auto negate = rec.negate();
+        for (int c = 0; c < 3; ++c) keep(hn::IfThenElse(negate, hn::Neg(out[c]), out[c]), b.normal[c]);
       }
     }
     for (int c = 0; c < 4; ++c) keep(color[c], b.color[c]);
     hn::StoreU(index, du, b.pixel + at);
     const std::size_t n = std::min(lanes, count - i);
-    std::fill_n(b.slot + at, n, rec.slot);
+    rec.slots(b.slot + at, shown, n);
     b.count += n;
   }
+}
+
+// Whether every edge value over the record's pixels in the tile, and the parts it is summed from,
+// stay below 2^31 (GatherLanes may then take them in float lanes).
+bool SplitFits(const ShownRecord& rec, const PixelRect& rect) {
+#if HWY_TARGET != HWY_SCALAR && !ILLUM_USE_DOUBLE
+  const TriangleSetup& t = *rec.setup;
+  const int minX = std::max(t.minX, rect.minX), maxX = std::min(t.maxX, rect.maxX);
+  const int minY = std::max(t.minY, rect.minY), maxY = std::min(t.maxY, rect.maxY);
+  const std::int64_t half = kSubpixelOne / 2, limit = (std::int64_t(1) << 31) - 4 * kSubpixelOne;
+  for (const EdgeFunction& e : t.edge) {
+    const std::int64_t a = std::abs(std::int64_t(e.a)), bb = std::abs(std::int64_t(e.b));
+    const std::int64_t first = e.at(std::int64_t(minX) * kSubpixelOne + half, std::int64_t(minY) * kSubpixelOne + half);
+    if (std::abs(first) + 2 * (a * (maxX - minX) + bb * (maxY - minY)) * kSubpixelOne > limit) return false;
+  }
+  return true;
+#else
+  (void)rec, (void)rect;
+  return false;
+#endif
 }
 
 void GatherShown(const VisibleLayout& layout, const ShownRecord& rec, const PixelRect& rect, const std::uint32_t* pixels,
                  std::size_t count, VisibleBatch& b) {
   if (count == 0) return;
+  const hn::ScalableTag<Real> dr;
 #if HWY_TARGET != HWY_SCALAR && !ILLUM_USE_DOUBLE
-  {
-    // Every edge value over the record's pixels in the tile, and the parts it is summed from,
-    // below 2^31.
-    const TriangleSetup& t = *rec.setup;
-    const int minX = std::max(t.minX, rect.minX), maxX = std::min(t.maxX, rect.maxX);
-    const int minY = std::max(t.minY, rect.minY), maxY = std::min(t.maxY, rect.maxY);
-    bool split = true;
-    const std::int64_t half = kSubpixelOne / 2, limit = (std::int64_t(1) << 31) - 4 * kSubpixelOne;
-    for (const EdgeFunction& e : t.edge) {
-      const std::int64_t a = std::abs(std::int64_t(e.a)), bb = std::abs(std::int64_t(e.b));
-      const std::int64_t first = e.at(std::int64_t(minX) * kSubpixelOne + half, std::int64_t(minY) * kSubpixelOne + half);
-      split = split && std::abs(first) + 2 * (a * (maxX - minX) + bb * (maxY - minY)) * kSubpixelOne <= limit;
-    }
-    if (split) return GatherShownIn<true>(layout, rec, rect, pixels, count, b);
+  if (SplitFits(rec, rect)) {
+    OneRecord<decltype(dr), true> one(dr, rec, rect, pixels[0]);
+    return GatherLanes(layout, one, pixels, nullptr, count, b);
   }
 #endif
-  GatherShownIn<false>(layout, rec, rect, pixels, count, b);
+  OneRecord<decltype(dr), false> one(dr, rec, rect, pixels[0]);
+  GatherLanes(layout, one, pixels, nullptr, count, b);
+}
+
+// The small records' pixels, up to a vector's lane count of records sharing the vectors (those
+// whose edge values fit float lanes; any other one by one).
+void GatherShownGroup(const VisibleLayout& layout, const PendingRecords& group, const PixelRect& rect,
+                      VisibleBatch& b) {
+#if HWY_TARGET != HWY_SCALAR && !ILLUM_USE_DOUBLE
+  const hn::ScalableTag<Real> dr;
+  RecordTable<decltype(dr)> table;
+  constexpr std::size_t kRoom = RecordTable<decltype(dr)>::kRecords * PendingRecords::kFewestAlone + 16;
+  HWY_ALIGN std::uint32_t pixels[kRoom];
+  HWY_ALIGN std::int32_t which[kRoom];
+  const std::size_t lanes = hn::Lanes(dr);
+  std::size_t records = 0, count = 0;
+  const auto gather = [&] {
+    // The lanes past the last pixel read a copy of it (and leave nothing in the batch).
+    std::fill_n(pixels + count, lanes, pixels[count - 1]);
+    std::fill_n(which + count, lanes, which[count - 1]);
+    RecordGroup<decltype(dr)> lanesOf(dr, table);
+    GatherLanes(layout, lanesOf, pixels, which, count, b);
+    records = 0, count = 0;
+  };
+  for (std::size_t r = 0; r < group.size; ++r) {
+    const ShownRecord& rec = group.record[r];
+    const std::uint32_t* p = group.pixels[r];
+    const std::size_t n = group.count[r];
+    if (!SplitFits(rec, rect)) {
+      GatherShown(layout, rec, rect, p, n, b);
+      continue;
+    }
+    table.set(records, layout, OneRecord<decltype(dr), true>(dr, rec, rect, p[0]));
+    std::copy_n(p, n, pixels + count);
+    std::fill_n(which + count, n, std::int32_t(records));
+    count += n, ++records;
+    if (records == lanes) gather();
+  }
+  if (records > 0) gather();
+#else
+  for (std::size_t r = 0; r < group.size; ++r)
+    GatherShown(layout, group.record[r], rect, group.pixels[r], group.count[r], b);
+#endif
 }
 
 // The (pixel, record) pairs of a tile, pixel by pixel, each record a pixel's samples show once (in
@@ -390,6 +560,7 @@ HWY_AFTER_NAMESPACE();
 namespace illum {
 
 HWY_EXPORT(GatherShown);
+HWY_EXPORT(GatherShownGroup);
 HWY_EXPORT(FinishVisible);
 HWY_EXPORT(ShownPairs);
 HWY_EXPORT(WriteShown);
@@ -398,6 +569,11 @@ HWY_EXPORT(GroupByRecord);
 void gatherShown(const VisibleLayout& layout, const ShownRecord& record, const PixelRect& rect,
                  const std::uint32_t* pixels, std::size_t count, VisibleBatch& batch) {
   HWY_DYNAMIC_DISPATCH(GatherShown)(layout, record, rect, pixels, count, batch);
+}
+
+void gatherShownGroup(const VisibleLayout& layout, const PendingRecords& group, const PixelRect& rect,
+                      VisibleBatch& batch) {
+  HWY_DYNAMIC_DISPATCH(GatherShownGroup)(layout, group, rect, batch);
 }
 
 void finishVisible(const VisibleLayout& layout, VisibleBatch& batch) {
@@ -466,8 +642,8 @@ void VisibleShader::shade(std::uint32_t slot, const std::uint32_t* pixels, std::
   const DrawRecord& r = *records_[slot];
   const Object& object = target_.scene.objects[r.object];
   const TriangleSetup& t = r.setup;
-  if (b_.count > 0 && r.object != object_) flush();
-  if (b_.count == 0) {
+  if ((b_.count > 0 || pending_.size > 0) && r.object != object_) flush();
+  if (b_.count == 0 && pending_.size == 0) {
     object_ = r.object;
     layout_ = layoutOf(target_.frame, object);
   }
@@ -499,6 +675,15 @@ void VisibleShader::shade(std::uint32_t slot, const std::uint32_t* pixels, std::
     for (int i = 0; i < 3; ++i)
       rec.stepX[i] = Real(t.edge[std::size_t(i)].a) * step, rec.stepY[i] = Real(t.edge[std::size_t(i)].b) * step;
   }
+  if (count < PendingRecords::kFewestAlone) {
+    if (pending_.size == PendingRecords::kRecords) gatherPending();
+    if (b_.count + pending_.pixelCount + count > VisibleBatch::kSize) flush();
+    const std::size_t k = pending_.size++;
+    pending_.record[k] = rec, pending_.pixels[k] = pixels, pending_.count[k] = std::uint32_t(count);
+    pending_.pixelCount += count;
+    return;
+  }
+  gatherPending();
   // In pieces that fit in the batch.
   for (std::size_t done = 0; done < count;) {
     if (b_.count == VisibleBatch::kSize) flush();
@@ -508,7 +693,14 @@ void VisibleShader::shade(std::uint32_t slot, const std::uint32_t* pixels, std::
   }
 }
 
+void VisibleShader::gatherPending() {
+  if (pending_.size == 0) return;
+  gatherShownGroup(layout_, pending_, rect_, b_);
+  pending_.size = 0, pending_.pixelCount = 0;
+}
+
 void VisibleShader::flush() {
+  gatherPending();
   if (b_.count == 0) return;
   const Object& object = target_.scene.objects[object_];
   if (layout_.shading == Shading::Phong) {

@@ -1,5 +1,6 @@
 // The deferred draws' one shade hand-off: record by record, the pixels of the tile that show it
-// (whichever of their samples do), in SIMD lanes with the record's values broadcast: the pixel
+// (whichever of their samples do), in SIMD lanes with the record's values broadcast (or, for
+// records of few pixels, several records' pixels in one vector, each lane its own record's): the pixel
 // centres' barycentrics → perspective-correct weights → the draw's colour (flat, Gouraud's
 // interpolated one, or Phong's surface, lit by shadePoints a batch of the object's pixels at a
 // time) → the texel (texture_lanes-inl.h) → GL_MODULATE → RGBA8, written to every sample that
@@ -94,6 +95,18 @@ struct ShownRecord {
   Vec3 dPdu{0}, dPdv{0};    // a normal map's tangent frame (triangleTangents)
 };
 
+// Records of one object with few pixels each, waiting to be gathered together: their pixels share
+// vectors, each lane looking up its own record's values (a record of ClearCoatTest's normal-mapped
+// spheres shows 3 pixels on average at 1000×600: one record a vector left most lanes empty).
+struct PendingRecords {
+  static constexpr std::size_t kRecords = 16;       // at most, waiting
+  static constexpr std::size_t kFewestAlone = 16;   // a record of this many pixels or more goes alone
+  std::size_t size = 0, pixelCount = 0;
+  ShownRecord record[kRecords];
+  const std::uint32_t* pixels[kRecords];  // each record's (tile indices, with room for a vector past the last)
+  std::uint32_t count[kRecords];
+};
+
 // The shown pixels of some records of one object, structure of arrays: their surface (Phong), the
 // colour (flat: the record's; Gouraud: interpolated; Phong: the vertex colour, or the base colour
 // tinted by the texel), the texel, then the lit colour and the RGBA8 word.
@@ -124,6 +137,9 @@ struct VisibleBatch {
 // finishVisible: after lighting, GL_MODULATE and RGBA8.
 void gatherShown(const VisibleLayout& layout, const ShownRecord& record, const PixelRect& rect,
                  const std::uint32_t* pixels, std::size_t count, VisibleBatch& batch);
+// The same for each of `group`'s records, the batch having room for all their pixels.
+void gatherShownGroup(const VisibleLayout& layout, const PendingRecords& group, const PixelRect& rect,
+                      VisibleBatch& batch);
 void finishVisible(const VisibleLayout& layout, VisibleBatch& batch);
 
 // The (pixel, record) pairs of a tile's winners (`samples` a pixel, kTileSize² pixels), pixel by
@@ -162,6 +178,9 @@ class VisibleShader {
 
  private:
   void shade(std::uint32_t slot, const std::uint32_t* pixels, std::size_t count);
+  // The pending records' pixels into the batch.
+  void gatherPending();
+  // The batch's pixels lit and written (or blended).
   void flush();
   const DrawTarget& target_;
   std::span<const DrawRecord* const> records_;
@@ -170,6 +189,7 @@ class VisibleShader {
   const VisibleSamples& out_;
   std::uint32_t object_ = 0;
   VisibleLayout layout_;
+  PendingRecords pending_;
   bool blending_ = false;
 };
 
