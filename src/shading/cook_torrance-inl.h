@@ -88,8 +88,13 @@ HWY_INLINE void AccumulateCookTorrance(D d, Vec3L<V>& ambientOut, Vec3L<V>& diff
   // Interpolated normals can turn a little away from the viewer: N·V stays just above 0.
   const V NoV = hn::Max(Dot(N, toViewer), hn::Set(d, Real(1e-4)));
   const V NoLlit = hn::ZeroIfNegative(NoL);
-  const V Dist = m.distribution == Microfacet::GGX ? D_GGX(d, NoH, alpha) : D_Beckmann(d, NoH, alpha);
-  const V Vis = V_SmithGGXCorrelated(d, NoV, NoLlit, alpha);
+  // A light of no specular colour (the preview rig's fill) multiplies the lobe by 0: D and Vis,
+  // always finite, are left at 0 without being computed, for the same bits.
+  const bool highlight = kRecord || light.specular != Color3(0);
+  const V Dist = !highlight ? zero
+                 : m.distribution == Microfacet::GGX ? D_GGX(d, NoH, alpha)
+                                                      : D_Beckmann(d, NoH, alpha);
+  const V Vis = highlight ? V_SmithGGXCorrelated(d, NoV, NoLlit, alpha) : zero;
   const V metallic = m.metallic, dielectric = one - metallic;
   const Vec3L<V> f0 = dielectric * m.f0 + metallic * base;
   const Vec3L<V> F = F_Schlick(d, VoH, f0);

@@ -194,9 +194,13 @@ HWY_INLINE void AccumulateGlLight(D d, LightSumsL<V>& sums, const EyeLight& ligh
   const V strength = scale * Fd_LambertCosine(NoL);  // the note's "light strength", Ld's factor
   const Vec3L<V> diffuse = strength * Broadcast(d, light.diffuse);
   const auto lit = NoL > hn::Zero(d);
+  // A light of no specular colour (the preview rig's fill) adds (scale·lobe)·0: the lobe, always
+  // finite, is left at 0 without being computed, for the same bits (0, or NaN where scale is).
+  const bool highlight = kRecord || noteShader || light.specular != Color3(0);
   V lobe = hn::Zero(d);
-  if (model == LightingModel::BlinnPhong && convention == Convention::NoteHalfSum &&
-      (kRecord || !hn::AllFalse(d, lit))) {
+  if (!highlight) {
+  } else if (model == LightingModel::BlinnPhong && convention == Convention::NoteHalfSum &&
+             (kRecord || !hn::AllFalse(d, lit))) {
     const Vec3L<V> H = hn::Set(d, Real(0.5)) * (ls.L + s.toViewer);
     const V NoH = Dot(s.N, H);
     lobe = hn::IfThenElseZero(lit, Fs_BlinnPhong(d, NoH, material.shininess));

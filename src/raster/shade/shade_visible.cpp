@@ -278,8 +278,9 @@ HWY_INLINE void GatherLanes(const VisibleLayout& layout, R& rec, const std::uint
     VR color[4];
     const std::size_t at = b.count;
     // (Compressed in a register and stored whole: the batch has room for a vector past its end,
-    // and a compressing store to memory is slow on some CPUs.)
-    const auto keep = [&](VR v, Real* plane) { hn::StoreU(hn::Compress(v, shown), dr, plane + at); };
+    // and a compressing store to memory is slow on some CPUs. A whole vector needs no compressing.)
+    const bool whole = count - i >= lanes;
+    const auto keep = [&](VR v, Real* plane) { hn::StoreU(whole ? v : hn::Compress(v, shown), dr, plane + at); };
     if (layout.shading == Shading::Flat) {
       for (int c = 0; c < 4; ++c) color[c] = rec.flat(c);
     } else if (layout.shading == Shading::Gouraud) {
