@@ -56,6 +56,7 @@ std::size_t rasterizeSamples(const TriangleSetup& t, const PixelRect& tile, cons
 #include "raster/coverage/tile_raster.h"
 
 #include <algorithm>
+#include <optional>
 #include <cstddef>
 #include <limits>
 #include <type_traits>
@@ -652,7 +653,15 @@ HWY_INLINE std::size_t SamplesPassIn(D d, const TriangleSetup& t, const PixelRec
   const auto z0 = hn::Set(dr, t.z[0]), z1 = hn::Set(dr, t.z[1]), z2 = hn::Set(dr, t.z[2]);
   const auto zero = hn::Zero(dr);
   const std::int64_t half = kSubpixelOne / 2;
-  const RowSpans spans(t, std::span(planes.offsets, std::size_t(samples)), minX, minY);
+  // Narrowing a row costs about what testing two vectors of its samples does: a row of at most
+  // two vectors is tested whole (the tests are exact either way; narrowing only skips vectors).
+  // Measured: spheres_1m_8lights_phong at 4 samples −15 % CPU time, 2CylinderEngine −5 to −8 %
+  // (then narrowing stepped rather than solved per row: 2CylinderEngine −3 %). The spans are
+  // worked out only for such wide bounds (their six divisions were a tenth of a small triangle's
+  // pass).
+  const bool narrowed = maxX - minX + 1 > 2 * pixels;
+  std::optional<RowSpans> spans;
+  if (narrowed) spans.emplace(t, std::span(planes.offsets, std::size_t(samples)), minX, minY);
   // Every pixel centre's edge value differs from the bounds' first one by a multiple of 256
   // (a·256·dx + b·256·dy), so the rest r of that first value is every centre's, and the multiples of
   // 256 step exactly (multiples of 256 below 2^32 in float lanes; integers in double ones): a row's
@@ -678,11 +687,7 @@ HWY_INLINE std::size_t SamplesPassIn(D d, const TriangleSetup& t, const PixelRec
     if (y != minY)
       for (int i = 0; i < 3; ++i) rowHigh[i] = rowHigh[i] + stepY[i];
     int first = minX, last = maxX;
-    // Narrowing a row costs about what testing two vectors of its samples does: a row of at most
-    // two vectors is tested whole (the tests are exact either way; narrowing only skips vectors).
-    // Measured: spheres_1m_8lights_phong at 4 samples −15 % CPU time, 2CylinderEngine −5 to −8 %
-    // (then narrowing stepped rather than solved per row: 2CylinderEngine −3 %).
-    if (last - first + 1 > 2 * pixels && !spans.narrow(t, y, first, last)) continue;
+    if (narrowed && !spans->narrow(t, y, first, last)) continue;
     const int row = (y - tile.minY) * kTileSize - tile.minX;  // tile-local index of (0, y)
     // The edge values at the row's first pixel (each group of pixels on adds a·256·pixels to the
     // multiples of 256), and each vector's.
