@@ -85,7 +85,7 @@ HWY_INLINE Vec3L<V> OctahedralTexel(D d, const ImageLight& light, hn::VFromD<hn:
   Vec3L<V> out;
   V* channels[3] = {&out.x, &out.y, &out.z};
   for (int c = 0; c < 3; ++c) {
-    const float* plane = light.atlas(c);
+    const Real* plane = light.atlas(c);
     *channels[c] = w00 * hn::GatherIndex(d, plane, i00) + w10 * hn::GatherIndex(d, plane, i10) +
                    w01 * hn::GatherIndex(d, plane, i01) + w11 * hn::GatherIndex(d, plane, i11);
   }
@@ -126,8 +126,8 @@ HWY_INLINE void SplitSum(D d, V NoV, V roughness, V& A, V& B) {
   const auto i00 = y0i * hn::Set(di, n) + x0i;
   const auto i10 = i00 + hn::Set(di, 1), i01 = i00 + hn::Set(di, n), i11 = i01 + hn::Set(di, 1);
   const V w00 = (one - fx) * (one - fy), w10 = fx * (one - fy), w01 = (one - fx) * fy, w11 = fx * fy;
-  const float* a = splitSumTable(0);
-  const float* b = splitSumTable(1);
+  const Real* a = splitSumTable(0);
+  const Real* b = splitSumTable(1);
   A = w00 * hn::GatherIndex(d, a, i00) + w10 * hn::GatherIndex(d, a, i10) + w01 * hn::GatherIndex(d, a, i01) +
       w11 * hn::GatherIndex(d, a, i11);
   B = w00 * hn::GatherIndex(d, b, i00) + w10 * hn::GatherIndex(d, b, i10) + w01 * hn::GatherIndex(d, b, i01) +

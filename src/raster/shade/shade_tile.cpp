@@ -129,7 +129,7 @@ std::size_t drawMultisampledTile(const DrawTarget& target, std::span<const DrawR
     bounds.drawnAt(at);
   };
   TinyDrawer<TinyFragment, decltype(writeTiny)> tinyFragments(tiny.fragments, tiles.depth, writeTiny);
-  VertexColors vertexColors;
+  [[maybe_unused]] VertexColors vertexColors;  // (the double build has no Colored route)
   for (std::size_t i = 0; i < records.size(); ++i) {
     fragments += tinyFragments.drawUpTo(i);
     prefetchRecord(records, i + kRecordsAhead);
@@ -206,7 +206,7 @@ std::size_t drawOpaqueTile(const DrawTarget& target, std::span<const DrawRecord*
   TinyDrawer<TinySurface, decltype(keepTiny)> tinySurfaces(tiny.surfaces, depth, keepTiny);
   if (!tiny.surfaces.empty()) anySurface = true;
 #endif
-  VertexColors vertexColors;
+  [[maybe_unused]] VertexColors vertexColors;  // (the double build has no Colored route)
   for (std::size_t i = 0; i < records.size(); ++i) {
     fragments += tinyFragments.drawUpTo(i);
 #if !ILLUM_USE_DOUBLE
