@@ -161,6 +161,8 @@ struct EyeLight {
 
   bool isPositional() const { return position.w != 0; }
   bool isSpot() const { return spotCutoff != 180; }
+  // Whether it lights highlights at all (the preview rig's fill light does not).
+  bool hasSpecular() const { return specular != Color3(0); }
 };
 
 EyeLight toEyeSpace(const Light& light, const Mat4& viewFromWorld);

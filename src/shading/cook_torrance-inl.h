@@ -90,7 +90,7 @@ HWY_INLINE void AccumulateCookTorrance(D d, Vec3L<V>& ambientOut, Vec3L<V>& diff
   const V NoLlit = hn::ZeroIfNegative(NoL);
   // A light of no specular colour (the preview rig's fill) multiplies the lobe by 0: D and Vis,
   // always finite, are left at 0 without being computed, for the same bits.
-  const bool highlight = kRecord || light.specular != Color3(0);
+  const bool highlight = kRecord || light.hasSpecular();
   const V Dist = !highlight ? zero
                  : m.distribution == Microfacet::GGX ? D_GGX(d, NoH, alpha)
                                                       : D_Beckmann(d, NoH, alpha);

@@ -194,18 +194,17 @@ HWY_INLINE void AccumulateGlLight(D d, LightSumsL<V>& sums, const EyeLight& ligh
   const V strength = scale * Fd_LambertCosine(NoL);  // the note's "light strength", Ld's factor
   const Vec3L<V> diffuse = strength * Broadcast(d, light.diffuse);
   const auto lit = NoL > hn::Zero(d);
-  // A light of no specular colour (the preview rig's fill) adds (scale·lobe)·0: the lobe, always
-  // finite, is left at 0 without being computed, for the same bits (0, or NaN where scale is).
-  const bool highlight = kRecord || noteShader || light.specular != Color3(0);
+  // The lobe where some lane is lit (and every time for the report). A light of no specular
+  // colour (the preview rig's fill) adds (scale·lobe)·0: the lobe, always finite, is left at 0
+  // without being computed, for the same bits (0, or NaN where scale is).
+  const bool computed = kRecord || ((noteShader || light.hasSpecular()) && !hn::AllFalse(d, lit));
   V lobe = hn::Zero(d);
-  if (!highlight) {
-  } else if (model == LightingModel::BlinnPhong && convention == Convention::NoteHalfSum &&
-             (kRecord || !hn::AllFalse(d, lit))) {
+  if (model == LightingModel::BlinnPhong && convention == Convention::NoteHalfSum && computed) {
     const Vec3L<V> H = hn::Set(d, Real(0.5)) * (ls.L + s.toViewer);
     const V NoH = Dot(s.N, H);
     lobe = hn::IfThenElseZero(lit, Fs_BlinnPhong(d, NoH, material.shininess));
     if constexpr (kRecord) record->H = Lane0(H), record->NoH = hn::GetLane(NoH);
-  } else if (model == LightingModel::BlinnPhong && (kRecord || !hn::AllFalse(d, lit))) {
+  } else if (model == LightingModel::BlinnPhong && computed) {
     const Vec3L<V> H = ls.L + s.toViewer;
     const V len = Length(H);
     // L = −V (up to rounding) leaves H undefined; illum takes N·H = 0 (so only 0^0 = 1 survives).
@@ -217,7 +216,7 @@ HWY_INLINE void AccumulateGlLight(D d, LightSumsL<V>& sums, const EyeLight& ligh
       record->H = hn::GetLane(len) > Real(1e-6) ? Lane0(H / safeLen) : Vec3(0);
       record->NoH = hn::GetLane(NoH);
     }
-  } else if (model == LightingModel::Phong && (kRecord || !hn::AllFalse(d, lit))) {
+  } else if (model == LightingModel::Phong && computed) {
     const Vec3L<V> R = (hn::Set(d, Real(2)) * NoL) * s.N - ls.L;
     const V RoV = Dot(R, s.toViewer);
     lobe = hn::IfThenElseZero(lit, Fs_Phong(d, RoV, material.shininess));

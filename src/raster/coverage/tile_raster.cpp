@@ -56,9 +56,9 @@ std::size_t rasterizeSamples(const TriangleSetup& t, const PixelRect& tile, cons
 #include "raster/coverage/tile_raster.h"
 
 #include <algorithm>
-#include <optional>
 #include <cstddef>
 #include <limits>
+#include <optional>
 #include <type_traits>
 
 HWY_BEFORE_NAMESPACE();
