@@ -32,10 +32,11 @@ struct LitScratch {
   // for the lanes past the last sample.
   static constexpr int kPixelBits = 11;
   static constexpr std::uint32_t kSpareKey = std::uint32_t(TinyBatchLanes::kCapacity) << kPixelBits;
-  alignas(64) float position[3][kRoom], normal[3][kRoom], depth[kRoom];
+  // Per covered sample: its pixel centre's barycentrics, depth, tag and key.
+  alignas(64) float weight[3][kRoom], depth[kRoom];
   alignas(64) std::uint32_t tag[kRoom], key[kRoom];
-  // The pixels lit (one sample each): their surface, key and colour.
-  alignas(64) float litPosition[3][kRoom], litNormal[3][kRoom];
+  // The pixels lit (one sample each): their centre's barycentrics, surface, key and colour.
+  alignas(64) float litWeight[3][kRoom], litPosition[3][kRoom], litNormal[3][kRoom];
   alignas(64) std::uint32_t litKey[kRoom], owner[kRoom], rgba[kRoom];
   // Per key: first some sample of it (the one lit), then its place among the lit pixels. Only
   // keys written in the same batch are read, so it is never cleared.
@@ -45,6 +46,16 @@ struct LitScratch {
 // A row of the batch's lanes that holds each triangle's place in it.
 alignas(64) inline constexpr std::uint32_t kTriangleInBatch[TinyBatchLanes::kCapacity] = {0, 1, 2,  3,  4,  5,  6,  7,
                                                                                         8, 9, 10, 11, 12, 13, 14, 15};
+
+// Each lane's value of its triangle (0 .. kCapacity − 1) in a row of the batch's lanes: one
+// permute where a vector holds the whole row, else a gather.
+template <class D, class VI>
+HWY_INLINE hn::VFromD<D> LookUpTriangle(D d, const float* row, VI triangle) {
+  if constexpr (hn::MaxLanes(D()) == TinyBatchLanes::kCapacity)
+    return hn::TableLookupLanes(hn::LoadU(d, row), hn::IndicesFromVec(d, triangle));
+  else
+    return hn::GatherIndex(d, row, triangle);
+}
 
 // The same covered samples as CoverTinyBatch's (Gouraud's), each coloured by Phong's lighting at
 // its pixel's centre: the surface there as CoverTinySurfaceBatch has it, lit by shadeOwnedPoints
@@ -62,17 +73,10 @@ std::size_t CoverTinyLitBatch(const TinyBatchLanes& b, std::uint32_t members, co
   if (!scratch) scratch.reset(new LitScratch);
   LitScratch& s = *scratch;
   const int sampleShift = __builtin_ctz(unsigned(b.samples));
+  // The covered samples, each with its pixel centre's barycentrics (a pixel's samples share them).
   const std::size_t n = CoverGroups<true>(
       b, members, covered, [&](std::size_t at, int, const auto& of, VF l0, VF l1, VF l2, VF z, VU tag) {
-        VF p[3];
-        PerspectiveWeights(l0, l1, l2, of(b.invW[0]), of(b.invW[1]), of(b.invW[2]), p);
-        VF n[3], normal[3];
-        for (int c = 0; c < 3; ++c) {
-          hn::Store(Blend(p, of(b.position[c][0]), of(b.position[c][1]), of(b.position[c][2])), df, s.position[c] + at);
-          n[c] = Blend(p, of(b.normal[c][0]), of(b.normal[c][1]), of(b.normal[c][2]));
-        }
-        UnitNormal(n, of(b.negate) != hn::Zero(df), normal);
-        for (int c = 0; c < 3; ++c) hn::Store(normal[c], df, s.normal[c] + at);
+        hn::Store(l0, df, s.weight[0] + at), hn::Store(l1, df, s.weight[1] + at), hn::Store(l2, df, s.weight[2] + at);
         hn::Store(z, df, s.depth + at);
         hn::Store(tag, du, s.tag + at);
         const VU pixel = hn::ShiftRightSame(hn::Sub(tag, of(b.firstTag)), sampleShift);
@@ -93,21 +97,33 @@ std::size_t CoverTinyLitBatch(const TinyBatchLanes& b, std::uint32_t members, co
     const VU key = hn::LoadU(du, s.key + f);
     const auto named = hn::And(hn::GatherIndex(du, s.of, indexOf(key)) == countUp(f), hn::FirstN(du, n - f));
     const auto namedF = hn::RebindMask(df, named);
-    for (int c = 0; c < 3; ++c) {
-      hn::CompressStore(hn::LoadU(df, s.position[c] + f), namedF, df, s.litPosition[c] + lit);
-      hn::CompressStore(hn::LoadU(df, s.normal[c] + f), namedF, df, s.litNormal[c] + lit);
-    }
+    for (int c = 0; c < 3; ++c) hn::CompressStore(hn::LoadU(df, s.weight[c] + f), namedF, df, s.litWeight[c] + lit);
     lit += hn::CompressStore(key, named, du, s.litKey + lit);
+  }
+  // Whole vectors of one owner: the last one filled up with copies of the last pixel lit.
+  const std::size_t whole = (lit + lanes - 1) / lanes * lanes;
+  for (int c = 0; c < 3; ++c) std::fill(s.litWeight[c] + lit, s.litWeight[c] + whole, s.litWeight[c][lit - 1]);
+  std::fill(s.litKey + lit, s.litKey + whole, s.litKey[lit - 1]);
+  // The surface at each lit pixel's centre, as CoverTinySurfaceBatch has it: computed here, once a
+  // pixel, rather than for each of its covered samples.
+  for (std::size_t u = 0; u < whole; u += lanes) {
+    const auto triangle = hn::BitCast(di, hn::ShiftRight<LitScratch::kPixelBits>(hn::LoadU(du, s.litKey + u)));
+    const auto of = [&](const float* row) { return LookUpTriangle(df, row, triangle); };
+    const VF l0 = hn::LoadU(df, s.litWeight[0] + u), l1 = hn::LoadU(df, s.litWeight[1] + u);
+    const VF l2 = hn::LoadU(df, s.litWeight[2] + u);
+    VF p[3];
+    PerspectiveWeights(l0, l1, l2, of(b.invW[0]), of(b.invW[1]), of(b.invW[2]), p);
+    VF normal[3], unit[3];
+    for (int c = 0; c < 3; ++c) {
+      hn::StoreU(Blend(p, of(b.position[c][0]), of(b.position[c][1]), of(b.position[c][2])), df, s.litPosition[c] + u);
+      normal[c] = Blend(p, of(b.normal[c][0]), of(b.normal[c][1]), of(b.normal[c][2]));
+    }
+    UnitNormal(normal, of(b.negate) != hn::Zero(df), unit);
+    for (int c = 0; c < 3; ++c) hn::StoreU(unit[c], df, s.litNormal[c] + u);
   }
   hn::StoreU(spare, du, s.litKey + lit);
   for (std::size_t u = 0; u < lit; u += lanes) hn::ScatterIndex(countUp(u), du, s.of, indexOf(hn::LoadU(du, s.litKey + u)));
   s.of[LitScratch::kSpareKey] = 0;  // the lanes past the last sample take the first colour
-  // Whole vectors of one owner: the last one filled up with copies of the last pixel lit.
-  const std::size_t whole = (lit + lanes - 1) / lanes * lanes;
-  for (int c = 0; c < 3; ++c) {
-    std::fill(s.litPosition[c] + lit, s.litPosition[c] + whole, s.litPosition[c][lit - 1]);
-    std::fill(s.litNormal[c] + lit, s.litNormal[c] + whole, s.litNormal[c][lit - 1]);
-  }
   std::fill_n(s.owner, whole, 0u);
   SurfacePoints points;
   points.count = whole;
