@@ -28,6 +28,7 @@ class DepthBounds {
   // A tile's depth plane, just cleared or in any state: every block is worked out when asked.
   DepthBounds(const Real* depth, int samples, const PixelRect& tile) {
     s_.depth = depth, s_.samples = samples, s_.tile = tile;
+    sampleShift_ = __builtin_ctz(unsigned(samples));
     std::fill_n(s_.stale, kBlocks, std::uint16_t(~0u));
   }
 
@@ -38,9 +39,10 @@ class DepthBounds {
   void drawn() {
     for (int by = s_.asked.minY; by <= s_.asked.maxY; ++by) s_.stale[by] |= s_.asked.columns;
   }
-  // Tile-local sample `at` (pixel·samples + sample) changed its depth.
+  // Tile-local sample `at` (pixel·samples + sample) changed its depth. (A shift, not a division:
+  // this is asked for every tiny fragment that passes, and samples is a power of two.)
   void drawnAt(std::uint32_t at) {
-    const std::uint32_t pixel = at / std::uint32_t(s_.samples);
+    const std::uint32_t pixel = at >> sampleShift_;
     s_.stale[pixel / kTileSize / kBlock] |= std::uint16_t(1u << (pixel % kTileSize / kBlock));
   }
 
@@ -61,6 +63,7 @@ class DepthBounds {
 
  private:
   State s_;
+  int sampleShift_;  // log2 of the samples per pixel
 };
 
 }  // namespace illum

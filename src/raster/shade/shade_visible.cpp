@@ -459,7 +459,7 @@ std::size_t ShownPairs(const std::uint32_t* winners, int samples, std::uint32_t*
     const auto agree = hn::Eq(w, hn::TableLookupLanes(w, first));
     if (hn::AllTrue(du, agree)) {  // every pixel's samples show one record (or none): its first's
       const auto some = hn::And(leads, hn::Ne(w, none));
-      hn::StoreU(hn::Compress(lanePixel + hn::Set(du, std::uint32_t(i / samples)), some), du, pixel + n);
+      hn::StoreU(hn::Compress(lanePixel + hn::Set(du, std::uint32_t(i >> shift)), some), du, pixel + n);
       hn::StoreU(hn::Compress(w, some), du, slot + n);
       n += hn::CountTrue(du, some);
       continue;
@@ -473,7 +473,7 @@ std::size_t ShownPairs(const std::uint32_t* winners, int samples, std::uint32_t*
       const auto firstFew = hn::Lt(sampleOf, hn::Set(du, std::uint32_t(k)));  // no sample k back
       fresh = hn::And(fresh, hn::Or(firstFew, hn::Ne(w, earlier)));
     }
-    hn::StoreU(hn::Compress(lanePixel + hn::Set(du, std::uint32_t(i / samples)), fresh), du, pixel + n);
+    hn::StoreU(hn::Compress(lanePixel + hn::Set(du, std::uint32_t(i >> shift)), fresh), du, pixel + n);
     hn::StoreU(hn::Compress(w, fresh), du, slot + n);
     n += hn::CountTrue(du, fresh);
   }
