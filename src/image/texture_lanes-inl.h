@@ -4,7 +4,7 @@
 // lane's texel is the bits Texture::sample gives (it takes its mip level from MipLevelLanes, one
 // lane). Texel fetches are the cost: on AVX-512 the decode table is read from registers rather
 // than gathered (by byte permutes where the CPU has VBMI: linear bytes too, without a division), a
-// row's two texels are one read, and an opaque texture's alpha is not read.
+// row's two texels are one read (gather_pairs-inl.h), and an opaque texture's alpha is not read.
 
 #if defined(ILLUM_IMAGE_TEXTURE_LANES_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef ILLUM_IMAGE_TEXTURE_LANES_INL_H_
@@ -18,6 +18,7 @@
 #include <illum/texture.h>
 
 #include "image/texel_lookup.h"
+#include "math/gather_pairs-inl.h"
 
 #include <cstdint>
 
@@ -46,18 +47,6 @@ struct TableRegisters {
     return hn::Vec512<float>{_mm512_mask_blend_ps(b7, r[0], r[1])};
   }
 };
-
-// The words at index and index + 1 of each lane (texels x and x + 1 of a row), as eight-byte
-// gathers, half as many elements as two word gathers.
-HWY_INLINE void WordPairs(const std::uint32_t* words, hn::Vec512<std::int32_t> index, hn::Vec512<std::int32_t>& first,
-                          hn::Vec512<std::int32_t>& second) {
-  const __m512i low = _mm512_i32gather_epi64(_mm512_castsi512_si256(index.raw), words, 4);
-  const __m512i high = _mm512_i32gather_epi64(_mm512_extracti64x4_epi64(index.raw, 1), words, 4);
-  const __m512i even = _mm512_set_epi32(30, 28, 26, 24, 22, 20, 18, 16, 14, 12, 10, 8, 6, 4, 2, 0);
-  const __m512i odd = _mm512_set_epi32(31, 29, 27, 25, 23, 21, 19, 17, 15, 13, 11, 9, 7, 5, 3, 1);
-  first = hn::Vec512<std::int32_t>{_mm512_permutex2var_epi32(low, even, high)};
-  second = hn::Vec512<std::int32_t>{_mm512_permutex2var_epi32(low, odd, high)};
-}
 
 // The three colour channels of `count` vectors of 16 RGBA8 words, each channel's byte looked up in
 // a 256-entry float table held as four planes of bytes (Texture::colorTableBytes) with AVX-512
@@ -218,8 +207,9 @@ HWY_INLINE void SampleLevelLanes(D d, const Texture& texture, int levelIndex, V 
   // Where every lane's right texel is its left one's neighbour in memory (not across a wrap or a
   // clamped edge), a row's two texels are one eight-byte read.
   if (width > 1 && hn::AllTrue(di, hn::Or(hn::Not(activeI), x1 == x0 + hn::Set(di, 1)))) {
-    WordPairs(words, hn::IfThenElseZero(activeI, r0 + x0), w00, w10);
-    WordPairs(words, hn::IfThenElseZero(activeI, r1 + x0), w01, w11);
+    const auto* signedWords = reinterpret_cast<const std::int32_t*>(words);
+    GatherPairs(di, signedWords, hn::IfThenElseZero(activeI, r0 + x0), w00, w10);
+    GatherPairs(di, signedWords, hn::IfThenElseZero(activeI, r1 + x0), w01, w11);
   } else
 #endif
   {

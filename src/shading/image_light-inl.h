@@ -11,6 +11,7 @@
 #define ILLUM_SHADING_IMAGE_LIGHT_INL_H_
 #endif
 
+#include "math/gather_pairs-inl.h"
 #include "shading/image_light.h"
 #include "shading/lane_math-inl.h"
 
@@ -61,13 +62,18 @@ HWY_INLINE void OctahedralUv(D d, const Vec3L<V>& dir, V& u, V& v) {
 }
 
 // One level's bilinear texel at (u, v), each lane at its own level (size and offset in the atlas),
-// edges clamped.
+// edges clamped. Most surfaces have one roughness, so one level: its size and offset are then
+// read once, not gathered; and away from the level's edges (most lanes, most often) a row's two
+// texels are neighbours in memory, read as pairs (gather_pairs-inl.h).
 template <class D, class V = hn::VFromD<D>>
 HWY_INLINE Vec3L<V> OctahedralTexel(D d, const ImageLight& light, hn::VFromD<hn::RebindToSigned<D>> level, V u, V v) {
   const hn::RebindToSigned<D> di;
   using VI = hn::VFromD<decltype(di)>;
-  const VI size = hn::GatherIndex(di, light.levelSizes(), level);
-  const VI offset = hn::GatherIndex(di, light.levelOffsets(), level);
+  const int first = int(hn::GetLane(level));
+  const bool oneLevel = hn::AllTrue(di, level == hn::Set(di, first));
+  const VI size = oneLevel ? hn::Set(di, light.levelSizes()[first]) : hn::GatherIndex(di, light.levelSizes(), level);
+  const VI offset =
+      oneLevel ? hn::Set(di, light.levelOffsets()[first]) : hn::GatherIndex(di, light.levelOffsets(), level);
   const V sizeF = hn::ConvertTo(d, size), half = hn::Set(d, Real(0.5));
   // Clamped in floats first, so that no lane's index can leave its level (a NaN direction too).
   const V x = hn::Min(hn::Max(u * sizeF - half, hn::Set(d, Real(-1))), sizeF);
@@ -80,14 +86,22 @@ HWY_INLINE Vec3L<V> OctahedralTexel(D d, const ImageLight& light, hn::VFromD<hn:
   const VI ya = hn::Min(hn::Max(y0i, zero), last), yb = hn::Min(hn::Max(y0i + oneI, zero), last);
   const VI rowA = offset + ya * size, rowB = offset + yb * size;
   const VI i00 = rowA + xa, i10 = rowA + xb, i01 = rowB + xa, i11 = rowB + xb;
+  const bool pairs = hn::AllTrue(di, xb == xa + oneI);
   const V one = hn::Set(d, Real(1));
   const V w00 = (one - fx) * (one - fy), w10 = fx * (one - fy), w01 = (one - fx) * fy, w11 = fx * fy;
   Vec3L<V> out;
   V* channels[3] = {&out.x, &out.y, &out.z};
   for (int c = 0; c < 3; ++c) {
     const Real* plane = light.atlas(c);
-    *channels[c] = w00 * hn::GatherIndex(d, plane, i00) + w10 * hn::GatherIndex(d, plane, i10) +
-                   w01 * hn::GatherIndex(d, plane, i01) + w11 * hn::GatherIndex(d, plane, i11);
+    V t00, t10, t01, t11;
+    if (pairs) {
+      GatherPairs(d, plane, i00, t00, t10);
+      GatherPairs(d, plane, i01, t01, t11);
+    } else {
+      t00 = hn::GatherIndex(d, plane, i00), t10 = hn::GatherIndex(d, plane, i10);
+      t01 = hn::GatherIndex(d, plane, i01), t11 = hn::GatherIndex(d, plane, i11);
+    }
+    *channels[c] = w00 * t00 + w10 * t10 + w01 * t01 + w11 * t11;
   }
   return out;
 }
@@ -124,14 +138,27 @@ HWY_INLINE void SplitSum(D d, V NoV, V roughness, V& A, V& B) {
   const auto last = hn::Set(di, n - 2), none = hn::Zero(di);
   const auto x0i = hn::Min(hn::Max(hn::ConvertTo(di, x0f), none), last), y0i = hn::Min(hn::Max(hn::ConvertTo(di, y0f), none), last);
   const auto i00 = y0i * hn::Set(di, n) + x0i;
-  const auto i10 = i00 + hn::Set(di, 1), i01 = i00 + hn::Set(di, n), i11 = i01 + hn::Set(di, 1);
+  const auto i01 = i00 + hn::Set(di, n);
   const V w00 = (one - fx) * (one - fy), w10 = fx * (one - fy), w01 = (one - fx) * fy, w11 = fx * fy;
-  const Real* a = splitSumTable(0);
-  const Real* b = splitSumTable(1);
-  A = w00 * hn::GatherIndex(d, a, i00) + w10 * hn::GatherIndex(d, a, i10) + w01 * hn::GatherIndex(d, a, i01) +
-      w11 * hn::GatherIndex(d, a, i11);
-  B = w00 * hn::GatherIndex(d, b, i00) + w10 * hn::GatherIndex(d, b, i10) + w01 * hn::GatherIndex(d, b, i01) +
-      w11 * hn::GatherIndex(d, b, i11);
+  // Entries x0 and x0 + 1 of rows y0 and y0 + 1 (x0 stops a column short of the last). With one
+  // roughness in every lane (a surface without a roughness map) the two rows are the same for
+  // every lane, read from registers.
+  static_assert(n == kShortRow);
+  const int row = int(hn::GetLane(y0i));
+  const bool oneRow = hn::AllTrue(di, y0i == hn::Set(di, row));
+  const auto read = [&](const Real* table) {
+    V t00, t10, t01, t11;
+    if (oneRow) {
+      ShortRowPairs(d, table + row * n, x0i, t00, t10);
+      ShortRowPairs(d, table + (row + 1) * n, x0i, t01, t11);
+    } else {
+      GatherPairs(d, table, i00, t00, t10);
+      GatherPairs(d, table, i01, t01, t11);
+    }
+    return w00 * t00 + w10 * t10 + w01 * t01 + w11 * t11;
+  };
+  A = read(splitSumTable(0));
+  B = read(splitSumTable(1));
 }
 
 }  // namespace illum::HWY_NAMESPACE
