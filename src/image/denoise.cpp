@@ -19,6 +19,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <vector>
 
 #if HWY_ONCE
 namespace illum {
@@ -28,44 +29,19 @@ using namespace denoising;
 HWY_EXPORT(FilterRows);
 HWY_EXPORT(LuminanceRows);
 HWY_EXPORT(FitRows);
+HWY_EXPORT(OutlierRows);
 
 namespace {
 
-// Rows [y0, y1) of the first pass's input: a pixel whose luminance l exceeds the largest of its
-// 8 neighbours' m (in the picture) by less than kOutlierDeviations standard errors of its mean
-// (the blurred variance) gets the scale m / l in `scale` (else 1): such a pixel is most likely one
-// rare bright path among its samples (its own variance is what that path made it), which the
-// colour term would keep apart from its neighbours, where a converged small highlight stands out
-// by far more than its noise and stays. A pixel that hit a surface is compared with the neighbours
-// that hit one, a pixel that hit nothing with those that hit nothing, and one that has none of its
-// kind around it is kept: a lone object a pixel wide on the background is not noise of the
-// background's.
-void outlierScales(const Layout& layout, const Planes& first, const Guides& guides, float* scale, int y0, int y1) {
-  const auto hit = [&](std::size_t at) {
-    float n2 = 0;
-    for (int k = 0; k < 3; ++k) n2 += guides.normal[k].data()[at] * guides.normal[k].data()[at];
-    return n2 > 0;
-  };
-  for (int y = y0; y < y1; ++y)
-    for (int x = 0; x < layout.width; ++x) {
-      const std::size_t at = layout.at(x, y);
-      const bool surface = hit(at);
-      float brightest = 0;
-      bool compared = false;
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-          const int qx = x + dx, qy = y + dy;
-          if ((dx == 0 && dy == 0) || qx < 0 || qy < 0 || qx >= layout.width || qy >= layout.height) continue;
-          const std::size_t q = layout.at(qx, qy);
-          if (hit(q) != surface) continue;
-          brightest = std::max(brightest, first.luminance.data()[q]);
-          compared = true;
-        }
-      const float l = first.luminance.data()[at], deviation = std::sqrt(first.variance.data()[at]);
-      scale[at] = compared && l > brightest && l - brightest < kOutlierDeviations * deviation ? brightest / l : 1.0f;
-    }
-}
-
+// The outliers: a pixel whose luminance l exceeds the largest of its 8 neighbours' m (in the
+// picture) by less than kOutlierDeviations standard errors of its mean (the blurred variance) gets
+// the scale m / l (else 1; OutlierRows, denoise_passes-inl.h): such a pixel is most likely one rare
+// bright path among its samples (its own variance is what that path made it), which the colour
+// term would keep apart from its neighbours, where a converged small highlight stands out by far
+// more than its noise and stays. A pixel that hit a surface is compared with the neighbours that
+// hit one, a pixel that hit nothing with those that hit nothing, and one that has none of its kind
+// around it is kept: a lone object a pixel wide on the background is not noise of the background's.
+//
 // The scales applied (after every pixel has been compared with its neighbours as they came): to
 // the colour the passes filter, its luminance and the radiance the fit reads.
 void dimOutliers(const Layout& layout, const float* scale, Planes& first, Fit& fit, int y0, int y1) {
@@ -79,16 +55,17 @@ void dimOutliers(const Layout& layout, const float* scale, Planes& first, Fit& f
     }
 }
 
-}  // namespace
+constexpr std::size_t kArenaPlanes = 2 * 5 + 6 + 3;  // the passes' two sets, the guides, the fit's input
 
-void denoise(const DenoiseInput& in, std::span<float> out) {
+Layout layoutOf(int width, int height) { return Layout{width, height, width + 2 * kPad + kVectorSlack}; }
+
+// The filter, its planes in `arena` (as big as the picture's layout needs, or bigger).
+void denoiseIn(PlaneArena& arena, const DenoiseInput& in, std::span<float> out) {
   const int w = in.width, h = in.height;
-  const Layout layout{w, h, w + 2 * kPad + kVectorSlack};
-  const std::size_t size = layout.size();
+  const Layout layout = layoutOf(w, h);
   Planes planes[2];
   Guides guides;
   Fit fit;
-  PlaneArena arena(2 * 5 + 6 + 3, size);
   std::size_t next = 0;
   for (Planes& p : planes)
     for (Plane* plane : {&p.color[0], &p.color[1], &p.color[2], &p.luminance, &p.variance}) plane->values = arena.plane(next++);
@@ -153,7 +130,7 @@ void denoise(const DenoiseInput& in, std::span<float> out) {
   // The outliers' scales go to a plane the first pass has yet to write.
   float* scale = planes[1].luminance.data();
   tbb::parallel_for(tbb::blocked_range<int>(0, h, 8), [&](const tbb::blocked_range<int>& rows) {
-    outlierScales(layout, planes[0], guides, scale, rows.begin(), rows.end());
+    HWY_DYNAMIC_DISPATCH(OutlierRows)(layout, planes[0], guides, scale, rows.begin(), rows.end());
   });
   tbb::parallel_for(tbb::blocked_range<int>(0, h, 8), [&](const tbb::blocked_range<int>& rows) {
     dimOutliers(layout, scale, planes[0], fit, rows.begin(), rows.end());
@@ -179,6 +156,38 @@ void denoise(const DenoiseInput& in, std::span<float> out) {
         out[4 * i + 3] = in.color[4 * i + 3];
       }
   });
+}
+
+}  // namespace
+
+void denoise(const DenoiseInput& in, std::span<float> out) {
+  PlaneArena arena(kArenaPlanes, layoutOf(in.width, in.height).size());
+  denoiseIn(arena, in, out);
+}
+
+void denoiseLayers(const DenoiseInput& surfaces, const DenoiseInput& reflections, std::span<float> out) {
+  const int w = surfaces.width, h = surfaces.height;
+  PlaneArena arena(kArenaPlanes, layoutOf(w, h).size());  // one for both: its pages are touched once
+  denoiseIn(arena, surfaces, out);
+  // The reflections over the rows that have any (a normal: what a mirror saw); elsewhere they are
+  // 0, and filtering them would cost as much as the surfaces.
+  const std::size_t width = std::size_t(w);
+  const auto reflects = [&](int y) {
+    const auto row = reflections.normal.begin() + std::ptrdiff_t(3 * std::size_t(y) * width);
+    return std::any_of(row, row + std::ptrdiff_t(3 * width), [](float n) { return n != 0; });
+  };
+  int y0 = 0, y1 = h;
+  while (y0 < y1 && !reflects(y0)) ++y0;
+  while (y1 > y0 && !reflects(y1 - 1)) --y1;
+  if (y0 == y1) return;
+  const std::size_t first = std::size_t(y0) * width, pixels = std::size_t(y1 - y0) * width;
+  const DenoiseInput rows{w, y1 - y0, reflections.color.subspan(4 * first, 4 * pixels),
+                          reflections.albedo.subspan(3 * first, 3 * pixels), reflections.normal.subspan(3 * first, 3 * pixels),
+                          reflections.variance.subspan(first, pixels)};
+  std::vector<float> filtered(4 * pixels);
+  denoiseIn(arena, rows, filtered);
+  for (std::size_t i = 0; i < filtered.size(); ++i)
+    if (i % 4 != 3) out[4 * first + i] += filtered[i];
 }
 
 }  // namespace illum

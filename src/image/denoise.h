@@ -48,4 +48,10 @@ struct DenoiseInput {
 // The filtered radiance, RGBA per pixel into `out` (width·height·4 floats), alpha as it came.
 void denoise(const DenoiseInput& in, std::span<float> out);
 
+// A picture in two layers, each filtered by its own guides and their sum written into `out`: the
+// surfaces the paths first met, and what part mirrors there reflected (guided by what the mirrors
+// saw, as the path tracer splits them: path_tracer.h's PathFeatures; 0 with a 0 normal where a
+// pixel has no reflection). Its alpha is the surfaces'.
+void denoiseLayers(const DenoiseInput& surfaces, const DenoiseInput& reflections, std::span<float> out);
+
 }  // namespace illum

@@ -101,6 +101,47 @@ void FilterRows(const Layout& layout, const Guides& guides, const Planes& in, Pl
     }
 }
 
+// Rows [y0, y1) of the outliers' scales (denoise.cpp's outlierScales says which pixels): a
+// pixel's kind is a miss (normal 0), a hit, or the padding around the picture (kFarNormal, never a
+// pixel's neighbour of its kind); its luminance is compared with the brightest of its 8 neighbours
+// of its kind. The same bits as one pixel at a time: maxima, comparisons, a division and a square
+// root, all exact.
+void OutlierRows(const Layout& layout, const Planes& first, const Guides& guides, float* scale, int y0, int y1) {
+  const hn::ScalableTag<float> d;
+  using V = hn::VFromD<decltype(d)>;
+  const int lanes = int(hn::Lanes(d));
+  const std::ptrdiff_t stride = layout.stride;
+  const auto kind = [&](std::size_t at) {  // 0: a miss, 1: a hit, 2: the padding
+    V n2 = hn::Zero(d);
+    for (int k = 0; k < 3; ++k) {
+      const V n = hn::LoadU(d, guides.normal[k].data() + at);
+      n2 = hn::Add(n2, hn::Mul(n, n));
+    }
+    return hn::Add(hn::IfThenElseZero(hn::Gt(n2, hn::Zero(d)), hn::Set(d, 1.0f)),
+                   hn::IfThenElseZero(hn::Gt(n2, hn::Set(d, 1e19f)), hn::Set(d, 1.0f)));
+  };
+  for (int y = y0; y < y1; ++y)
+    for (int x = 0; x < layout.width; x += lanes) {  // the last vector's rest lands in the padding
+      const std::size_t p = layout.at(x, y);
+      const V own = kind(p);
+      V brightest = hn::Zero(d);
+      auto compared = hn::FirstN(d, 0);
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          if (dx == 0 && dy == 0) continue;
+          const std::size_t q = std::size_t(std::ptrdiff_t(p) + dy * stride + dx);
+          const auto same = hn::Eq(kind(q), own);
+          brightest = hn::IfThenElse(same, hn::Max(brightest, hn::LoadU(d, first.luminance.data() + q)), brightest);
+          compared = hn::Or(compared, same);
+        }
+      const V l = hn::LoadU(d, first.luminance.data() + p);
+      const V deviation = hn::Sqrt(hn::LoadU(d, first.variance.data() + p));
+      const auto dims = hn::And(hn::And(compared, hn::Gt(l, brightest)),
+                                hn::Lt(hn::Sub(l, brightest), hn::Mul(hn::Set(d, kOutlierDeviations), deviation)));
+      hn::StoreU(hn::IfThenElse(dims, hn::Div(brightest, l), hn::Set(d, 1.0f)), d, scale + p);
+    }
+}
+
 // The luminance plane of the first pass's input, rows [y0, y1), as FilterRows writes the others'.
 void LuminanceRows(const Layout& layout, Planes& planes, int y0, int y1) {
   const hn::ScalableTag<float> d;

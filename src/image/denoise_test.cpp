@@ -186,6 +186,59 @@ TEST(Denoise, KeepsTextureDetailThroughTheAlbedo) {
   for (std::size_t i = 0; i < p.variance.size(); ++i) EXPECT_NEAR(out[4 * i], p.color[4 * i], 1e-5f) << i;
 }
 
+TEST(Denoise, AReflectionFilteredByItsOwnGuidesKeepsItsEdge) {
+  // A polished floor (one albedo, one normal: its guides say nothing of what it reflects) whose
+  // lower rows reflect an object on the left and the sky on the right, both noisy. Summed and
+  // filtered by the floor's guides, the reflection's edge blurs; as a layer guided by what the
+  // mirror saw (the object's albedo and normal, the sky's none and its direction) it stays, and
+  // rows without a reflection come out as the floor's filter alone gives them.
+  const int w = 64, h = 48, top = 16, edge = 32;
+  const float sigma = 0.1f, floor = 0.5f, object = 0.15f;
+  Noisy surfaces(w, h), reflections(w, h), summed(w, h);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const std::size_t i = surfaces.index(x, y);
+      surfaces.variance[i] = reflections.variance[i] = sigma * sigma / 3;
+      summed.variance[i] = 2 * sigma * sigma / 3;
+      for (int c = 0; c < 3; ++c) {
+        const std::size_t at = 4 * i + std::size_t(c);
+        surfaces.color[at] = floor + sigma * noise(std::uint32_t(6 * i) + std::uint32_t(c));
+        reflections.color[at] = 0;
+        reflections.albedo[3 * i + std::size_t(c)] = 0;
+        reflections.normal[3 * i + std::size_t(c)] = 0;
+      }
+      if (y < top) continue;
+      for (int c = 0; c < 3; ++c) {
+        const float truth = x < edge ? object : 0.0f;
+        reflections.color[4 * i + std::size_t(c)] = truth + sigma * noise(std::uint32_t(6 * i + 3) + std::uint32_t(c));
+        reflections.albedo[3 * i + std::size_t(c)] = x < edge ? 1.0f : 0.0f;
+      }
+      reflections.normal[3 * i + (x < edge ? 0 : 1)] = 1;  // the object's normal; the sky's direction
+    }
+  for (std::size_t i = 0; i < summed.color.size(); ++i)
+    summed.color[i] = i % 4 == 3 ? 1.0f : surfaces.color[i] + reflections.color[i];
+  std::vector<float> layered(surfaces.color.size());
+  denoiseLayers({w, h, surfaces.color, surfaces.albedo, surfaces.normal, surfaces.variance},
+                {w, h, reflections.color, reflections.albedo, reflections.normal, reflections.variance}, layered);
+  const std::vector<float> blurred = summed.filtered(), floorAlone = surfaces.filtered();
+  // The mean over the reflecting rows of a column's red, against the truth.
+  const auto columnError = [&](const std::vector<float>& out, int x) {
+    double sum = 0;
+    for (int y = top; y < h; ++y) sum += out[4 * surfaces.index(x, y)];
+    return std::abs(sum / (h - top) - (floor + (x < edge ? object : 0.0f)));
+  };
+  for (const int x : {edge - 1, edge}) {
+    EXPECT_LT(columnError(layered, x), 0.01) << "column " << x;
+    EXPECT_GT(columnError(blurred, x), 0.015) << "column " << x << ": the test's reflection should blur as one layer";
+  }
+  for (int y = 0; y < top; ++y)
+    for (int x = 0; x < w; ++x)
+      for (int c = 0; c < 4; ++c) {
+        const std::size_t at = 4 * surfaces.index(x, y) + std::size_t(c);
+        ASSERT_EQ(layered[at], floorAlone[at]) << x << "," << y;
+      }
+}
+
 TEST(Denoise, SameBitsOnEveryThreadCountAndSimdTarget) {
   Noisy p(70, 45);
   for (std::size_t i = 0; i < p.variance.size(); ++i) {
@@ -195,6 +248,7 @@ TEST(Denoise, SameBitsOnEveryThreadCountAndSimdTarget) {
     // Some pixels mixes of two surfaces (a normal shorter than 1), for the first-order fit.
     const float length = i % 7 ? 1.0f : 0.9f + 0.1f * noise(std::uint32_t(11 * i));
     p.normal[3 * i] = 0.6f * length, p.normal[3 * i + 2] = 0.8f * length * (i % 5 ? 1.0f : -1.0f);
+    if (i % 11 == 0) p.normal[3 * i] = p.normal[3 * i + 2] = 0;  // misses, a kind of their own to the outliers
   }
   std::vector<float> first;
   {

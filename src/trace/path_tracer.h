@@ -12,6 +12,7 @@
 #include "trace/area_lights.h"
 #include "trace/environment_light.h"
 #include "trace/ray_scene.h"
+#include "trace/sampling.h"
 #include "trace/surface_hit.h"
 #include "trace/whitted.h"
 
@@ -22,9 +23,18 @@ namespace illum {
 
 // What the denoiser is guided by: the albedo and the eye-space normal (towards the viewer) where
 // the path first met a surface that is not wholly an ideal mirror or glass; 0 where it met none.
+// Where that surface is a part mirror (both of its parts are then followed: PathTracer::walk),
+// what came back along the mirror is kept apart (`mirroredRadiance`, part of the path's radiance)
+// with the guides of what it saw (the same rule past the mirror; where the ray escaped, no albedo
+// and its direction for a normal), so that the denoiser filters a polished floor's reflections by
+// the reflected objects' edges, not the floor's.
 struct PathFeatures {
   Color3 albedo{0};
   Vec3 normal{0};
+  bool mirrored = false;
+  Color3 mirroredRadiance{0};
+  Color3 mirrorAlbedo{0};
+  Vec3 mirrorNormal{0};
 };
 
 // Which sample of which pixel a path is, for its random numbers: at its first surface, the BSDF's,
@@ -47,6 +57,25 @@ class PathTracer {
                  PathFeatures* features = nullptr) const;
 
  private:
+  // A path at a surface: the ray that found it and its hit, the ray cone, the throughput, the pdf
+  // of the direction that led here, whether nothing but that direction could have found a light
+  // (after a camera ray or an ideal mirror or refraction), the bounce, and the denoiser's guides
+  // still to be found: the first surface's and, past a part mirror there, the mirror's.
+  struct Walk {
+    Ray ray;
+    RayHit hit;
+    RayCone cone;
+    Color3 beta{1};
+    Real bsdfPdf = 0;
+    bool lightHitWhole = true;
+    int depth = 0;
+    bool splits = false;  // a part mirror at the first surface that is not wholly ideal is split there
+    PathFeatures* features = nullptr;
+    PathFeatures* mirrorGuides = nullptr;
+  };
+  // The radiance the walk gathers from its surface on.
+  Color3 walk(Walk w, Rng& rng, RayCounts& counts, const PathSample& sample) const;
+
   // The radiance arriving along an escaping ray (eye-space direction).
   Color3 environment(const Vec3& eyeDirection) const;
 

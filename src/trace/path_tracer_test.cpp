@@ -379,6 +379,57 @@ TEST(PathTracer, ASilhouettesGuidesAreThoseOfItsSamplesThatHitSomething) {
   EXPECT_GE(silhouettes, 10);
 }
 
+TEST(PathTracer, APartMirrorsReflectionIsALayerOfItsOwnGuidedByWhatItSaw) {
+  // A black wall facing the camera that mirrors half of what arrives (k = 0.5), and behind the
+  // camera a lamp (emission 1) facing it, off to the left: the wall's left half reflects the lamp,
+  // its right half the black sky. With the denoiser, both parts of the wall are followed (no draw
+  // among the samples): the reflection is k × the lamp exactly, the reflected lamp's guides are its
+  // own (albedo 1: what it emits; normal towards the wall, −Z), and where the mirror saw the sky,
+  // no albedo and the mirrored direction (towards +Z) for a normal. The wall's own guides are
+  // (1 − k) × black + k.
+  Scene s = pathScene(32);
+  s.rayTracing.samples = 4;
+  s.rayTracing.denoise = true;
+  Object wall;
+  wall.mesh = quad({-3, -3, 0}, {3, -3, 0}, {3, 3, 0}, {-3, 3, 0});  // facing +Z, the camera
+  wall.material = lambertian(0);
+  wall.optics.reflective = Color3(0.5f);
+  s.objects.push_back(wall);
+  Object lamp;
+  lamp.mesh = quad({-3, 3, 6}, {0, 3, 6}, {0, -3, 6}, {-3, -3, 6});  // facing −Z, behind the camera
+  lamp.material = lambertian(0);
+  lamp.material.emission = {1, 1, 1, 1};
+  s.objects.push_back(lamp);
+  FloatImage linear;
+  renderScene(s, nullptr, nullptr, &linear);
+  const FloatLayer &reflection = layerOf(linear, "reflection"), &reflectedAlbedo = layerOf(linear, "reflection.albedo"),
+                   &reflectedNormal = layerOf(linear, "reflection.normal"), &albedo = layerOf(linear, "albedo");
+  int lampSeen = 0, skySeen = 0;
+  for (std::size_t i = 0; i < albedo.values.size() / 3; ++i) {
+    const float* a = &reflectedAlbedo.values[3 * i];
+    const float* n = &reflectedNormal.values[3 * i];
+    for (int c = 0; c < 3; ++c) ASSERT_EQ(albedo.values[3 * i + std::size_t(c)], 0.5f) << "pixel " << i;
+    if (a[0] == 1.0f) {  // every sample's mirror saw the lamp
+      ++lampSeen;
+      EXPECT_EQ(n[0], 0.0f);
+      EXPECT_EQ(n[1], 0.0f);
+      EXPECT_EQ(n[2], -1.0f);
+      for (int c = 0; c < 3; ++c) {
+        EXPECT_EQ(reflection.values[3 * i + std::size_t(c)], 0.5f) << "pixel " << i;
+        EXPECT_NEAR(linear.rgba[4 * i + std::size_t(c)], 0.5f, 1e-6f) << "pixel " << i << " denoised";
+      }
+    } else if (a[0] == 0.0f) {  // every sample's mirror saw the sky
+      ++skySeen;
+      EXPECT_GT(n[2], 0.8f) << "pixel " << i;
+      // the mean of its samples' directions, a pixel apart: about unit length
+      EXPECT_NEAR(n[0] * n[0] + n[1] * n[1] + n[2] * n[2], 1.0f, 1e-3f) << "pixel " << i;
+      for (int c = 0; c < 3; ++c) EXPECT_EQ(reflection.values[3 * i + std::size_t(c)], 0.0f) << "pixel " << i;
+    }
+  }
+  EXPECT_GT(lampSeen, 100);
+  EXPECT_GT(skySeen, 100);
+}
+
 TEST(PathTracer, TheSameBytesOnEveryThreadCount) {
   Scene s = defaultScene(LightingModel::BlinnPhong, Shading::Phong, RendererKind::Path);
   s.width = 160, s.height = 90;

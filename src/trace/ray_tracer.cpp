@@ -14,6 +14,7 @@
 #include <tbb/combinable.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <mutex>
@@ -21,6 +22,7 @@
 #include <cmath>
 #include <cstring>
 #include <optional>
+#include <span>
 
 namespace illum {
 namespace {
@@ -45,22 +47,62 @@ struct TileCounts {
 // background is laid under the filtered radiance after) the mean albedo and normal (RGB) and the
 // variance of the mean's luminance. (Over every sample, a silhouette's guides were shortened by
 // the misses and matched no neighbour's: the filter left it noisy.)
+// What part mirrors reflected (PathFeatures) is a second such layer: its radiance (a share of the
+// hits' mean, taken out of `surface.color`), the guides of what the mirrors saw and its variance;
+// filtered apart and added back.
+struct DenoiseLayer {
+  std::vector<float> color, albedo, normal, variance;
+  explicit DenoiseLayer(std::size_t pixels) : color(4 * pixels), albedo(3 * pixels), normal(3 * pixels), variance(pixels) {}
+};
 struct DenoiseBuffers {
-  std::vector<float> beauty, color, coverage, albedo, normal, variance;
-  explicit DenoiseBuffers(std::size_t pixels)
-      : beauty(4 * pixels), color(4 * pixels), coverage(pixels), albedo(3 * pixels), normal(3 * pixels),
-        variance(pixels) {}
+  std::vector<float> beauty, coverage;
+  DenoiseLayer surface, mirrored;
+  explicit DenoiseBuffers(std::size_t pixels) : beauty(4 * pixels), coverage(pixels), surface(pixels), mirrored(pixels) {}
+};
+
+// One denoiser layer's sums over a pixel's hits: its radiance and the luminance (and its square)
+// of the radiance divided by the albedo (denoise.h), each hit counting (0 where it has none of
+// this layer); its guides over the hits that have it (`guided`).
+struct LayerSums {
+  Color3 radiance{0};
+  Real luminance = 0, luminanceSquared = 0;
+  Color3 albedo{0};
+  Vec3 normal{0};
+  int guided = 0;
+
+  void add(const Color3& value, const Color3& guideAlbedo, const Vec3& guideNormal, bool guides) {
+    radiance += value;
+    Color3 demodulated;
+    for (int k = 0; k < 3; ++k) demodulated[k] = value[k] / Real(demodulationOf(float(guideAlbedo[k])));
+    const Real l = illum::luminance(demodulated);
+    luminance += l;
+    luminanceSquared += l * l;
+    if (!guides) return;
+    albedo += guideAlbedo;
+    normal += guideNormal;
+    ++guided;
+  }
+
+  // The layer's means into pixel i of `out` (alpha: the pixel's).
+  void write(DenoiseLayer& out, std::size_t i, int hitCount, Real alpha) const {
+    const Real hits = Real(std::max(hitCount, 1)), guides = Real(std::max(guided, 1));
+    for (int k = 0; k < 4; ++k) out.color[4 * i + std::size_t(k)] = float(k < 3 ? radiance[k] / hits : alpha);
+    for (int k = 0; k < 3; ++k) {
+      out.albedo[3 * i + std::size_t(k)] = float(albedo[k] / guides);
+      out.normal[3 * i + std::size_t(k)] = float(normal[k] / guides);
+    }
+    const Real mean = luminance / hits;
+    out.variance[i] = float(std::max(Real(0), luminanceSquared / hits - mean * mean) / hits);
+  }
 };
 
 // What one pixel's samples add up to: every sample (the background where they miss), and those
-// that hit something apart; for the denoiser, its guides.
+// that hit something apart; for the denoiser, its two layers.
 struct PixelSums {
   Color4 all{0};
   Color3 hits{0};
   int hitCount = 0;
-  Color3 albedo{0};
-  Vec3 normal{0};
-  Real luminance = 0, luminanceSquared = 0;  // of the radiance divided by the albedo (denoise.h)
+  LayerSums surface, mirrored;
 };
 
 class TracedFrame {
@@ -96,18 +138,10 @@ class TracedFrame {
           continue;
         }
         const std::size_t i = std::size_t(y) * std::size_t(scene_.width) + std::size_t(x);
-        for (int k = 0; k < 4; ++k) {
-          denoised_->beauty[4 * i + std::size_t(k)] = float(c[k]);
-          denoised_->color[4 * i + std::size_t(k)] = float(k < 3 ? hitMean[k] : c[3]);
-        }
+        for (int k = 0; k < 4; ++k) denoised_->beauty[4 * i + std::size_t(k)] = float(c[k]);
         denoised_->coverage[i] = float(coverage);
-        const Real hits = Real(std::max(f.hitCount, 1));
-        for (int k = 0; k < 3; ++k) {
-          denoised_->albedo[3 * i + std::size_t(k)] = float(f.albedo[k] / hits);
-          denoised_->normal[3 * i + std::size_t(k)] = float(f.normal[k] / hits);
-        }
-        const Real mean = f.luminance / hits;
-        denoised_->variance[i] = float(std::max(Real(0), f.luminanceSquared / hits - mean * mean) / hits);
+        f.surface.write(denoised_->surface, i, f.hitCount, c[3]);
+        f.mirrored.write(denoised_->mirrored, i, f.hitCount, c[3]);
       }
   }
 
@@ -183,14 +217,8 @@ class TracedFrame {
         pixel.all += radiance;
         if (first) pixel.hits += Color3(radiance);
         if (denoised_ && first) {
-          PixelSums& f = pixel;
-          f.albedo += guides.albedo;
-          f.normal += guides.normal;
-          Color3 demodulated;
-          for (int k = 0; k < 3; ++k) demodulated[k] = radiance[k] / Real(demodulationOf(float(guides.albedo[k])));
-          const Real l = luminance(demodulated);
-          f.luminance += l;
-          f.luminanceSquared += l * l;
+          pixel.surface.add(Color3(radiance) - guides.mirroredRadiance, guides.albedo, guides.normal, true);
+          pixel.mirrored.add(guides.mirroredRadiance, guides.mirrorAlbedo, guides.mirrorNormal, guides.mirrored);
         }
         continue;
       }
@@ -259,9 +287,11 @@ void traceScene(const Scene& scene, Image& image, RenderStats& stats, PixelProbe
   if (denoised && !(cancel && cancel->load())) {
     // The radiance of the samples that hit something is filtered (the background stays out of
     // it), then laid over the background by each pixel's coverage.
-    std::vector<float> filtered(denoised->color.size());
-    denoise({scene.width, scene.height, denoised->color, denoised->albedo, denoised->normal, denoised->variance},
-            filtered);
+    const auto input = [&](const DenoiseLayer& layer) {
+      return DenoiseInput{scene.width, scene.height, layer.color, layer.albedo, layer.normal, layer.variance};
+    };
+    std::vector<float> filtered(denoised->surface.color.size());
+    denoiseLayers(input(denoised->surface), input(denoised->mirrored), filtered);
     for (int y = 0; y < scene.height; ++y)
       for (int x = 0; x < scene.width; ++x) {
         const std::size_t i = std::size_t(y) * std::size_t(scene.width) + std::size_t(x);
@@ -273,8 +303,18 @@ void traceScene(const Scene& scene, Image& image, RenderStats& stats, PixelProbe
       }
     if (linear) {
       linear->layers.push_back({"beauty", 4, std::move(denoised->beauty)});
-      linear->layers.push_back({"albedo", 3, std::move(denoised->albedo)});
-      linear->layers.push_back({"normal", 3, std::move(denoised->normal)});
+      linear->layers.push_back({"albedo", 3, std::move(denoised->surface.albedo)});
+      linear->layers.push_back({"normal", 3, std::move(denoised->surface.normal)});
+      const auto& mirrorNormal = denoised->mirrored.normal;
+      if (std::any_of(mirrorNormal.begin(), mirrorNormal.end(), [](float n) { return n != 0; })) {
+        // What the part mirrors reflected, and its guides.
+        const std::vector<float>& rgba = denoised->mirrored.color;
+        std::vector<float> rgb(rgba.size() / 4 * 3);
+        for (std::size_t i = 0; i < rgb.size(); ++i) rgb[i] = rgba[i / 3 * 4 + i % 3];
+        linear->layers.push_back({"reflection", 3, std::move(rgb)});
+        linear->layers.push_back({"reflection.albedo", 3, std::move(denoised->mirrored.albedo)});
+        linear->layers.push_back({"reflection.normal", 3, std::move(denoised->mirrored.normal)});
+      }
     }
   }
   counts.combine_each([&](const TileCounts& c) {
