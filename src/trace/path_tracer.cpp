@@ -139,8 +139,8 @@ Color3 PathTracer::walk(Walk w, Rng& rng, RayCounts& counts, const PathSample& s
     const auto leaves = [&](const Vec3& wi) { return glm::dot(wi, N) > 0 && glm::dot(wi, Ng) > 0; };
 
     // Mirror and glass: the material is k × an ideal mirror (k = k_r) or a smooth dielectric
-    // (k = k_t: Fresnel's F reflected, 1 − F refracted) plus (1 − k) × its BSDF; one of the two is
-    // followed, chosen by k's luminance.
+    // (k = k_t: Fresnel's F reflected, 1 − F refracted) plus (1 − k) × its BSDF (below: which of
+    // the two are followed).
     const SurfaceOptics& optics = object.optics;
     const Color3 k = optics.transmits() ? optics.transmissive : optics.reflective;
     const Real idealChance = std::clamp(luminance(k), Real(0), Real(1));
@@ -151,11 +151,14 @@ Color3 PathTracer::walk(Walk w, Rng& rng, RayCounts& counts, const PathSample& s
     // is divided out of the radiance it filters instead of blurred with it.
     if (idealChance < 1 && (w.features || w.mirrorGuides)) {
       const Color3 albedo = glm::min((Color3(1) - k) * bsdf.albedo() + k + emission, Color3(1));
-      PathFeatures*& guides = w.features ? w.features : w.mirrorGuides;
-      (w.features ? guides->albedo : guides->mirrorAlbedo) = albedo;
-      (w.features ? guides->normal : guides->mirrorNormal) = N;
-      if (w.features && idealChance > 0) w.mirrorGuides = w.features;
-      guides = nullptr;
+      if (w.features) {
+        w.features->albedo = albedo, w.features->normal = N;
+        if (idealChance > 0) w.mirrorGuides = w.features;  // its mirror's, found by the split below
+        w.features = nullptr;
+      } else {  // past the split's mirror
+        w.mirrorGuides->mirrorAlbedo = albedo, w.mirrorGuides->mirrorNormal = N;
+        w.mirrorGuides = nullptr;
+      }
     }
     // Which way the ideal part goes: a mirror's reflection, or glass's, chosen by Fresnel's F, or
     // its refraction.
