@@ -21,6 +21,17 @@ Real maxComponent(const Color3& c) { return std::max({c.r, c.g, c.b}); }
 
 }  // namespace
 
+Color3 idealWeight(const SurfaceOptics& optics) { return optics.transmits() ? optics.transmissive : optics.reflective; }
+
+Real idealChance(const SurfaceOptics& optics) { return std::clamp(luminance(idealWeight(optics)), Real(0), Real(1)); }
+
+bool hasPartMirrors(const Scene& scene) {
+  return std::any_of(scene.objects.begin(), scene.objects.end(), [](const Object& o) {
+    const Real chance = idealChance(o.optics);
+    return chance > 0 && chance < 1;
+  });
+}
+
 PathTracer::PathTracer(const Scene& scene, const RayScene& rays) : scene_(scene), rays_(rays), area_(scene, rays) {
   const Mat4 viewFromWorld = scene.camera.viewFromWorld();
   worldFromView_ = environmentFromEye(scene, viewFromWorld);  // a rotation: its inverse is its transpose
@@ -142,18 +153,18 @@ Color3 PathTracer::walk(Walk w, Rng& rng, RayCounts& counts, const PathSample& s
     // (k = k_t: Fresnel's F reflected, 1 − F refracted) plus (1 − k) × its BSDF (below: which of
     // the two are followed).
     const SurfaceOptics& optics = object.optics;
-    const Color3 k = optics.transmits() ? optics.transmissive : optics.reflective;
-    const Real idealChance = std::clamp(luminance(k), Real(0), Real(1));
+    const Color3 k = idealWeight(optics);
+    const Real chance = idealChance(optics);
     // The denoiser's guides: this surface, unless it is an ideal mirror or glass and nothing else
     // (then what is seen through it); a part mirror reflects k of everything besides its BSDF.
     // What the surface emits counts as albedo too (up to 1): an emissive map's pattern (glTF's
     // labels: black base colour, text in the emission) is then a feature the filter keeps, and
     // is divided out of the radiance it filters instead of blurred with it.
-    if (idealChance < 1 && (w.features || w.mirrorGuides)) {
+    if (chance < 1 && (w.features || w.mirrorGuides)) {
       const Color3 albedo = glm::min((Color3(1) - k) * bsdf.albedo() + k + emission, Color3(1));
       if (w.features) {
         w.features->albedo = albedo, w.features->normal = N;
-        if (idealChance > 0) w.mirrorGuides = w.features;  // its mirror's, found by the split below
+        if (chance > 0) w.mirrorGuides = w.features;  // its mirror's, found by the split below
         w.features = nullptr;
       } else {  // past the split's mirror
         w.mirrorGuides->mirrorAlbedo = albedo, w.mirrorGuides->mirrorNormal = N;
@@ -188,9 +199,9 @@ Color3 PathTracer::walk(Walk w, Rng& rng, RayCounts& counts, const PathSample& s
     // picture that is as good for the time (the built-in scene, 128 samples at 320×240: both
     // followed, relative MSE 0.00061 → 0.00047 in 1.4 times the time), and a reflection a few of
     // a pixel's samples saw, filtered apart, would be noisier than the filter can help.
-    const bool splits = w.splits && idealChance < 1;
-    if (idealChance < 1) w.splits = false;
-    if (splits && idealChance > 0) {
+    const bool splits = w.splits && chance < 1;
+    if (chance < 1) w.splits = false;
+    if (splits && chance > 0) {
       Walk mirror = w;
       mirror.beta *= k;
       mirror.lightHitWhole = true;
@@ -207,13 +218,13 @@ Color3 PathTracer::walk(Walk w, Rng& rng, RayCounts& counts, const PathSample& s
         w.mirrorGuides = nullptr;
       }
       w.beta *= Color3(1) - k;
-    } else if (idealChance > 0 && choice(0) < idealChance) {
-      w.beta *= k / idealChance;
+    } else if (chance > 0 && choice(0) < chance) {
+      w.beta *= k / chance;
       w.lightHitWhole = true;
       if (!continuePath(w, radiance, idealDirection())) break;
       continue;
-    } else if (idealChance > 0) {
-      w.beta *= (Color3(1) - k) / (1 - idealChance);
+    } else if (chance > 0) {
+      w.beta *= (Color3(1) - k) / (1 - chance);
     }
 
     // Next-event estimation: every point, spot and directional light (irradiance π·c·att·spot·cos,

@@ -37,6 +37,14 @@ struct PathFeatures {
   Vec3 mirrorNormal{0};
 };
 
+// A surface's ideal part: its weight k (k_t for glass, else k_r: the rest is its BSDF's), and
+// k's luminance, the chance that a path follows it (0: none, 1: the surface is wholly ideal).
+Color3 idealWeight(const SurfaceOptics& optics);
+Real idealChance(const SurfaceOptics& optics);
+// Whether a scene has a part mirror or glass (0 < chance < 1), whose reflection the denoiser
+// filters as a layer of its own.
+bool hasPartMirrors(const Scene& scene);
+
 // Which sample of which pixel a path is, for its random numbers: at its first surface, the BSDF's,
 // the environment's and the area lights' pairs of numbers are stratified over the pixel's samples
 // (stratifiedPair); the rest come from the path's own generator.

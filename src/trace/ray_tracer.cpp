@@ -47,9 +47,9 @@ struct TileCounts {
 // background is laid under the filtered radiance after) the mean albedo and normal (RGB) and the
 // variance of the mean's luminance. (Over every sample, a silhouette's guides were shortened by
 // the misses and matched no neighbour's: the filter left it noisy.)
-// What part mirrors reflected (PathFeatures) is a second such layer: its radiance (a share of the
-// hits' mean, taken out of `surface.color`), the guides of what the mirrors saw and its variance;
-// filtered apart and added back.
+// What part mirrors reflected (PathFeatures) is a second such layer, kept where the scene has
+// any: its radiance (a share of the hits' mean, taken out of `surface.color`), the guides of what
+// the mirrors saw and its variance; filtered apart and added back.
 struct DenoiseLayer {
   std::vector<float> color, albedo, normal, variance;
   explicit DenoiseLayer(std::size_t pixels) : color(4 * pixels), albedo(3 * pixels), normal(3 * pixels), variance(pixels) {}
@@ -57,7 +57,8 @@ struct DenoiseLayer {
 struct DenoiseBuffers {
   std::vector<float> beauty, coverage;
   DenoiseLayer surface, mirrored;
-  explicit DenoiseBuffers(std::size_t pixels) : beauty(4 * pixels), coverage(pixels), surface(pixels), mirrored(pixels) {}
+  DenoiseBuffers(std::size_t pixels, bool partMirrors)
+      : beauty(4 * pixels), coverage(pixels), surface(pixels), mirrored(partMirrors ? pixels : 0) {}
 };
 
 // One denoiser layer's sums over a pixel's hits: its radiance and the luminance (and its square)
@@ -85,6 +86,7 @@ struct LayerSums {
 
   // The layer's means into pixel i of `out` (alpha: the pixel's).
   void write(DenoiseLayer& out, std::size_t i, int hitCount, Real alpha) const {
+    if (out.variance.empty()) return;  // a layer the scene has no use for
     const Real hits = Real(std::max(hitCount, 1)), guides = Real(std::max(guided, 1));
     for (int k = 0; k < 4; ++k) out.color[4 * i + std::size_t(k)] = float(k < 3 ? radiance[k] / hits : alpha);
     for (int k = 0; k < 3; ++k) {
@@ -262,7 +264,7 @@ void traceScene(const Scene& scene, Image& image, RenderStats& stats, PixelProbe
   if (linear) *linear = FloatImage{scene.width, scene.height, std::vector<float>(std::size_t(scene.width) * std::size_t(scene.height) * 4), {}};
   const bool denoising = scene.renderer == RendererKind::Path && scene.rayTracing.denoise;
   std::optional<DenoiseBuffers> denoised;
-  if (denoising) denoised.emplace(std::size_t(scene.width) * std::size_t(scene.height));
+  if (denoising) denoised.emplace(std::size_t(scene.width) * std::size_t(scene.height), hasPartMirrors(scene));
   const TracedFrame frame(scene, rays, image, probe, linear, denoised ? &*denoised : nullptr);
   const int tilesX = (scene.width + kTile - 1) / kTile, tilesY = (scene.height + kTile - 1) / kTile;
   tbb::combinable<TileCounts> counts;
@@ -291,7 +293,10 @@ void traceScene(const Scene& scene, Image& image, RenderStats& stats, PixelProbe
       return DenoiseInput{scene.width, scene.height, layer.color, layer.albedo, layer.normal, layer.variance};
     };
     std::vector<float> filtered(denoised->surface.color.size());
-    denoiseLayers(input(denoised->surface), input(denoised->mirrored), filtered);
+    if (denoised->mirrored.variance.empty())
+      denoise(input(denoised->surface), filtered);
+    else
+      denoiseLayers(input(denoised->surface), input(denoised->mirrored), filtered);
     for (int y = 0; y < scene.height; ++y)
       for (int x = 0; x < scene.width; ++x) {
         const std::size_t i = std::size_t(y) * std::size_t(scene.width) + std::size_t(x);
