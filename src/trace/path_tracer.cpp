@@ -59,6 +59,7 @@ Color4 PathTracer::primary(const Ray& primaryRay, const RayHit* primaryHit, cons
   w.hit = *primaryHit;
   w.cone = primaryCone;
   w.features = features;
+  if (features) w.direct = &features->direct;
   w.splits = features != nullptr;
   return {walk(w, rng, counts, sample), 1};
 }
@@ -203,6 +204,7 @@ Color3 PathTracer::walk(Walk w, Rng& rng, RayCounts& counts, const PathSample& s
     if (chance < 1) w.splits = false;
     if (splits && chance > 0) {
       Walk mirror = w;
+      mirror.direct = nullptr;
       mirror.beta *= k;
       mirror.lightHitWhole = true;
       mirror.features = nullptr;
@@ -221,6 +223,7 @@ Color3 PathTracer::walk(Walk w, Rng& rng, RayCounts& counts, const PathSample& s
     } else if (chance > 0 && choice(0) < chance) {
       w.beta *= k / chance;
       w.lightHitWhole = true;
+      if (optics.transmits()) w.direct = nullptr;  // reflected or refracted: a draw, filtered
       if (!continuePath(w, radiance, idealDirection())) break;
       continue;
     } else if (chance > 0) {
@@ -256,8 +259,11 @@ Color3 PathTracer::walk(Walk w, Rng& rng, RayCounts& counts, const PathSample& s
         if (rays_.occluded(shadow)) continue;
       }
       const Real E = kPiReal * factor * glm::dot(N, at.L) * lightWeight;
-      radiance += w.beta * (f.diffuse * light.diffuse + f.specular * light.specular) * E;
+      const Color3 lit = w.beta * (f.diffuse * light.diffuse + f.specular * light.specular) * E;
+      radiance += lit;
+      if (w.direct && everyLight) *w.direct += lit;  // for the denoiser: exact, kept out of its filter
     }
+    w.direct = nullptr;  // only the first surface's
     if (!area_.empty()) {
       const Real which = rng.uniform();
       const Vec2 u = pair(3);

@@ -28,7 +28,13 @@ namespace illum {
 // with the guides of what it saw (the same rule past the mirror; where the ray escaped, no albedo
 // and its direction for a normal), so that the denoiser filters a polished floor's reflections by
 // the reflected objects' edges, not the floor's.
+// `direct` is what that first surface took from point, spot and directional lights (each sampled
+// there, up to 16 of them: PathTracer::walk) where the camera saw it, straight or through ideal
+// mirrors: exact but for where in the pixel the ray went, so the denoiser leaves it unfiltered and
+// a hard shadow's edge or a highlight stays as sharp as the samples drew it. It is 0 where one
+// light was drawn for many or the path went through glass (a choice among its samples).
 struct PathFeatures {
+  Color3 direct{0};
   Color3 albedo{0};
   Vec3 normal{0};
   bool mirrored = false;
@@ -80,6 +86,7 @@ class PathTracer {
     bool splits = false;  // a part mirror at the first surface that is not wholly ideal is split there
     PathFeatures* features = nullptr;
     PathFeatures* mirrorGuides = nullptr;
+    Color3* direct = nullptr;  // where the first surface's light from point, spot and directional lights goes
   };
   // The radiance the walk gathers from its surface on.
   Color3 walk(Walk w, Rng& rng, RayCounts& counts, const PathSample& sample) const;

@@ -430,6 +430,50 @@ TEST(PathTracer, APartMirrorsReflectionIsALayerOfItsOwnGuidedByWhatItSaw) {
   EXPECT_GT(skySeen, 100);
 }
 
+TEST(PathTracer, TheFirstSurfacesLightFromPointLightsIsExactAndNotFiltered) {
+  // A wall (albedo 0.5) facing the camera, lit by a directional light from the right, 45° off its
+  // normal, and by a lamp behind the camera, to the left (area light: a draw per sample, noisy).
+  // With the denoiser, what the wall took from the directional light is its own EXR layer, exact at
+  // every pixel the wall covers: (k_d/π)·π·c·(N·L) = 0.5·cos 45°; the filtered rest (the lamp) is
+  // added to it, never taken from it.
+  // Forty copies of the light (c/40 each) are one drawn per bounce: a draw, filtered, no layer.
+  Scene s = pathScene(32);
+  s.rayTracing.samples = 4;
+  s.rayTracing.denoise = true;
+  Object wall;
+  wall.mesh = quad({-3, -3, 0}, {3, -3, 0}, {3, 3, 0}, {-3, 3, 0});
+  wall.material = lambertian(0.5f);
+  s.objects.push_back(wall);
+  Object lamp;
+  lamp.mesh = quad({-3, 3, 6}, {0, 3, 6}, {0, -3, 6}, {-3, -3, 6});
+  lamp.material = lambertian(0);
+  lamp.material.emission = {1, 1, 1, 1};
+  s.objects.push_back(lamp);
+  Light light;
+  light.position = {1, 0, 1, 0};
+  light.diffuse = Color3(1);
+  s.lights = {light};
+  const float lit = 0.5f * std::sqrt(0.5f);
+  FloatImage linear;
+  renderScene(s, nullptr, nullptr, &linear);
+  const FloatLayer& direct = layerOf(linear, "direct");
+  const FloatLayer& beauty = layerOf(linear, "beauty");
+  int lampVaries = 0;
+  for (std::size_t i = 0; i < direct.values.size() / 3; ++i) {
+    ASSERT_EQ(beauty.values[4 * i + 3], 1.0f) << "pixel " << i;  // the wall covers the picture
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_NEAR(direct.values[3 * i + std::size_t(c)], lit, 1e-6f) << "pixel " << i;
+      EXPECT_GT(linear.rgba[4 * i + std::size_t(c)], lit) << "pixel " << i << " denoised";
+    }
+    lampVaries += std::abs(beauty.values[4 * i] - beauty.values[0]) > 1e-3f;
+  }
+  EXPECT_GT(lampVaries, 100);  // the rest is noisy: what the filter is for
+  light.diffuse = Color3(1.0f / 40);
+  s.lights.assign(40, light);
+  renderScene(s, nullptr, nullptr, &linear);
+  for (const float v : layerOf(linear, "direct").values) ASSERT_EQ(v, 0.0f);
+}
+
 TEST(PathTracer, TheSameBytesOnEveryThreadCount) {
   Scene s = defaultScene(LightingModel::BlinnPhong, Shading::Phong, RendererKind::Path);
   s.width = 160, s.height = 90;

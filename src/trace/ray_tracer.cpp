@@ -50,15 +50,18 @@ struct TileCounts {
 // What part mirrors reflected (PathFeatures) is a second such layer, kept where the scene has
 // any: its radiance (a share of the hits' mean, taken out of `surface.color`), the guides of what
 // the mirrors saw and its variance; filtered apart and added back.
+// What the first surface took from point, spot and directional lights (`direct`, mean over the
+// hits) is exact but for the pixel's own sampling: it is taken out of the surfaces' layer, not
+// filtered, and added back after.
 struct DenoiseLayer {
   std::vector<float> color, albedo, normal, variance;
   explicit DenoiseLayer(std::size_t pixels) : color(4 * pixels), albedo(3 * pixels), normal(3 * pixels), variance(pixels) {}
 };
 struct DenoiseBuffers {
-  std::vector<float> beauty, coverage;
+  std::vector<float> beauty, coverage, direct;
   DenoiseLayer surface, mirrored;
   DenoiseBuffers(std::size_t pixels, bool partMirrors)
-      : beauty(4 * pixels), coverage(pixels), surface(pixels), mirrored(partMirrors ? pixels : 0) {}
+      : beauty(4 * pixels), coverage(pixels), direct(3 * pixels), surface(pixels), mirrored(partMirrors ? pixels : 0) {}
 };
 
 // One denoiser layer's sums over a pixel's hits: its radiance and the luminance (and its square)
@@ -103,6 +106,7 @@ struct LayerSums {
 struct PixelSums {
   Color4 all{0};
   Color3 hits{0};
+  Color3 direct{0};
   int hitCount = 0;
   LayerSums surface, mirrored;
 };
@@ -143,6 +147,7 @@ class TracedFrame {
         for (int k = 0; k < 4; ++k) denoised_->beauty[4 * i + std::size_t(k)] = float(c[k]);
         denoised_->coverage[i] = float(coverage);
         f.surface.write(denoised_->surface, i, f.hitCount, c[3]);
+        for (int k = 0; k < 3; ++k) denoised_->direct[3 * i + std::size_t(k)] = float(f.direct[k] / Real(std::max(f.hitCount, 1)));
         f.mirrored.write(denoised_->mirrored, i, f.hitCount, c[3]);
       }
   }
@@ -219,7 +224,8 @@ class TracedFrame {
         pixel.all += radiance;
         if (first) pixel.hits += Color3(radiance);
         if (denoised_ && first) {
-          pixel.surface.add(Color3(radiance) - guides.mirroredRadiance, guides.albedo, guides.normal, true);
+          pixel.direct += guides.direct;
+          pixel.surface.add(Color3(radiance) - guides.mirroredRadiance - guides.direct, guides.albedo, guides.normal, true);
           pixel.mirrored.add(guides.mirroredRadiance, guides.mirrorAlbedo, guides.mirrorNormal, guides.mirrored);
         }
         continue;
@@ -302,7 +308,7 @@ void traceScene(const Scene& scene, Image& image, RenderStats& stats, PixelProbe
         const std::size_t i = std::size_t(y) * std::size_t(scene.width) + std::size_t(x);
         const float* c = &filtered[4 * i];
         const Real coverage = denoised->coverage[i];
-        const Color3 hitMean(c[0], c[1], c[2]);
+        const Color3 hitMean = Color3(c[0], c[1], c[2]) + Color3(denoised->direct[3 * i], denoised->direct[3 * i + 1], denoised->direct[3 * i + 2]);
         const Color3 all = hitMean * coverage + Color3(scene.background) * (1 - coverage);
         frame.writePixel(x, y, Color4(all, c[3]), hitMean, coverage);
       }
@@ -310,6 +316,7 @@ void traceScene(const Scene& scene, Image& image, RenderStats& stats, PixelProbe
       linear->layers.push_back({"beauty", 4, std::move(denoised->beauty)});
       linear->layers.push_back({"albedo", 3, std::move(denoised->surface.albedo)});
       linear->layers.push_back({"normal", 3, std::move(denoised->surface.normal)});
+      linear->layers.push_back({"direct", 3, std::move(denoised->direct)});
       const auto& mirrorNormal = denoised->mirrored.normal;
       if (std::any_of(mirrorNormal.begin(), mirrorNormal.end(), [](float n) { return n != 0; })) {
         // What the part mirrors reflected, and its guides.
