@@ -2,7 +2,8 @@
 # The path tracer's denoiser, measured: each input path traced at 16, 64 and 128 samples per
 # pixel without the denoiser and at 16 and 64 with it, each picture's relative MSE against a
 # 4096-sample reference of the same input (illum_relmse: mean of (x − r)²/(r² + 0.01) over the
-# linear RGB values), and the whole command's time. References are kept in build/denoise-ref/
+# linear RGB values), and the whole command's time writing the picture as a PNG (the error is read from
+# the same picture drawn again into an EXR, whose float layers take longer to write). References are kept in build/denoise-ref/
 # (delete them after changing the path tracer).
 #   bench/denoise.sh [--size W,H] [--reference N] [INPUT ...]
 # Inputs default to the Cornell box, the built-in scene and a glTF model (2CylinderEngine.glb).
@@ -28,32 +29,33 @@ out=build/denoise-ref
 mkdir -p "$out"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-# render NAME INPUT SAMPLES OPTIONS...: the picture as work/NAME.exr; prints the seconds it took.
+# render NAME.EXT INPUT SAMPLES OPTIONS...: the picture as work/NAME.EXT; prints the seconds it took.
 render() {
   local name=$1 input=$2 samples=$3
   shift 3
-  local args=(render --renderer path --resolution "$size" --samples "$samples" "$@" -o "$work/$name.exr")
-  [ "$input" = builtin ] || args=(render "$input" --renderer path --resolution "$size" --samples "$samples" "$@" -o "$work/$name.exr")
+  local args=(render --renderer path --resolution "$size" --samples "$samples" "$@" -o "$work/$name")
+  [ "$input" = builtin ] || args=(render "$input" --renderer path --resolution "$size" --samples "$samples" "$@" -o "$work/$name")
   local start end
   start=$(date +%s.%N)
   "$illum" "${args[@]}" >/dev/null
   end=$(date +%s.%N)
   awk -v a="$start" -v b="$end" 'BEGIN { printf "%.2f", b - a }'
 }
-echo "# $(lscpu | sed -n 's/^Model name: *//p'), $(nproc) cores; $size; relative MSE against $reference samples per pixel; seconds for the whole command"
+echo "# $(lscpu | sed -n 's/^Model name: *//p'), $(nproc) cores; $size; relative MSE against $reference samples per pixel; seconds for the whole command (PNG)"
 printf '| %-22s | %-16s | %-16s | %-16s | %-16s | %-16s |\n' input "16" "16 denoised" "64" "64 denoised" "128"
 printf '|%s|%s|%s|%s|%s|%s|\n' ------------------------ ------------------ ------------------ ------------------ ------------------ ------------------
 for input in "${inputs[@]}"; do
   key=$(basename "$input" | tr -c 'A-Za-z0-9.\n' _)_${size/,/x}_$reference
   ref="$out/$key.exr"
   if [ ! -f "$ref" ]; then
-    render ref "$input" "$reference" --no-denoise >/dev/null
+    render ref.exr "$input" "$reference" --no-denoise >/dev/null
     mv "$work/ref.exr" "$ref"
   fi
   row=()
   for run in "16 --no-denoise" "16 --denoise" "64 --no-denoise" "64 --denoise" "128 --no-denoise"; do
     set -- $run
-    seconds=$(render pic "$input" "$1" "$2")
+    seconds=$(render pic.png "$input" "$1" "$2")
+    render pic.exr "$input" "$1" "$2" >/dev/null
     row+=("$(printf '%.4f in %ss' "$("$relmse" "$work/pic.exr" "$ref")" "$seconds")")
   done
   printf '| %-22s | %-16s | %-16s | %-16s | %-16s | %-16s |\n' "$(basename "$input")" "${row[@]}"

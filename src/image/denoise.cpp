@@ -165,21 +165,28 @@ void denoise(const DenoiseInput& in, std::span<float> out) {
   denoiseIn(arena, in, out);
 }
 
+LayerRows layerRows(const DenoiseInput& layer) {
+  const std::size_t width = std::size_t(layer.width);
+  const auto seen = [&](int y) {
+    const auto row = layer.normal.begin() + std::ptrdiff_t(3 * std::size_t(y) * width);
+    return std::any_of(row, row + std::ptrdiff_t(3 * width), [](float n) { return n != 0; });
+  };
+  LayerRows rows{0, layer.height};
+  while (!rows.empty() && !seen(rows.first)) ++rows.first;
+  while (!rows.empty() && !seen(rows.end - 1)) --rows.end;
+  return rows;
+}
+
 void denoiseLayers(const DenoiseInput& surfaces, const DenoiseInput& reflections, std::span<float> out) {
   const int w = surfaces.width, h = surfaces.height;
   PlaneArena arena(kArenaPlanes, layoutOf(w, h).size());  // one for both: its pages are touched once
   denoiseIn(arena, surfaces, out);
-  // The reflections over the rows that have any (a normal: what a mirror saw); elsewhere they are
-  // 0, and filtering them would cost as much as the surfaces.
+  // The reflections over the rows that have any (what a mirror saw); elsewhere they are 0, and
+  // filtering them would cost as much as the surfaces.
   const std::size_t width = std::size_t(w);
-  const auto reflects = [&](int y) {
-    const auto row = reflections.normal.begin() + std::ptrdiff_t(3 * std::size_t(y) * width);
-    return std::any_of(row, row + std::ptrdiff_t(3 * width), [](float n) { return n != 0; });
-  };
-  int y0 = 0, y1 = h;
-  while (y0 < y1 && !reflects(y0)) ++y0;
-  while (y1 > y0 && !reflects(y1 - 1)) --y1;
-  if (y0 == y1) return;
+  const LayerRows reflected = layerRows(reflections);
+  if (reflected.empty()) return;
+  const int y0 = reflected.first, y1 = reflected.end;
   const std::size_t first = std::size_t(y0) * width, pixels = std::size_t(y1 - y0) * width;
   const DenoiseInput rows{w, y1 - y0, reflections.color.subspan(4 * first, 4 * pixels),
                           reflections.albedo.subspan(3 * first, 3 * pixels), reflections.normal.subspan(3 * first, 3 * pixels),

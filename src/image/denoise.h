@@ -45,6 +45,13 @@ struct DenoiseInput {
   std::span<const float> variance;
 };
 
+// The rows [first, end) of a layer that have anything in it (a normal: something was seen there).
+struct LayerRows {
+  int first = 0, end = 0;
+  bool empty() const { return first == end; }
+};
+LayerRows layerRows(const DenoiseInput& layer);
+
 // The filtered radiance, RGBA per pixel into `out` (width·height·4 floats), alpha as it came.
 void denoise(const DenoiseInput& in, std::span<float> out);
 

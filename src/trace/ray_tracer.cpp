@@ -317,8 +317,7 @@ void traceScene(const Scene& scene, Image& image, RenderStats& stats, PixelProbe
       linear->layers.push_back({"albedo", 3, std::move(denoised->surface.albedo)});
       linear->layers.push_back({"normal", 3, std::move(denoised->surface.normal)});
       linear->layers.push_back({"direct", 3, std::move(denoised->direct)});
-      const auto& mirrorNormal = denoised->mirrored.normal;
-      if (std::any_of(mirrorNormal.begin(), mirrorNormal.end(), [](float n) { return n != 0; })) {
+      if (!denoised->mirrored.variance.empty() && !layerRows(input(denoised->mirrored)).empty()) {
         // What the part mirrors reflected, and its guides.
         const std::vector<float>& rgba = denoised->mirrored.color;
         std::vector<float> rgb(rgba.size() / 4 * 3);
