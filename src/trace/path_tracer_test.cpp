@@ -474,6 +474,47 @@ TEST(PathTracer, TheFirstSurfacesLightFromPointLightsIsExactAndNotFiltered) {
   for (const float v : layerOf(linear, "direct").values) ASSERT_EQ(v, 0.0f);
 }
 
+TEST(PathTracer, LightThatOneSampleOfAPixelSawIsFiltered) {
+  // A narrow spot light's disc on the wall, smaller than a pixel, one bounce: where all of a
+  // pixel's samples agree (none saw the disc) its direct light is exact and kept out of the
+  // filter; where one sample alone saw it, that is the pixel's noise, not its value (the
+  // reference's is the disc's share of the pixel): the light goes to the filter, whose outlier
+  // pass brings the pixel down towards its neighbours.
+  Scene s = pathScene(32);
+  s.rayTracing.samples = 16;
+  s.rayTracing.maxDepth = 1;
+  s.rayTracing.denoise = true;
+  Object wall;
+  wall.mesh = quad({-3, -3, 0}, {3, -3, 0}, {3, 3, 0}, {-3, 3, 0});
+  wall.material = lambertian(0.5f);
+  s.objects.push_back(wall);
+  Light spot;
+  spot.position = {0.31f, 0.27f, 3, 1};
+  spot.spotDirection = {0, 0, -1};
+  spot.spotCutoff = 0.5f;  // degrees: a disc of radius 0.026 on the wall, a pixel 0.1 wide
+  s.lights = {spot};
+  FloatImage linear;
+  renderScene(s, nullptr, nullptr, &linear);
+  const FloatLayer &direct = layerOf(linear, "direct"), &beauty = layerOf(linear, "beauty");
+  // Each sample on the disc sees 0.5 (its cosines are 1 within 1e-4).
+  int oneSample = 0, more = 0;
+  for (std::size_t i = 0; i < direct.values.size() / 3; ++i) {
+    const float raw = beauty.values[4 * i], kept = direct.values[3 * i], denoised = linear.rgba[4 * i];
+    const long seen = std::lround(raw / (0.5f / 16));
+    if (seen == 1) {
+      ++oneSample;
+      EXPECT_EQ(kept, 0.0f) << "pixel " << i;
+      EXPECT_LT(denoised, 0.5f * raw) << "pixel " << i;
+    } else if (seen > 1) {
+      ++more;
+      EXPECT_EQ(kept, raw) << "pixel " << i;
+      EXPECT_NEAR(denoised, raw, 1e-6f) << "pixel " << i;
+    }
+  }
+  EXPECT_EQ(oneSample, 1);
+  EXPECT_EQ(more, 1);
+}
+
 TEST(PathTracer, TheSameBytesOnEveryThreadCount) {
   Scene s = defaultScene(LightingModel::BlinnPhong, Shading::Phong, RendererKind::Path);
   s.width = 160, s.height = 90;
