@@ -43,6 +43,23 @@ Scene pathScene(int size) {
   return s;
 }
 
+// A Lambertian wall across the view of pathScene's camera, facing it (+Z), in the plane z = 0.
+Object wallFacingTheCamera(Real albedo) {
+  Object wall;
+  wall.mesh = quad({-3, -3, 0}, {3, -3, 0}, {3, 3, 0}, {-3, 3, 0});
+  wall.material = lambertian(albedo);
+  return wall;
+}
+
+// pathScene with the denoiser at `samples` a pixel, the wall (albedo 0.5) filling its view.
+Scene denoisedWallScene(int samples) {
+  Scene s = pathScene(32);
+  s.rayTracing.samples = samples;
+  s.rayTracing.denoise = true;
+  s.objects.push_back(wallFacingTheCamera(0.5f));
+  return s;
+}
+
 // Mean and extremes of the linear values of the pixels an object covers whole (every sample hit it).
 struct Stats {
   double mean = 0, min = 1e30, max = -1e30;
@@ -390,9 +407,7 @@ TEST(PathTracer, APartMirrorsReflectionIsALayerOfItsOwnGuidedByWhatItSaw) {
   Scene s = pathScene(32);
   s.rayTracing.samples = 4;
   s.rayTracing.denoise = true;
-  Object wall;
-  wall.mesh = quad({-3, -3, 0}, {3, -3, 0}, {3, 3, 0}, {-3, 3, 0});  // facing +Z, the camera
-  wall.material = lambertian(0);
+  Object wall = wallFacingTheCamera(0);
   wall.optics.reflective = Color3(0.5f);
   s.objects.push_back(wall);
   Object lamp;
@@ -437,13 +452,7 @@ TEST(PathTracer, TheFirstSurfacesLightFromPointLightsIsExactAndNotFiltered) {
   // every pixel the wall covers: (k_d/π)·π·c·(N·L) = 0.5·cos 45°; the filtered rest (the lamp) is
   // added to it, never taken from it.
   // Forty copies of the light (c/40 each) are one drawn per bounce: a draw, filtered, no layer.
-  Scene s = pathScene(32);
-  s.rayTracing.samples = 4;
-  s.rayTracing.denoise = true;
-  Object wall;
-  wall.mesh = quad({-3, -3, 0}, {3, -3, 0}, {3, 3, 0}, {-3, 3, 0});
-  wall.material = lambertian(0.5f);
-  s.objects.push_back(wall);
+  Scene s = denoisedWallScene(4);
   Object lamp;
   lamp.mesh = quad({-3, 3, 6}, {0, 3, 6}, {0, -3, 6}, {-3, -3, 6});
   lamp.material = lambertian(0);
@@ -480,14 +489,8 @@ TEST(PathTracer, LightThatOneSampleOfAPixelSawIsFiltered) {
   // filter; where one sample alone saw it, that is the pixel's noise, not its value (the
   // reference's is the disc's share of the pixel): the light goes to the filter, whose outlier
   // pass brings the pixel down towards its neighbours.
-  Scene s = pathScene(32);
-  s.rayTracing.samples = 16;
+  Scene s = denoisedWallScene(16);
   s.rayTracing.maxDepth = 1;
-  s.rayTracing.denoise = true;
-  Object wall;
-  wall.mesh = quad({-3, -3, 0}, {3, -3, 0}, {3, 3, 0}, {-3, 3, 0});
-  wall.material = lambertian(0.5f);
-  s.objects.push_back(wall);
   Light spot;
   spot.position = {0.31f, 0.27f, 3, 1};
   spot.spotDirection = {0, 0, -1};
