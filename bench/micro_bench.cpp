@@ -130,7 +130,7 @@ void BM_Denoise(benchmark::State& state) {
   std::vector<float> reflection(4 * pixels);
   for (std::size_t i = 0; i < pixels; ++i)
     for (std::size_t k = 0; k < 3; ++k) reflection[4 * i + k] = layer("reflection")[3 * i + k];
-  const DenoiseInput surfaces{scene.width, scene.height, layer("beauty"), layer("albedo"), layer("normal"), variance};
+  const DenoiseInput surfaces{scene.width, scene.height, layer("beauty"), layer("albedo"), layer("normal"), variance, layer("depth")};
   const DenoiseInput reflections{scene.width, scene.height, reflection, layer("reflection.albedo"), layer("reflection.normal"), variance};
   std::vector<float> out(linear.rgba.size());
   for (auto _ : state) {

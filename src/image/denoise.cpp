@@ -55,7 +55,7 @@ void dimOutliers(const Layout& layout, const float* scale, Planes& first, Fit& f
     }
 }
 
-constexpr std::size_t kArenaPlanes = 2 * 5 + 6 + 3;  // the passes' two sets, the guides, the fit's input
+constexpr std::size_t kArenaPlanes = 2 * 5 + 7 + 3;  // the passes' two sets, the guides, the fit's input
 
 Layout layoutOf(int width, int height) { return Layout{width, height, width + 2 * kPad + kVectorSlack}; }
 
@@ -70,6 +70,7 @@ void denoiseIn(PlaneArena& arena, const DenoiseInput& in, std::span<float> out) 
   for (Planes& p : planes)
     for (Plane* plane : {&p.color[0], &p.color[1], &p.color[2], &p.luminance, &p.variance}) plane->values = arena.plane(next++);
   for (int k = 0; k < 3; ++k) guides.normal[k].values = arena.plane(next++), guides.albedo[k].values = arena.plane(next++);
+  guides.depth.values = arena.plane(next++);
   for (Plane* plane : {&fit.radiance[0], &fit.radiance[1], &fit.radiance[2]}) plane->values = arena.plane(next++);
   // The fit's output goes where the passes are done with: the planes the last pass read.
   const Planes& last = planes[kPasses % 2];
@@ -77,7 +78,8 @@ void denoiseIn(PlaneArena& arena, const DenoiseInput& in, std::span<float> out) 
   for (int k = 0; k < 3; ++k) fit.fitted[k].values = spent.color[k].values;
   fit.weight.values = spent.luminance.values;
   // Every padded row, in parallel: the padding's colour 0 and its normal so far from any unit
-  // normal that a tap there weighs exactly 0; inside, the demodulated colour, the guides, and the
+  // normal that a tap there weighs exactly 0; inside, the demodulated colour, the guides (the
+  // depth as its logarithm: a difference of logarithms is the relative one), and the
   // variance estimated from a pixel's own samples, which is noisy itself: blurred 3×3 (1 2 1)
   // within the picture. Inside a row only the padding is filled: the pixels are written below
   // (the first planes and the guides) or by the first pass (the second planes).
@@ -100,6 +102,7 @@ void denoiseIn(PlaneArena& arena, const DenoiseInput& in, std::span<float> out) 
         fill(guides.albedo[k].data(), 0.0f);
         fill(fit.radiance[k].data(), 0.0f);
       }
+      fill(guides.depth.data(), 0.0f);
       if (!inside) continue;
       for (int x = 0; x < w; ++x) {
         const std::size_t i = std::size_t(y) * std::size_t(w) + std::size_t(x), at = layout.at(x, y);
@@ -111,6 +114,8 @@ void denoiseIn(PlaneArena& arena, const DenoiseInput& in, std::span<float> out) 
           guides.normal[k].data()[at] = in.normal[3 * i + std::size_t(k)] * (1 / kSigmaNormal);
           guides.albedo[k].data()[at] = a * (1 / kSigmaAlbedo);
         }
+        const float z = in.depth.empty() ? 0.0f : in.depth[i];
+        guides.depth.data()[at] = z > 0 ? std::log(z) * (1 / kSigmaDepth) : 0.0f;
         float sum = 0, weight = 0;
         for (int dy = -1; dy <= 1; ++dy)
           for (int dx = -1; dx <= 1; ++dx) {
@@ -139,7 +144,7 @@ void denoiseIn(PlaneArena& arena, const DenoiseInput& in, std::span<float> out) 
     const Planes& from = planes[pass % 2];
     Planes& to = planes[(pass + 1) % 2];
     tbb::parallel_for(tbb::blocked_range<int>(0, h, 8), [&](const tbb::blocked_range<int>& rows) {
-      HWY_DYNAMIC_DISPATCH(FilterRows)(layout, guides, from, to, 1 << pass, rows.begin(), rows.end());
+      HWY_DYNAMIC_DISPATCH(FilterRows)(layout, guides, !in.depth.empty(), from, to, 1 << pass, rows.begin(), rows.end());
     });
   }
   tbb::parallel_for(tbb::blocked_range<int>(0, h, 8), [&](const tbb::blocked_range<int>& rows) {

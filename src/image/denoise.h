@@ -1,13 +1,15 @@
 // The path tracer's denoiser: the edge-avoiding À-trous wavelet filter of Dammertz, Sewtz, Hanika
 // and Lensch ("Edge-Avoiding À-Trous Wavelet Transform for fast Global Illumination Filtering",
-// HPG 2010), guided by the first non-specular hit's albedo and normal, with the colour's edge
+// HPG 2010), guided by the first non-specular hit's albedo, normal and depth (z, its distance from
+// the eye: compared relative to itself and to the taps' distance), with the colour's edge
 // stopping scaled by each pixel's estimated variance as in Schied et al.'s SVGF (HPG 2017):
 //   three passes i = 0..2 of a 3×3 kernel h = (1 2 1)/4 ⊗ (1 2 1)/4 whose taps lie 2^i pixels apart
 //   (Dammertz et al.'s 5×5 B3 spline over five passes blurred more than the noise needs once the
 //   colour term scales with the variance: bench/denoise.sh's error fell on all three inputs, in
 //   a third of the time),
 //   c'(p) = Σ_q h(q) w(p,q) c(q) / Σ_q h(q) w(p,q),
-//   w(p,q) = exp(−(l_p − l_q)² / (σ_c²·var(p) + ε) − |n_p − n_q|² / σ_n² − |a_p − a_q|² / σ_a²),
+//   w(p,q) = exp(−(l_p − l_q)² / (σ_c²·var(p) + ε) − |n_p − n_q|² / σ_n² − |a_p − a_q|² / σ_a²
+//                − (ln z_p − ln z_q)² / (σ_z·2^i)²),
 //   (l the colour's luminance; var the variance of its mean, blurred 3×3 before the first pass),
 //   var'(p) = Σ (h w)² var(q) / (Σ h w)²   (the variance of the filtered value, for the next pass).
 // The colour filtered is the radiance divided by the albedo (texture detail is put back after,
@@ -43,6 +45,9 @@ struct DenoiseInput {
   // Per pixel: the variance of the mean of the samples' luminances, each sample's radiance
   // divided by its albedo (demodulationOf each channel).
   std::span<const float> variance;
+  // Per pixel: the mean distance from the eye to the first hit (0 where nothing was hit); empty:
+  // not a guide.
+  std::span<const float> depth = {};
 };
 
 // The rows [first, end) of a layer that have anything in it (a normal: something was seen there).

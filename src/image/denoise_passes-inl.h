@@ -41,8 +41,10 @@ HWY_INLINE V LuminanceOf(D d, const V (&c)[3]) {
 }
 
 // One pass over rows [y0, y1): `in` filtered into `out` (colour and variance planes), taps `step`
-// pixels apart (the output's luminance written beside its colour, for the next pass).
-void FilterRows(const Layout& layout, const Guides& guides, const Planes& in, Planes& out, int step, int y0, int y1) {
+// pixels apart (the output's luminance written beside its colour, for the next pass); the depth
+// compared where the guides have one.
+void FilterRows(const Layout& layout, const Guides& guides, bool depths, const Planes& in, Planes& out, int step, int y0,
+                int y1) {
   const hn::ScalableTag<float> d;
   using V = hn::VFromD<decltype(d)>;
   const int lanes = int(hn::Lanes(d));
@@ -54,6 +56,7 @@ void FilterRows(const Layout& layout, const Guides& guides, const Planes& in, Pl
   };
   const std::ptrdiff_t stride = layout.stride;
   const V centreWeight = hn::Set(d, kKernel[1] * kKernel[1]);
+  const V depthScale = hn::Set(d, 1.0f / float(step * step));  // depths differ with the taps' distance
   for (int y = y0; y < y1; ++y)
     for (int x = 0; x < layout.width; x += lanes) {  // the last vector's rest lands in the padding
       const std::size_t p = layout.at(x, y);
@@ -64,6 +67,7 @@ void FilterRows(const Layout& layout, const Guides& guides, const Planes& in, Pl
         a[k] = hn::LoadU(d, guides.albedo[k].data() + p);
       }
       const V l = hn::LoadU(d, in.luminance.data() + p);
+      const V z = hn::LoadU(d, guides.depth.data() + p);
       const V invColor2 = hn::Div(hn::Set(d, 1.0f), hn::Add(hn::Mul(sigmaColor2, hn::LoadU(d, in.variance.data() + p)), epsilon));
       V sumW = hn::Zero(d), sumV = hn::Zero(d), sum[3] = {hn::Zero(d), hn::Zero(d), hn::Zero(d)};
       for (int dy = -1; dy <= 1; ++dy)
@@ -82,6 +86,7 @@ void FilterRows(const Layout& layout, const Guides& guides, const Planes& in, Pl
             dg = hn::Add(dg, squared(n[k], hn::LoadU(d, guides.normal[k].data() + q)));
             dg = hn::Add(dg, squared(a[k], hn::LoadU(d, guides.albedo[k].data() + q)));
           }
+          if (depths) dg = hn::Add(dg, hn::Mul(squared(z, hn::LoadU(d, guides.depth.data() + q)), depthScale));
           const V dc = squared(l, hn::LoadU(d, in.luminance.data() + q));
           const V e = hn::Add(hn::Mul(dc, invColor2), dg);
           const V w = hn::Mul(hn::Set(d, kKernel[dy + 1] * kKernel[dx + 1]), ExpNegative(d, hn::Neg(e)));

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace illum {
@@ -64,6 +65,37 @@ TEST(Denoise, RemovesNoiseOnAFlatSurface) {
     for (int c = 0; c < 3; ++c) after += std::pow(out[4 * i + std::size_t(c)] - 0.5, 2);
   EXPECT_LT(after, before / 50) << "mean squared error " << before / double(3 * p.variance.size()) << " → "
                                 << after / double(3 * p.variance.size());
+}
+
+TEST(Denoise, KeepsApartSurfacesOfOneNormalAndAlbedoAtDifferentDepths) {
+  // Fins and the gaps between them: the same normal and albedo, the left half 2 away from the eye
+  // and bright (0.8), the right half 3 away and dark (0.2), both noisy (±0.3, more than the colour
+  // term alone can tell from their difference). With the depth as a guide the column beside the
+  // edge keeps its side's mean; without it the dark side is blurred into it.
+  Noisy p(64, 48);
+  std::vector<float> depth(p.variance.size());
+  for (int y = 0; y < p.h; ++y)
+    for (int x = 0; x < p.w; ++x) {
+      const std::size_t i = p.index(x, y);
+      const bool left = x < p.w / 2;
+      for (int c = 0; c < 3; ++c)
+        p.color[4 * i + std::size_t(c)] = (left ? 0.8f : 0.2f) + 0.3f * noise(std::uint32_t(3 * i) + std::uint32_t(c));
+      p.variance[i] = 0.09f / 3;
+      depth[i] = left ? 2.0f : 3.0f;
+    }
+  std::vector<float> guided(p.color.size()), unguided(p.color.size());
+  denoise({p.w, p.h, p.color, p.albedo, p.normal, p.variance, depth}, guided);
+  denoise({p.w, p.h, p.color, p.albedo, p.normal, p.variance}, unguided);
+  const auto columnMean = [&](const std::vector<float>& out, int x) {
+    double sum = 0;
+    for (int y = 0; y < p.h; ++y) sum += out[4 * p.index(x, y)];
+    return sum / p.h;
+  };
+  for (const auto& [x, mean] : {std::pair(p.w / 2 - 1, 0.8), std::pair(p.w / 2, 0.2)}) {
+    const double kept = std::abs(columnMean(guided, x) - mean), blurred = std::abs(columnMean(unguided, x) - mean);
+    EXPECT_LT(kept, 0.025) << "column " << x;  // what is left of the noise
+    EXPECT_GT(blurred, 2 * kept) << "column " << x;
+  }
 }
 
 TEST(Denoise, DimsABrightPixelItsNoiseExplainsAndKeepsAConvergedOne) {

@@ -37,11 +37,14 @@ class MemoryStream final : public Imf::OStream {
 
 constexpr const char* kChannelNames[4] = {"R", "G", "B", "A"};
 
-// The slices of `channels` interleaved floats per pixel, named `prefix` + R, G, B (, A).
+// Channel c of a layer of `channels`: R, G, B (, A), or Z alone (a depth, as OpenEXR names it).
+const char* channelName(int c, int channels) { return channels == 1 ? "Z" : kChannelNames[c]; }
+
+// The slices of `channels` interleaved floats per pixel, named `prefix` + their channel's name.
 void insertSlices(Imf::FrameBuffer& fb, const std::string& prefix, const float* base, int channels, int width) {
   const std::size_t pixel = std::size_t(channels) * sizeof(float), row = pixel * std::size_t(width);
   for (int c = 0; c < channels; ++c)
-    fb.insert(prefix + kChannelNames[c],
+    fb.insert(prefix + channelName(c, channels),
               Imf::Slice(Imf::FLOAT, const_cast<char*>(reinterpret_cast<const char*>(base + c)), pixel, row));
 }
 
@@ -60,7 +63,7 @@ std::vector<std::uint8_t> encodeExr(const FloatImage& image) {
   Imf::FrameBuffer fb = frameBuffer(image.rgba.data(), image.width);
   for (const FloatLayer& layer : image.layers) {
     for (int c = 0; c < layer.channels; ++c)
-      header.channels().insert(layer.name + "." + kChannelNames[c], Imf::Channel(Imf::FLOAT));
+      header.channels().insert(layer.name + "." + channelName(c, layer.channels), Imf::Channel(Imf::FLOAT));
     insertSlices(fb, layer.name + ".", layer.values.data(), layer.channels, image.width);
   }
   MemoryStream stream;

@@ -164,7 +164,7 @@ Color3 PathTracer::walk(Walk w, Rng& rng, RayCounts& counts, const PathSample& s
     if (chance < 1 && (w.features || w.mirrorGuides)) {
       const Color3 albedo = glm::min((Color3(1) - k) * bsdf.albedo() + k + emission, Color3(1));
       if (w.features) {
-        w.features->albedo = albedo, w.features->normal = N;
+        w.features->albedo = albedo, w.features->normal = N, w.features->depth = glm::length(h.position);
         if (chance > 0) w.mirrorGuides = w.features;  // its mirror's, found by the split below
         w.features = nullptr;
       } else {  // past the split's mirror

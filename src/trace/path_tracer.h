@@ -37,6 +37,7 @@ struct PathFeatures {
   Color3 direct{0};
   Color3 albedo{0};
   Vec3 normal{0};
+  Real depth = 0;  // the distance from the eye to that surface
   bool mirrored = false;
   Color3 mirroredRadiance{0};
   Color3 mirrorAlbedo{0};

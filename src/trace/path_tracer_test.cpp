@@ -477,6 +477,16 @@ TEST(PathTracer, TheFirstSurfacesLightFromPointLightsIsExactAndNotFiltered) {
     lampVaries += std::abs(beauty.values[4 * i] - beauty.values[0]) > 1e-3f;
   }
   EXPECT_GT(lampVaries, 100);  // the rest is noisy: what the filter is for
+  // The wall's depth, a guide too: its distance from the eye, 4 straight ahead, 4/cos θ aside.
+  const FloatLayer& depth = layerOf(linear, "depth");
+  ASSERT_EQ(depth.channels, 1);
+  for (std::size_t i = 0; i < depth.values.size(); ++i) {
+    const int x = int(i % 32), y = int(i / 32);
+    const float wall = linear.pixel(x, y)[3] > 0 ? 4.0f : 0.0f;
+    EXPECT_GE(depth.values[i], wall) << "pixel " << i;
+    EXPECT_LT(depth.values[i], 4.6f) << "pixel " << i;
+  }
+  EXPECT_NEAR(depth.values[16 * 32 + 16], 4.0f, 0.01f);
   light.diffuse = Color3(1.0f / 40);
   s.lights.assign(40, light);
   renderScene(s, nullptr, nullptr, &linear);

@@ -54,8 +54,9 @@ struct TileCounts {
 // hits) is exact but for the pixel's own sampling: it is taken out of the surfaces' layer, not
 // filtered, and added back after.
 struct DenoiseLayer {
-  std::vector<float> color, albedo, normal, variance;
-  explicit DenoiseLayer(std::size_t pixels) : color(4 * pixels), albedo(3 * pixels), normal(3 * pixels), variance(pixels) {}
+  std::vector<float> color, albedo, normal, variance, depth;
+  explicit DenoiseLayer(std::size_t pixels)
+      : color(4 * pixels), albedo(3 * pixels), normal(3 * pixels), variance(pixels), depth(pixels) {}
 };
 struct DenoiseBuffers {
   std::vector<float> beauty, coverage, direct;
@@ -72,9 +73,10 @@ struct LayerSums {
   Real luminance = 0, luminanceSquared = 0;
   Color3 albedo{0};
   Vec3 normal{0};
+  Real depth = 0;
   int guided = 0;
 
-  void add(const Color3& value, const Color3& guideAlbedo, const Vec3& guideNormal, bool guides) {
+  void add(const Color3& value, const Color3& guideAlbedo, const Vec3& guideNormal, Real guideDepth, bool guides) {
     radiance += value;
     Color3 demodulated;
     for (int k = 0; k < 3; ++k) demodulated[k] = value[k] / Real(demodulationOf(float(guideAlbedo[k])));
@@ -84,6 +86,7 @@ struct LayerSums {
     if (!guides) return;
     albedo += guideAlbedo;
     normal += guideNormal;
+    depth += guideDepth;
     ++guided;
   }
 
@@ -96,6 +99,7 @@ struct LayerSums {
       out.albedo[3 * i + std::size_t(k)] = float(albedo[k] / guides);
       out.normal[3 * i + std::size_t(k)] = float(normal[k] / guides);
     }
+    out.depth[i] = float(depth / guides);
     const Real mean = luminance / hits;
     out.variance[i] = float(std::max(Real(0), luminanceSquared / hits - mean * mean) / hits);
   }
@@ -248,9 +252,9 @@ class TracedFrame {
           pixel.direct += guides.direct;
           pixel.directLuminance += directLuminance;
           pixel.directLuminanceSquared += directLuminance * directLuminance;
-          pixel.surface.add(surface - guides.direct, guides.albedo, guides.normal, true);
-          pixel.surfaceWithDirect.add(surface, guides.albedo, guides.normal, true);
-          pixel.mirrored.add(guides.mirroredRadiance, guides.mirrorAlbedo, guides.mirrorNormal, guides.mirrored);
+          pixel.surface.add(surface - guides.direct, guides.albedo, guides.normal, guides.depth, true);
+          pixel.surfaceWithDirect.add(surface, guides.albedo, guides.normal, guides.depth, true);
+          pixel.mirrored.add(guides.mirroredRadiance, guides.mirrorAlbedo, guides.mirrorNormal, 0, guides.mirrored);
         }
         continue;
       }
@@ -320,7 +324,7 @@ void traceScene(const Scene& scene, Image& image, RenderStats& stats, PixelProbe
     // The radiance of the samples that hit something is filtered (the background stays out of
     // it), then laid over the background by each pixel's coverage.
     const auto input = [&](const DenoiseLayer& layer) {
-      return DenoiseInput{scene.width, scene.height, layer.color, layer.albedo, layer.normal, layer.variance};
+      return DenoiseInput{scene.width, scene.height, layer.color, layer.albedo, layer.normal, layer.variance, layer.depth};
     };
     std::vector<float> filtered(denoised->surface.color.size());
     if (denoised->mirrored.variance.empty())
@@ -341,6 +345,7 @@ void traceScene(const Scene& scene, Image& image, RenderStats& stats, PixelProbe
       linear->layers.push_back({"albedo", 3, std::move(denoised->surface.albedo)});
       linear->layers.push_back({"normal", 3, std::move(denoised->surface.normal)});
       linear->layers.push_back({"direct", 3, std::move(denoised->direct)});
+      linear->layers.push_back({"depth", 1, std::move(denoised->surface.depth)});
       if (!denoised->mirrored.variance.empty() && !layerRows(input(denoised->mirrored)).empty()) {
         // What the part mirrors reflected, and its guides.
         const std::vector<float>& rgba = denoised->mirrored.color;
