@@ -7,6 +7,7 @@
 #include "scene/model_format.h"
 #include "scene/model_precheck.h"
 #include "scene/texture_lookup.h"
+#include "scene/texture_transform.h"
 
 #include <assimp/DefaultIOSystem.h>
 #include <assimp/DefaultLogger.hpp>
@@ -83,7 +84,9 @@ void releaseMeshArrays(aiMesh& m) {
 
 // One assimp mesh as an illum mesh, with normals chosen by `options`; the assimp mesh's arrays
 // are released (releaseMeshArrays) once copied.
-Mesh convertMesh(aiMesh& m, const fs::path& path, const ImportOptions& options, bool normalsArePerFace) {
+// `uvChannel`: the texture coordinates its material's textures read (materialUvChannel).
+Mesh convertMesh(aiMesh& m, const fs::path& path, const ImportOptions& options, bool normalsArePerFace,
+                 unsigned uvChannel) {
   const std::string where = path.string() + ": mesh \"" + m.mName.C_Str() + "\"";
   Mesh mesh;
   mesh.positions.reserve(m.mNumVertices);
@@ -104,9 +107,10 @@ Mesh convertMesh(aiMesh& m, const fs::path& path, const ImportOptions& options, 
       mesh.normals.push_back(len > Real(1e-12) && std::isfinite(len) ? nv / len : Vec3(0));
     }
   }
-  if (m.mTextureCoords[0]) {
+  if (uvChannel >= AI_MAX_NUMBER_OF_TEXTURECOORDS || !m.mTextureCoords[uvChannel]) uvChannel = 0;
+  if (const aiVector3D* uvs = m.mTextureCoords[uvChannel]) {
     mesh.uvs.reserve(m.mNumVertices);
-    for (unsigned v = 0; v < m.mNumVertices; ++v) mesh.uvs.push_back({m.mTextureCoords[0][v].x, m.mTextureCoords[0][v].y});
+    for (unsigned v = 0; v < m.mNumVertices; ++v) mesh.uvs.push_back({uvs[v].x, uvs[v].y});
   }
   if (m.mColors[0]) {
     mesh.colors.reserve(m.mNumVertices);
@@ -241,6 +245,42 @@ std::shared_ptr<const Texture> loadTexture(const aiScene& scene, const std::stri
   std::copy(data, data + img.rgba.size(), img.rgba.begin());
   stbi_image_free(data);
   return std::make_shared<const Texture>(std::move(img), TexelEncoding::Linear, wraps);
+}
+
+// The texture kinds illum draws, in the order it looks them up: the base colour first.
+constexpr aiTextureType kDrawnTextures[] = {aiTextureType_BASE_COLOR, aiTextureType_DIFFUSE,   aiTextureType_UNKNOWN,
+                                            aiTextureType_METALNESS,  aiTextureType_DIFFUSE_ROUGHNESS,
+                                            aiTextureType_NORMALS,    aiTextureType_EMISSIVE};
+
+// The texture coordinates (assimp's UV channel) that a material's textures read, as one set: its
+// first drawn texture's (glTF's texCoord), with that texture's KHR_texture_transform (`gltf`). A
+// mesh keeps one set of coordinates, so a texture of the material that reads another set, or
+// transforms it otherwise, is sampled with these: a warning says so.
+struct MaterialUv {
+  unsigned channel = 0;
+  std::optional<UvTransform> transform;
+};
+MaterialUv materialUv(const aiMaterial& material, bool gltf, const fs::path& path, std::vector<std::string>& warnings) {
+  std::optional<MaterialUv> first;
+  bool mixed = false;
+  for (aiTextureType type : kDrawnTextures) {
+    aiString name;
+    if (material.GetTexture(type, 0, &name) != AI_SUCCESS) continue;
+    MaterialUv uv;
+    int channel = 0;
+    if (material.Get(AI_MATKEY_UVWSRC(type, 0), channel) == AI_SUCCESS && channel >= 0 &&
+        channel < AI_MAX_NUMBER_OF_TEXTURECOORDS)
+      uv.channel = unsigned(channel);
+    aiUVTransform t;
+    if (gltf && material.Get(AI_MATKEY_UVTRANSFORM(type, 0), t) == AI_SUCCESS) uv.transform = fromAssimpGltf(t);
+    if (!first) first = uv;
+    else mixed = mixed || first->channel != uv.channel || first->transform != uv.transform;
+  }
+  if (mixed)
+    warnings.push_back(path.string() + ": material \"" + material.GetName().C_Str() +
+                       "\": its textures read different texture coordinates (or transform them differently); all "
+                       "are sampled with its first texture's");
+  return first.value_or(MaterialUv{});
 }
 
 // A material's texture's wrap modes (glTF's sampler, Collada's and FBX's wrap flags, as assimp
@@ -467,10 +507,16 @@ ImportedModel importModelInProcess(const fs::path& path, const ImportOptions& op
 
   ImportedModel model;
   const bool stl = ext == ".stl";  // STL stores one normal per facet
+  std::vector<MaterialUv> uvs;
+  for (unsigned i = 0; i < scene->mNumMaterials; ++i)
+    uvs.push_back(materialUv(*scene->mMaterials[i], ext == ".gltf" || ext == ".glb", path, model.warnings));
   std::vector<std::shared_ptr<const Mesh>> meshes(scene->mNumMeshes);
   for (unsigned i = 0; i < scene->mNumMeshes; ++i) {
     aiMesh& m = *scene->mMeshes[i];  // the importer's: released as it is converted
-    meshes[i] = std::make_shared<const Mesh>(convertMesh(m, path, options, stl));
+    const MaterialUv uv = m.mMaterialIndex < uvs.size() ? uvs[m.mMaterialIndex] : MaterialUv{};
+    Mesh mesh = convertMesh(m, path, options, stl, uv.channel);
+    if (uv.transform) applyUvTransform(*uv.transform, mesh.uvs);
+    meshes[i] = std::make_shared<const Mesh>(std::move(mesh));
   }
   std::vector<Material> materials;
   struct MaterialTextures {

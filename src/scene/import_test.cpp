@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -159,8 +160,10 @@ std::string base64(const std::vector<std::uint8_t>& bytes) {
   return out;
 }
 
-// A glTF quad whose material has all of glTF's maps, each a PNG of one colour beside the file.
-fs::path writeMappedQuad(const fs::path& dir) {
+// A glTF quad whose material has all of glTF's maps, each a PNG of one colour beside the file;
+// `baseColorInfo` and `otherInfo`: what the base colour's and the other maps' textureInfo objects
+// hold besides their index (extensions).
+fs::path writeMappedQuad(const fs::path& dir, const std::string& baseColorInfo = "", const std::string& otherInfo = "") {
   fs::create_directories(dir);
   const auto png = [&](const char* name, std::uint8_t r, std::uint8_t g, std::uint8_t b) {
     Image image(2, 2);
@@ -181,12 +184,14 @@ fs::path writeMappedQuad(const fs::path& dir) {
   put(std::vector<float>{0, 1, 1, 1, 1, 0, 0, 0});                   // 32 of uvs
   put(std::vector<std::uint16_t>{0, 1, 2, 0, 2, 3});                 // 12 of indices
   std::ofstream(dir / "quad.gltf") << R"({
-  "asset": {"version": "2.0"},
+  "asset": {"version": "2.0"}, "extensionsUsed": ["KHR_texture_transform"],
   "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
   "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1, "TEXCOORD_0": 2}, "indices": 3, "material": 0}]}],
-  "materials": [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}, "metallicRoughnessTexture": {"index": 1},
+  "materials": [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0)" + baseColorInfo + R"(},
+                                          "metallicRoughnessTexture": {"index": 1)" + otherInfo + R"(},
                                           "metallicFactor": 1, "roughnessFactor": 0.5},
-                 "normalTexture": {"index": 2, "scale": 0.5}, "emissiveTexture": {"index": 3}, "emissiveFactor": [1, 1, 1]}],
+                 "normalTexture": {"index": 2, "scale": 0.5)" + otherInfo + R"(},
+                 "emissiveTexture": {"index": 3)" + otherInfo + R"(}, "emissiveFactor": [1, 1, 1]}],
   "textures": [{"source": 0}, {"source": 1}, {"source": 2}, {"source": 3}],
   "images": [{"uri": "base.png"}, {"uri": "mr.png"}, {"uri": "normal.png"}, {"uri": "emissive.png"}],
   "buffers": [{"byteLength": 140, "uri": "data:application/octet-stream;base64,)" + base64(buffer) + R"("}],
@@ -222,6 +227,71 @@ TEST(Import, GltfMapsReachTheObjectInProcessAndIsolated) {
     EXPECT_FLOAT_EQ(o.maps.normalScale, 0.5f);
     EXPECT_EQ(m.textureCount, 4u);
   }
+  fs::remove_all(file.parent_path());
+}
+
+// KHR_texture_transform, as its specification states it: uv' = T·R·S·uv in glTF's texture space
+// (v down; illum's coordinates have v up), R = [cos r, sin r; −sin r, cos r]. The quad's corners
+// (0,1), (1,1), (1,0), (0,0) in glTF's space land where that matrix puts them, in process and
+// through the child process.
+TEST(Import, GltfTextureTransformIsBakedIntoTheCoordinates) {
+  const std::string transform =
+      R"(, "extensions": {"KHR_texture_transform": {"offset": [0.25, -0.5], "rotation": 0.5, "scale": [2, 3]}})";
+  const fs::path file = writeMappedQuad(fs::temp_directory_path() / "illum_gltf_transform_test", transform, transform);
+  const double r = 0.5, sx = 2, sy = 3, ox = 0.25, oy = -0.5;
+  const std::array<std::array<double, 2>, 4> corners = {{{0, 1}, {1, 1}, {1, 0}, {0, 0}}};
+  for (bool isolated : {false, true}) {
+    const ImportedModel m = isolated ? importModel(file) : importModelInProcess(file);
+    ASSERT_EQ(m.objects.size(), 1u);
+    EXPECT_TRUE(m.warnings.empty()) << m.warnings.front();
+    const std::vector<Vec2>& uvs = m.objects[0].mesh->uvs;
+    ASSERT_EQ(uvs.size(), 4u);
+    for (std::size_t i = 0; i < 4; ++i) {
+      const double u = corners[i][0], v = corners[i][1];
+      const double u2 = std::cos(r) * sx * u + std::sin(r) * sy * v + ox;
+      const double v2 = -std::sin(r) * sx * u + std::cos(r) * sy * v + oy;
+      EXPECT_NEAR(uvs[i].x, u2, 1e-5) << i << " " << isolated;
+      EXPECT_NEAR(uvs[i].y, 1 - v2, 1e-5) << i << " " << isolated;
+    }
+  }
+  fs::remove_all(file.parent_path());
+}
+
+// Khronos' TextureTransformTest (assimp-testmodels): each of its top row's squares reads UV.png
+// offset by half of it, onto a coloured quarter that says "U", "V" or "UV" (green, blue, cyan);
+// untransformed they read its yellow "not supported" quarter.
+TEST(Import, TextureTransformTestsTopRowReadsItsOffsetQuarters) {
+  const ImportedModel m = importModel("/usr/share/assimp/models/glTF2/textureTransform/TextureTransformTest.gltf");
+  std::vector<Vec4> seen;
+  for (const Object& o : m.objects) {
+    if (!o.diffuseTexture || o.diffuseTexture->width() != m.objects[0].diffuseTexture->width()) continue;
+    Vec2 mean(0);
+    for (const Vec2& uv : o.mesh->uvs) mean += uv / Real(o.mesh->uvs.size());
+    seen.push_back(o.diffuseTexture->sample(mean, 1));
+  }
+  ASSERT_GE(seen.size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i) {
+    const Vec4& c = seen[i];
+    const bool yellow = c.r > 0.5 && c.g > 0.5 && c.b < 0.3;
+    EXPECT_FALSE(yellow) << i << ": " << c.r << " " << c.g << " " << c.b;
+    EXPECT_GT(std::max(c.g, c.b), 0.5) << i;
+  }
+}
+
+// One set of coordinates per mesh: where the maps transform theirs otherwise than the base colour,
+// the base colour's transform is the one kept, and a warning names the material.
+TEST(Import, GltfTexturesTransformedOtherwiseAreSampledWithTheBaseColoursAndSaySo) {
+  const fs::path file = writeMappedQuad(fs::temp_directory_path() / "illum_gltf_mixed_transform_test",
+                                        R"(, "extensions": {"KHR_texture_transform": {"offset": [0.5, 0]}})");
+  const ImportedModel m = importModel(file);
+  ASSERT_EQ(m.objects.size(), 1u);
+  ASSERT_EQ(m.warnings.size(), 1u);
+  EXPECT_NE(m.warnings[0].find("transform them differently"), std::string::npos) << m.warnings[0];
+  const std::vector<Vec2>& uvs = m.objects[0].mesh->uvs;
+  ASSERT_EQ(uvs.size(), 4u);
+  EXPECT_NEAR(uvs[0].x, 0.5, 1e-6);  // glTF (0, 1): GL (0, 0), moved half a texture right
+  EXPECT_NEAR(uvs[0].y, 0, 1e-6);
+  EXPECT_NEAR(uvs[1].x, 1.5, 1e-6);
   fs::remove_all(file.parent_path());
 }
 
