@@ -25,6 +25,7 @@
 #include <utility>
 #include <cmath>
 #include <map>
+#include <set>
 #include <tuple>
 #include <optional>
 #include <system_error>
@@ -499,7 +500,9 @@ ImportedModel importModelInProcess(const fs::path& path, const ImportOptions& op
   if (faces > options.limits.maxTriangles)
     throw InputError(path.string() + ": the model has " + withThousands(faces) + " faces, more than the limit of " +
                      withThousands(options.limits.maxTriangles) + " triangles (raise it with --max-triangles)");
-  scene = importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_SortByPType);
+  // GenUVCoords: a texture mapped spherically, cylindrically, onto a plane or a box (LightWave's,
+  // 3DS's and others' projections) gets coordinates of its own, as a UV-mapped one has them.
+  scene = importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_SortByPType | aiProcess_GenUVCoords);
   if (!scene) readFailed(path, importer);
   if ((scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !scene->mRootNode || scene->mNumMeshes == 0)
     throw InputError(path.string() + ": the model has no triangles, lines or points");
@@ -569,6 +572,7 @@ ImportedModel importModelInProcess(const fs::path& path, const ImportOptions& op
   std::vector<std::pair<const aiNode*, Mat4>> stack = {{scene->mRootNode, Mat4(1)}};
   std::size_t visited = 0;
   bool drawable = false;
+  std::set<unsigned> untexturedMeshes;  // warned of once, however many nodes draw them
   while (!stack.empty()) {
     auto [node, parent] = stack.back();
     stack.pop_back();
@@ -585,6 +589,10 @@ ImportedModel importModelInProcess(const fs::path& path, const ImportOptions& op
         o.material = materials[mat];
         o.diffuseTexture = textures[mat].diffuse;
         o.maps = textures[mat].maps;
+        if ((o.diffuseTexture || o.maps.any()) && o.mesh->uvs.empty() && !o.mesh->indices.empty() &&
+            untexturedMeshes.insert(mi).second)
+          model.warnings.push_back(path.string() + ": mesh \"" + scene->mMeshes[mi]->mName.C_Str() +
+                                   "\" has textures but no texture coordinates; rendering it untextured");
       }
       for (const Vec3& p : o.mesh->positions) {
         const Vec3 w = Vec3(world * Vec4(p, 1));

@@ -278,6 +278,42 @@ TEST(Import, TextureTransformTestsTopRowReadsItsOffsetQuarters) {
   }
 }
 
+// LightWave's spherical mapping (assimp-testmodels' earth): the texture gets coordinates of its own
+// (assimp's GenUVCoords), v following the latitude, as the reference picture beside it shows.
+TEST(Import, SphericallyMappedTexturesGetCoordinates) {
+  const ImportedModel m = importModel("/usr/share/assimp/models/LWO/LWO2/MappingModes/earth_spherical_y.lwo");
+  ASSERT_EQ(m.objects.size(), 1u);
+  const Mesh& mesh = *m.objects[0].mesh;
+  ASSERT_TRUE(m.objects[0].diffuseTexture);
+  ASSERT_EQ(mesh.uvs.size(), mesh.positions.size());
+  // v against the latitude's sine (the sphere is centred on its box): a correlation near ±1.
+  Vec3 lo(1e30f), hi(-1e30f);
+  for (const Vec3& p : mesh.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+  const Vec3 centre = (lo + hi) / Real(2);
+  double sv = 0, sy = 0, svv = 0, syy = 0, svy = 0;
+  const double n = double(mesh.uvs.size());
+  for (std::size_t i = 0; i < mesh.uvs.size(); ++i) {
+    const Vec3 d = glm::normalize(mesh.positions[i] - centre);
+    const double v = mesh.uvs[i].y, y = std::asin(std::clamp(double(d.y), -1.0, 1.0));
+    sv += v, sy += y, svv += v * v, syy += y * y, svy += v * y;
+  }
+  const double correlation = (svy - sv * sy / n) / std::sqrt((svv - sv * sv / n) * (syy - sy * sy / n));
+  EXPECT_GT(std::abs(correlation), 0.99) << correlation;
+}
+
+// A material with a texture on a mesh without coordinates is drawn untextured, and says so.
+TEST(Import, TexturesWithoutCoordinatesAreReported) {
+  const fs::path dir = fs::temp_directory_path() / "illum_texture_without_uvs_test";
+  fs::create_directories(dir);
+  writePng(dir / "t.png", Image(2, 2));
+  std::ofstream(dir / "m.mtl") << "newmtl textured\nKd 1 1 1\nmap_Kd t.png\n";
+  std::ofstream(dir / "m.obj") << "mtllib m.mtl\nusemtl textured\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  const ImportedModel m = importModel(dir / "m.obj");
+  ASSERT_EQ(m.warnings.size(), 1u);
+  EXPECT_NE(m.warnings[0].find("no texture coordinates"), std::string::npos) << m.warnings[0];
+  fs::remove_all(dir);
+}
+
 // One set of coordinates per mesh: where the maps transform theirs otherwise than the base colour,
 // the base colour's transform is the one kept, and a warning names the material.
 TEST(Import, GltfTexturesTransformedOtherwiseAreSampledWithTheBaseColoursAndSaySo) {
