@@ -119,6 +119,10 @@ Mesh convertMesh(aiMesh& m, const fs::path& path, const ImportOptions& options, 
       const aiColor4D& c = m.mColors[0][v];
       mesh.colors.push_back(glm::clamp(Vec4(c.r, c.g, c.b, c.a), Vec4(0), Vec4(1)));
     }
+    // Every vertex transparent black is a reader's placeholder for "no colours" (assimp's AMF
+    // reader fills the array so when the file gives none), not colours meant to hide the model.
+    if (std::all_of(mesh.colors.begin(), mesh.colors.end(), [](const Vec4& c) { return c == Vec4(0); }))
+      mesh.colors.clear();
   }
   // Triangles, line segments and points (SortByPType gives each kind a mesh of its own).
   if (m.mPrimitiveTypes == aiPrimitiveType_TRIANGLE) mesh.indices.reserve(3 * std::size_t(m.mNumFaces));
@@ -248,6 +252,12 @@ std::shared_ptr<const Texture> loadTexture(const aiScene& scene, const std::stri
   return std::make_shared<const Texture>(std::move(img), TexelEncoding::Linear, wraps);
 }
 
+// Whether the material has a texture of `type` (its first), and its name: one with an empty name
+// (MD5's, where the file names no shader image) is none.
+bool hasTexture(const aiMaterial& material, aiTextureType type, aiString& name) {
+  return material.GetTexture(type, 0, &name) == AI_SUCCESS && name.length > 0;
+}
+
 // The texture kinds illum draws, in the order it looks them up: the base colour first.
 constexpr aiTextureType kDrawnTextures[] = {aiTextureType_BASE_COLOR, aiTextureType_DIFFUSE,   aiTextureType_UNKNOWN,
                                             aiTextureType_METALNESS,  aiTextureType_DIFFUSE_ROUGHNESS,
@@ -266,7 +276,7 @@ MaterialUv materialUv(const aiMaterial& material, bool gltf, const fs::path& pat
   bool mixed = false;
   for (aiTextureType type : kDrawnTextures) {
     aiString name;
-    if (material.GetTexture(type, 0, &name) != AI_SUCCESS) continue;
+    if (!hasTexture(material, type, name)) continue;
     MaterialUv uv;
     int channel = 0;
     if (material.Get(AI_MATKEY_UVWSRC(type, 0), channel) == AI_SUCCESS && channel >= 0 &&
@@ -540,7 +550,7 @@ ImportedModel importModelInProcess(const fs::path& path, const ImportOptions& op
     const auto texture = [&](std::initializer_list<aiTextureType> types) -> std::shared_ptr<const Texture> {
       aiString name;
       for (aiTextureType type : types) {
-        if (am.GetTexture(type, 0, &name) != AI_SUCCESS) continue;
+        if (!hasTexture(am, type, name)) continue;
         const TextureWraps wraps = textureWraps(am, type);
         auto [it, inserted] = textureByName.try_emplace({name.C_Str(), wraps.s, wraps.t}, nullptr);
         if (inserted) it->second = loadTexture(*scene, name.C_Str(), wraps, companionDir, model.warnings, model.files,

@@ -301,6 +301,24 @@ TEST(Import, SphericallyMappedTexturesGetCoordinates) {
   EXPECT_GT(std::abs(correlation), 0.99) << correlation;
 }
 
+// assimp's AMF reader fills a file without colours with transparent black vertex colours: no
+// colours at all, drawn in the material's (not black, and no transparency to repair).
+TEST(Import, PlaceholderVertexColoursAreNoColours) {
+  const ImportedModel m = importModel("/usr/share/assimp/models/AMF/test1.amf");
+  ASSERT_EQ(m.objects.size(), 1u);
+  EXPECT_TRUE(m.objects[0].mesh->colors.empty());
+  EXPECT_FALSE(m.transparencyIgnored);
+  EXPECT_TRUE(m.warnings.empty()) << m.warnings.front();
+}
+
+// MD5's mesh names no shader image: an empty texture name is no texture, and nothing to warn of.
+TEST(Import, AnEmptyTextureNameIsNoTexture) {
+  const ImportedModel m = importModel("/usr/share/assimp/models/MD5/SimpleCube.md5mesh");
+  ASSERT_FALSE(m.objects.empty());
+  EXPECT_FALSE(m.objects[0].diffuseTexture);
+  EXPECT_TRUE(m.warnings.empty()) << m.warnings.front();
+}
+
 // A material with a texture on a mesh without coordinates is drawn untextured, and says so.
 TEST(Import, TexturesWithoutCoordinatesAreReported) {
   const fs::path dir = fs::temp_directory_path() / "illum_texture_without_uvs_test";
