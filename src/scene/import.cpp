@@ -187,6 +187,14 @@ FileMaterialValues readMaterial(const aiMaterial& m) {
   if (m.Get(AI_MATKEY_COLOR_EMISSIVE, c) == AI_SUCCESS) v.emission = {c.r, c.g, c.b};
   float f = 0;
   if (m.Get(AI_MATKEY_SHININESS, f) == AI_SUCCESS) v.shininess = f;
+  // A specular colour with no exponent at all (assimp leaves it out for 3DS's Gouraud materials and
+  // some ASE ones) would be GL's exponent 0: the colour added over the whole lit side, washing it
+  // out, which no modeller draws. No exponent, no highlight.
+  else v.hasSpecular = false;
+  // The highlight's strength, kept apart from its colour by 3ds Max (3DS, ASE) and FBX
+  // (SpecularFactor): it scales the colour, as those programs draw it.
+  if (v.hasSpecular && m.Get(AI_MATKEY_SHININESS_STRENGTH, f) == AI_SUCCESS && std::isfinite(f) && f >= 0)
+    v.specular *= f;
   if (m.Get(AI_MATKEY_OPACITY, f) == AI_SUCCESS) v.opacity = f;
   if (m.Get(AI_MATKEY_METALLIC_FACTOR, f) == AI_SUCCESS) {
     v.isMetallicRoughness = true;

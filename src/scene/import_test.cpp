@@ -311,6 +311,19 @@ TEST(Import, PlaceholderVertexColoursAreNoColours) {
   EXPECT_TRUE(m.warnings.empty()) << m.warnings.front();
 }
 
+// 3ds Max keeps a highlight's strength apart from its colour: 3DS's "shininess strength" 0.2
+// scales the white specular colour to 0.2. A specular colour with no exponent (ASE's cubes, whose
+// reader leaves it out) draws no highlight rather than GL's exponent 0 over the whole lit side.
+TEST(Import, SpecularStrengthScalesTheColourAndNoExponentIsNoHighlight) {
+  const ImportedModel strong = importModel("/usr/share/assimp/models/3DS/cube_with_specular_texture.3DS");
+  ASSERT_FALSE(strong.objects.empty());
+  EXPECT_NEAR(strong.objects[0].material.specular.r, 0.2, 1e-6);
+  EXPECT_NEAR(strong.objects[0].material.shininess, 15, 1e-6);
+  const ImportedModel cubes = importModel("/usr/share/assimp/models/ASE/ThreeCubesGreen.ASE");
+  ASSERT_FALSE(cubes.objects.empty());
+  for (const Object& o : cubes.objects) EXPECT_EQ(Color3(o.material.specular), Color3(0));
+}
+
 // MD5's mesh names no shader image: an empty texture name is no texture, and nothing to warn of.
 TEST(Import, AnEmptyTextureNameIsNoTexture) {
   const ImportedModel m = importModel("/usr/share/assimp/models/MD5/SimpleCube.md5mesh");
