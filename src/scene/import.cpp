@@ -591,6 +591,7 @@ ImportedModel importModelInProcess(const fs::path& path, const ImportOptions& op
   std::size_t visited = 0;
   bool drawable = false;
   std::set<unsigned> untexturedMeshes;  // warned of once, however many nodes draw them
+  std::map<unsigned, std::shared_ptr<const Mesh>> mirrored;  // meshes with their winding reversed
   while (!stack.empty()) {
     auto [node, parent] = stack.back();
     stack.pop_back();
@@ -602,6 +603,19 @@ ImportedModel importModelInProcess(const fs::path& path, const ImportOptions& op
       Object o;
       o.mesh = meshes[mi];
       o.worldFromObject = world;
+      // A mirroring transform (a negative scale: FBX's and Blender's mirrored instances) turns the
+      // triangles' winding around on screen, so that GL would light their outsides as back faces.
+      // Modelling programs and three.js keep them front faces; so does a preview: a mirrored
+      // instance draws the mesh with its winding reversed.
+      if (glm::determinant(Mat3(world)) < 0 && !o.mesh->indices.empty()) {
+        std::shared_ptr<const Mesh>& flipped = mirrored[mi];
+        if (!flipped) {
+          auto copy = std::make_shared<Mesh>(*o.mesh);
+          for (std::size_t t = 0; t + 2 < copy->indices.size(); t += 3) std::swap(copy->indices[t + 1], copy->indices[t + 2]);
+          flipped = std::move(copy);
+        }
+        o.mesh = flipped;
+      }
       const unsigned mat = scene->mMeshes[mi]->mMaterialIndex;
       if (mat < materials.size()) {
         o.material = materials[mat];

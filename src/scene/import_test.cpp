@@ -1,6 +1,7 @@
 #include <illum/framing.h>
 #include <illum/import.h>
 
+#include <glm/gtc/matrix_inverse.hpp>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -322,6 +323,35 @@ TEST(Import, SpecularStrengthScalesTheColourAndNoExponentIsNoHighlight) {
   const ImportedModel cubes = importModel("/usr/share/assimp/models/ASE/ThreeCubesGreen.ASE");
   ASSERT_FALSE(cubes.objects.empty());
   for (const Object& o : cubes.objects) EXPECT_EQ(Color3(o.material.specular), Color3(0));
+}
+
+// A mirrored instance (FBX's negative scales) keeps its outside a front face: in world space every
+// triangle's winding agrees with its vertices' normals, as it does in the file, so that GL's
+// two-sided lighting lights the outside.
+TEST(Import, MirroredInstancesKeepTheirFrontFaces) {
+  for (const char* file : {"FBX/cubes_with_mirroring_and_pivot.fbx"}) {
+    const ImportedModel m = importModel(fs::path("/usr/share/assimp/models") / file);
+    std::size_t triangles = 0, agreeing = 0;
+    bool mirrored = false;
+    for (const Object& o : m.objects) {
+      const Mat3 linear(o.worldFromObject);
+      mirrored = mirrored || glm::determinant(linear) < 0;
+      const Mat3 normalMatrix = glm::inverseTranspose(linear);
+      const Mesh& mesh = *o.mesh;
+      if (mesh.normals.empty()) continue;
+      for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+        const std::uint32_t a = mesh.indices[t], b = mesh.indices[t + 1], c = mesh.indices[t + 2];
+        const Vec3 geometric = glm::cross(linear * (mesh.positions[b] - mesh.positions[a]),
+                                          linear * (mesh.positions[c] - mesh.positions[a]));
+        const Vec3 shading = normalMatrix * (mesh.normals[a] + mesh.normals[b] + mesh.normals[c]);
+        ++triangles;
+        agreeing += glm::dot(geometric, shading) > 0;
+      }
+    }
+    EXPECT_TRUE(mirrored) << file;
+    EXPECT_GT(triangles, 0u) << file;
+    EXPECT_EQ(agreeing, triangles) << file;
+  }
 }
 
 // MD5's mesh names no shader image: an empty texture name is no texture, and nothing to warn of.
