@@ -527,7 +527,10 @@ ImportedModel importModelInProcess(const fs::path& path, const ImportOptions& op
   if (auto w = assimpWarnings.find("out-of-range")) throw InputError(path.string() + ": indices out of range: " + *w);
 
   ImportedModel model;
-  const bool stl = ext == ".stl";  // STL stores one normal per facet
+  // Normals the file has that do not say how its faces are shaded: STL stores one per facet, and
+  // assimp's Blender reader gives every vertex its smooth normal whether the face is smooth or
+  // solid ("Shade Flat", Blender's default cube). Both get crease normals unless --normals file.
+  const bool unshapedNormals = ext == ".stl" || ext == ".blend";
   std::vector<MaterialUv> uvs;
   for (unsigned i = 0; i < scene->mNumMaterials; ++i)
     uvs.push_back(materialUv(*scene->mMaterials[i], ext == ".gltf" || ext == ".glb", path, model.warnings));
@@ -535,7 +538,7 @@ ImportedModel importModelInProcess(const fs::path& path, const ImportOptions& op
   for (unsigned i = 0; i < scene->mNumMeshes; ++i) {
     aiMesh& m = *scene->mMeshes[i];  // the importer's: released as it is converted
     const MaterialUv uv = m.mMaterialIndex < uvs.size() ? uvs[m.mMaterialIndex] : MaterialUv{};
-    Mesh mesh = convertMesh(m, path, options, stl, uv.channel);
+    Mesh mesh = convertMesh(m, path, options, unshapedNormals, uv.channel);
     if (uv.transform) applyUvTransform(*uv.transform, mesh.uvs);
     meshes[i] = std::make_shared<const Mesh>(std::move(mesh));
   }

@@ -354,6 +354,22 @@ TEST(Import, MirroredInstancesKeepTheirFrontFaces) {
   }
 }
 
+// assimp's Blender reader gives each vertex its smooth normal even on solid ("Shade Flat") faces:
+// Blender's default cube gets crease normals instead, flat faces as Blender draws it (every normal
+// along an axis), unless --normals file asks for the file's.
+TEST(Import, BlendersDefaultCubeHasFlatFaces) {
+  const fs::path file = "/usr/share/assimp/models/BLEND/BlenderDefault_276.blend";
+  const ImportedModel m = importModel(file);
+  ASSERT_EQ(m.objects.size(), 1u);
+  for (const Vec3& n : m.objects[0].mesh->normals)
+    EXPECT_NEAR(std::max({std::abs(n.x), std::abs(n.y), std::abs(n.z)}), 1, 1e-5) << n.x << " " << n.y << " " << n.z;
+  ImportOptions fileNormals;
+  fileNormals.normals = NormalMode::File;
+  const ImportedModel kept = importModel(file, fileNormals);
+  const Vec3 n = kept.objects[0].mesh->normals[0];
+  EXPECT_LT(std::max({std::abs(n.x), std::abs(n.y), std::abs(n.z)}), 0.99f);  // the corner's smooth normal
+}
+
 // MD5's mesh names no shader image: an empty texture name is no texture, and nothing to warn of.
 TEST(Import, AnEmptyTextureNameIsNoTexture) {
   const ImportedModel m = importModel("/usr/share/assimp/models/MD5/SimpleCube.md5mesh");
