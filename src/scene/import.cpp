@@ -85,7 +85,7 @@ void releaseMeshArrays(aiMesh& m) {
 
 // One assimp mesh as an illum mesh, with normals chosen by `options`; the assimp mesh's arrays
 // are released (releaseMeshArrays) once copied.
-// `uvChannel`: the texture coordinates its material's textures read (materialUvChannel).
+// `uvChannel`: the texture coordinates its material's textures read (materialUv).
 Mesh convertMesh(aiMesh& m, const fs::path& path, const ImportOptions& options, bool normalsArePerFace,
                  unsigned uvChannel) {
   const std::string where = path.string() + ": mesh \"" + m.mName.C_Str() + "\"";
@@ -300,6 +300,37 @@ MaterialUv materialUv(const aiMaterial& material, bool gltf, const fs::path& pat
                        "\": its textures read different texture coordinates (or transform them differently); all "
                        "are sampled with its first texture's");
   return first.value_or(MaterialUv{});
+}
+
+// A mirroring transform (a negative scale: FBX's mirrored instances, the X reader's change of
+// handedness at the root) turns the triangles' winding round on screen, so that GL would light
+// their outsides as back faces. Modelling programs and three.js keep them front faces; so does a
+// preview: a mirrored object draws its mesh wound the other way (the mesh itself where every
+// object that draws it is mirrored, else a copy). `mesh[i]`: objects[i]'s index into `meshes`.
+void mirrorInstances(std::vector<Object>& objects, const std::vector<unsigned>& mesh,
+                     const std::vector<std::shared_ptr<Mesh>>& meshes) {
+  const auto mirrored = [](const Object& o) { return glm::determinant(Mat3(o.worldFromObject)) < 0; };
+  std::vector<std::uint8_t> drawnPlain(meshes.size(), 0);
+  for (std::size_t i = 0; i < objects.size(); ++i) drawnPlain[mesh[i]] |= !mirrored(objects[i]);
+  const auto reverse = [](Mesh& m) {
+    for (std::size_t t = 0; t + 2 < m.indices.size(); t += 3) std::swap(m.indices[t + 1], m.indices[t + 2]);
+  };
+  std::map<unsigned, std::shared_ptr<const Mesh>> reversed;
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    if (!mirrored(objects[i])) continue;
+    std::shared_ptr<const Mesh>& r = reversed[mesh[i]];
+    if (!r) {
+      if (drawnPlain[mesh[i]]) {
+        auto copy = std::make_shared<Mesh>(*meshes[mesh[i]]);
+        reverse(*copy);
+        r = std::move(copy);
+      } else {
+        reverse(*meshes[mesh[i]]);
+        r = meshes[mesh[i]];
+      }
+    }
+    objects[i].mesh = r;
+  }
 }
 
 // A material's texture's wrap modes (glTF's sampler, Collada's and FBX's wrap flags, as assimp
@@ -534,13 +565,13 @@ ImportedModel importModelInProcess(const fs::path& path, const ImportOptions& op
   std::vector<MaterialUv> uvs;
   for (unsigned i = 0; i < scene->mNumMaterials; ++i)
     uvs.push_back(materialUv(*scene->mMaterials[i], ext == ".gltf" || ext == ".glb", path, model.warnings));
-  std::vector<std::shared_ptr<const Mesh>> meshes(scene->mNumMeshes);
+  std::vector<std::shared_ptr<Mesh>> meshes(scene->mNumMeshes);  // (mirrorInstances may turn one round)
   for (unsigned i = 0; i < scene->mNumMeshes; ++i) {
     aiMesh& m = *scene->mMeshes[i];  // the importer's: released as it is converted
     const MaterialUv uv = m.mMaterialIndex < uvs.size() ? uvs[m.mMaterialIndex] : MaterialUv{};
     Mesh mesh = convertMesh(m, path, options, unshapedNormals, uv.channel);
     if (uv.transform) applyUvTransform(*uv.transform, mesh.uvs);
-    meshes[i] = std::make_shared<const Mesh>(std::move(mesh));
+    meshes[i] = std::make_shared<Mesh>(std::move(mesh));
   }
   std::vector<Material> materials;
   struct MaterialTextures {
@@ -594,7 +625,7 @@ ImportedModel importModelInProcess(const fs::path& path, const ImportOptions& op
   std::size_t visited = 0;
   bool drawable = false;
   std::set<unsigned> untexturedMeshes;  // warned of once, however many nodes draw them
-  std::map<unsigned, std::shared_ptr<const Mesh>> mirrored;  // meshes with their winding reversed
+  std::vector<unsigned> instanceMesh;     // each object's assimp mesh
   while (!stack.empty()) {
     auto [node, parent] = stack.back();
     stack.pop_back();
@@ -606,19 +637,7 @@ ImportedModel importModelInProcess(const fs::path& path, const ImportOptions& op
       Object o;
       o.mesh = meshes[mi];
       o.worldFromObject = world;
-      // A mirroring transform (a negative scale: FBX's and Blender's mirrored instances) turns the
-      // triangles' winding around on screen, so that GL would light their outsides as back faces.
-      // Modelling programs and three.js keep them front faces; so does a preview: a mirrored
-      // instance draws the mesh with its winding reversed.
-      if (glm::determinant(Mat3(world)) < 0 && !o.mesh->indices.empty()) {
-        std::shared_ptr<const Mesh>& flipped = mirrored[mi];
-        if (!flipped) {
-          auto copy = std::make_shared<Mesh>(*o.mesh);
-          for (std::size_t t = 0; t + 2 < copy->indices.size(); t += 3) std::swap(copy->indices[t + 1], copy->indices[t + 2]);
-          flipped = std::move(copy);
-        }
-        o.mesh = flipped;
-      }
+      instanceMesh.push_back(mi);
       const unsigned mat = scene->mMeshes[mi]->mMaterialIndex;
       if (mat < materials.size()) {
         o.material = materials[mat];
@@ -647,6 +666,7 @@ ImportedModel importModelInProcess(const fs::path& path, const ImportOptions& op
     for (unsigned c = 0; c < node->mNumChildren; ++c) stack.push_back({node->mChildren[c], world});
   }
   if (model.objects.empty()) throw InputError(path.string() + ": the model has no triangles, lines or points");
+  mirrorInstances(model.objects, instanceMesh, meshes);
   if (!std::isfinite(lo.x + lo.y + lo.z + hi.x + hi.y + hi.z))
     throw InputError(path.string() + ": the node transforms place the model at infinity");
   if (!drawable || hi == lo)
