@@ -59,6 +59,11 @@ constexpr std::size_t kArenaPlanes = 2 * 5 + 7 + 3;  // the passes' two sets, th
 
 Layout layoutOf(int width, int height) { return Layout{width, height, width + 2 * kPad + kVectorSlack}; }
 
+// The albedo channel k of pixel i's colour was seen with (DenoiseInput::demodulation).
+float dividedBy(const DenoiseInput& in, std::size_t i, int k) {
+  return (in.demodulation.empty() ? in.albedo : in.demodulation)[3 * i + std::size_t(k)];
+}
+
 // The filter, its planes in `arena` (as big as the picture's layout needs, or bigger).
 void denoiseIn(PlaneArena& arena, const DenoiseInput& in, std::span<float> out) {
   const int w = in.width, h = in.height;
@@ -109,7 +114,7 @@ void denoiseIn(PlaneArena& arena, const DenoiseInput& in, std::span<float> out) 
         for (int k = 0; k < 3; ++k) {
           const float a = in.albedo[3 * i + std::size_t(k)];
           // The albedo divided out (1 where it is near black), multiplied back in at the end.
-          planes[0].color[k].data()[at] = in.color[4 * i + std::size_t(k)] / demodulationOf(a);
+          planes[0].color[k].data()[at] = in.color[4 * i + std::size_t(k)] / demodulationOf(dividedBy(in, i, k));
           fit.radiance[k].data()[at] = in.color[4 * i + std::size_t(k)];
           guides.normal[k].data()[at] = in.normal[3 * i + std::size_t(k)] * (1 / kSigmaNormal);
           guides.albedo[k].data()[at] = a * (1 / kSigmaAlbedo);
@@ -154,7 +159,7 @@ void denoiseIn(PlaneArena& arena, const DenoiseInput& in, std::span<float> out) 
         const std::size_t i = std::size_t(y) * std::size_t(w) + std::size_t(x), at = layout.at(x, y);
         const float weight = fit.weight.data()[at];
         for (int k = 0; k < 3; ++k) {
-          float c = last.color[k].data()[at] * demodulationOf(in.albedo[3 * i + std::size_t(k)]);
+          float c = last.color[k].data()[at] * remodulationOf(in.albedo[3 * i + std::size_t(k)], dividedBy(in, i, k));
           if (weight > 0) c = weight * fit.fitted[k].data()[at] + (1 - weight) * c;
           out[4 * i + std::size_t(k)] = c;
         }

@@ -35,6 +35,12 @@ namespace illum {
 // A colour channel divided by the albedo's, unless that is too dark to divide by.
 constexpr float kDenoiseMinAlbedo = 0.02f;
 inline float demodulationOf(float albedo) { return albedo > kDenoiseMinAlbedo ? albedo : 1.0f; }
+// What a colour divided by demodulationOf(divided) is multiplied back by: `albedo`, a truer one
+// (DenoiseInput's guides taken over more samples), where both can be divided by; else what it
+// was divided by.
+inline float remodulationOf(float albedo, float divided) {
+  return albedo > kDenoiseMinAlbedo && divided > kDenoiseMinAlbedo ? albedo : demodulationOf(divided);
+}
 
 struct DenoiseInput {
   int width = 0, height = 0;
@@ -48,6 +54,11 @@ struct DenoiseInput {
   // Per pixel: the mean distance from the eye to the first hit (0 where nothing was hit); empty:
   // not a guide.
   std::span<const float> depth = {};
+  // RGB per pixel: the albedo the colour's own samples saw, which it is divided by, where the
+  // guides (`albedo`, `normal`, `depth`) were taken over more samples than the colour (a truer
+  // albedo at a texture's edge, which the filtered colour is multiplied back by: remodulationOf);
+  // empty: `albedo`'s.
+  std::span<const float> demodulation = {};
 };
 
 // The rows [first, end) of a layer that have anything in it (a normal: something was seen there).

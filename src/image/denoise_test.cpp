@@ -218,6 +218,29 @@ TEST(Denoise, KeepsTextureDetailThroughTheAlbedo) {
   for (std::size_t i = 0; i < p.variance.size(); ++i) EXPECT_NEAR(out[4 * i], p.color[4 * i], 1e-5f) << i;
 }
 
+TEST(Denoise, MultipliesTheLightBackByTheTruerAlbedoItIsGiven) {
+  // Even light E on a texture whose pixels' few samples saw albedos a (a texture's edges inside
+  // the pixels), the guides' truer albedos b taken over more samples: the colour E·a is divided
+  // by a, which its samples saw, and multiplied back by b, so E·b comes out; a near-black b or a
+  // leaves the colour as it came.
+  Noisy p(24, 24);
+  std::vector<float> seen(p.albedo.size());
+  for (std::size_t i = 0; i < p.variance.size(); ++i)
+    for (std::size_t c = 0; c < 3; ++c) {
+      const float a = 0.5f + 0.3f * noise(std::uint32_t(3 * i + c)), b = 0.5f + 0.3f * noise(std::uint32_t(3 * i + c + 7777));
+      seen[3 * i + c] = i == 100 ? 0.01f : a;
+      p.albedo[3 * i + c] = i == 200 ? 0.01f : b;
+      p.color[4 * i + c] = 0.6f * seen[3 * i + c];
+    }
+  std::vector<float> out(p.color.size());
+  denoise({p.w, p.h, p.color, p.albedo, p.normal, p.variance, {}, seen}, out);
+  for (std::size_t i = 0; i < p.variance.size(); ++i)
+    for (std::size_t c = 0; c < 3; ++c) {
+      const float expected = i == 100 || i == 200 ? p.color[4 * i + c] : 0.6f * p.albedo[3 * i + c];
+      EXPECT_NEAR(out[4 * i + c], expected, 1e-5f) << "pixel " << i << " channel " << c;
+    }
+}
+
 TEST(Denoise, AReflectionFilteredByItsOwnGuidesKeepsItsEdge) {
   // A polished floor (one albedo, one normal: its guides say nothing of what it reflects) whose
   // lower rows reflect an object on the left and the sky on the right, both noisy. Summed and

@@ -49,6 +49,41 @@ Color3 PathTracer::environment(const Vec3& eyeDirection) const {
   return scale * environmentMap_->radiance(glm::normalize(worldFromView_ * eyeDirection));
 }
 
+PathTracer::Surface PathTracer::surfaceAt(const Ray& ray, const RayHit& hit, const RayCone& cone) const {
+  Surface s;
+  s.h = hitPoint(rays_, ray, hit);
+  s.length = hit.t * glm::length(ray.direction);
+  s.wo = -glm::normalize(ray.direction);
+  // The material here (vertex colours, texel, maps). GL_MODULATE has no lit colour to multiply
+  // in a path tracer: its texel multiplies the diffuse albedo instead.
+  const PointMaterial point =
+      materialAtHit(rays_.mesh(hit.object), s.h, ray, cone, cone.width + cone.spread * s.length, scene_.model);
+  s.material = point.material;
+  s.material.diffuse *= point.modulation();
+  s.model = point.model;
+  // Emitters shine from their front (counter-clockwise) side, as pbrt's area lights do.
+  s.emission = s.h.front ? Color3(s.material.emission) : Color3(0);
+  // Shade on the side the ray came from.
+  s.Ng = glm::dot(s.h.geometricNormal, s.wo) > 0 ? s.h.geometricNormal : -s.h.geometricNormal;
+  s.N = glm::dot(s.h.normal, s.Ng) > 0 ? s.h.normal : -s.h.normal;
+  // Where the interpolated normal turns away from the viewer (at silhouettes), the BSDF would
+  // reflect nothing the viewer sees: the facet's normal stands in.
+  if (!(glm::dot(s.N, s.wo) > 0)) s.N = s.Ng;
+  return s;
+}
+
+Color3 PathTracer::guideAlbedo(const PathBsdf& bsdf, const Color3& k, const Color3& emission) {
+  return glm::min((Color3(1) - k) * bsdf.albedo() + k + emission, Color3(1));
+}
+
+std::optional<SurfaceGuides> PathTracer::firstSurfaceGuides(const Ray& ray, const RayHit& hit, const RayCone& cone) const {
+  const Surface s = surfaceAt(ray, hit, cone);
+  const SurfaceOptics& optics = s.h.object->optics;
+  if (!(idealChance(optics) < 1)) return std::nullopt;
+  const PathBsdf bsdf(s.material, s.model, s.N);
+  return SurfaceGuides{guideAlbedo(bsdf, idealWeight(optics), s.emission), s.N, glm::length(s.h.position)};
+}
+
 Color4 PathTracer::primary(const Ray& primaryRay, const RayHit* primaryHit, const RayCone& primaryCone,
                            RayCounts& counts, const PathSample& sample, PathFeatures* features) const {
   ++counts.primary;
@@ -86,23 +121,16 @@ Color3 PathTracer::walk(Walk w, Rng& rng, RayCounts& counts, const PathSample& s
       if (!firstChoices) firstChoices = stratifiedPair(sample.pixelSeed, 4, sample.index);
       return (*firstChoices)[which];
     };
-    HitPoint h = hitPoint(rays_, w.ray, w.hit);
+    const Surface surface = surfaceAt(w.ray, w.hit, w.cone);
+    const HitPoint& h = surface.h;
     const Object& object = *h.object;
-    const EyeMesh& mesh = rays_.mesh(w.hit.object);
-    const Real length = w.hit.t * glm::length(w.ray.direction);
-    const Vec3 wo = -glm::normalize(w.ray.direction);
-
-    // The material here (vertex colours, texel, maps). GL_MODULATE has no lit colour to multiply
-    // in a path tracer: its texel multiplies the diffuse albedo instead.
-    const PointMaterial point = materialAtHit(mesh, h, w.ray, w.cone, w.cone.width + w.cone.spread * length, scene_.model);
-    Material material = point.material;
-    material.diffuse *= point.modulation();
-    const LightingModel model = point.model;
+    const Real length = surface.length;
+    const Vec3& wo = surface.wo;
+    const Vec3 &Ng = surface.Ng, &N = surface.N;
+    const Color3& emission = surface.emission;
 
     // Emission: what the camera (or a mirror-like bounce) sees whole, else weighed against the
     // chance that next-event estimation found the same light.
-    // Emitters shine from their front (counter-clockwise) side, as pbrt's area lights do.
-    const Color3 emission = h.front ? Color3(material.emission) : Color3(0);
     if (emission != Color3(0)) {
       if (w.lightHitWhole) {
         radiance += w.beta * emission;
@@ -141,13 +169,7 @@ Color3 PathTracer::walk(Walk w, Rng& rng, RayCounts& counts, const PathSample& s
       return true;
     };
 
-    // Shade on the side the ray came from.
-    const Vec3 Ng = glm::dot(h.geometricNormal, wo) > 0 ? h.geometricNormal : -h.geometricNormal;
-    Vec3 N = glm::dot(h.normal, Ng) > 0 ? h.normal : -h.normal;
-    // Where the interpolated normal turns away from the viewer (at silhouettes), the BSDF would
-    // reflect nothing the viewer sees: the facet's normal stands in.
-    if (!(glm::dot(N, wo) > 0)) N = Ng;
-    const PathBsdf bsdf(material, model, N);
+    const PathBsdf bsdf(surface.material, surface.model, N);
     const auto leaves = [&](const Vec3& wi) { return glm::dot(wi, N) > 0 && glm::dot(wi, Ng) > 0; };
 
     // Mirror and glass: the material is k × an ideal mirror (k = k_r) or a smooth dielectric
@@ -162,7 +184,7 @@ Color3 PathTracer::walk(Walk w, Rng& rng, RayCounts& counts, const PathSample& s
     // labels: black base colour, text in the emission) is then a feature the filter keeps, and
     // is divided out of the radiance it filters instead of blurred with it.
     if (chance < 1 && (w.features || w.mirrorGuides)) {
-      const Color3 albedo = glm::min((Color3(1) - k) * bsdf.albedo() + k + emission, Color3(1));
+      const Color3 albedo = guideAlbedo(bsdf, k, emission);
       if (w.features) {
         w.features->albedo = albedo, w.features->normal = N, w.features->depth = glm::length(h.position);
         if (chance > 0) w.mirrorGuides = w.features;  // its mirror's, found by the split below

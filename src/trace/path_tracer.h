@@ -44,6 +44,16 @@ struct PathFeatures {
   Vec3 mirrorNormal{0};
 };
 
+class PathBsdf;
+
+// The denoiser's guides at a first surface that is not wholly ideal (PathFeatures' albedo,
+// normal and depth, as a path's first sample of it finds them).
+struct SurfaceGuides {
+  Color3 albedo{0};
+  Vec3 normal{0};
+  Real depth = 0;
+};
+
 // A surface's ideal part: its weight k (k_t for glass, else k_r: the rest is its BSDF's), and
 // k's luminance, the chance that a path follows it (0: none, 1: the surface is wholly ideal).
 Color3 idealWeight(const SurfaceOptics& optics);
@@ -70,8 +80,27 @@ class PathTracer {
   // `features`, the denoiser's guides along this path too.
   Color4 primary(const Ray& ray, const RayHit* hit, const RayCone& cone, RayCounts& counts, const PathSample& sample,
                  PathFeatures* features = nullptr) const;
+  // The guides a path along this primary ray would record, without its light: none where the
+  // first surface is wholly ideal (a mirror's or glass's guides lie past it).
+  std::optional<SurfaceGuides> firstSurfaceGuides(const Ray& ray, const RayHit& hit, const RayCone& cone) const;
 
  private:
+  // A surface as a path sees it: the hit, the ray's length to it and the way back to its origin,
+  // the material there (textures and vertex colours applied), what it emits towards the ray, and
+  // its facet's and shading normals turned to the ray's side.
+  struct Surface {
+    HitPoint h;
+    Real length = 0;
+    Vec3 wo{0};
+    Material material;
+    LightingModel model{};
+    Color3 emission{0};
+    Vec3 Ng{0}, N{0};
+  };
+  Surface surfaceAt(const Ray& ray, const RayHit& hit, const RayCone& cone) const;
+  // The denoiser's albedo of a surface: its BSDF's, its ideal part k and its emission (up to 1).
+  static Color3 guideAlbedo(const PathBsdf& bsdf, const Color3& k, const Color3& emission);
+
   // A path at a surface: the ray that found it and its hit, the ray cone, the throughput, the pdf
   // of the direction that led here, whether nothing but that direction could have found a light
   // (after a camera ray or an ideal mirror or refraction), the bounce, and the denoiser's guides

@@ -396,6 +396,32 @@ TEST(PathTracer, ASilhouettesGuidesAreThoseOfItsSamplesThatHitSomething) {
   EXPECT_GE(silhouettes, 10);
 }
 
+TEST(PathTracer, AnEdgeInsideAPixelTakesItsCoverageFromMoreSamples) {
+  // Where a pixel's 16 samples disagree (here: only some hit the ball or the floor), the denoised
+  // picture lays the light over the background by a coverage taken over 4 times as many samples,
+  // the next ones of the pixel's sequence: its alpha is then, byte for byte, that of 64 raw
+  // samples, and not that of its own 16 (which differ at some of the silhouette's pixels). Where
+  // they agree, it is theirs.
+  Scene s = litRoom(48);
+  s.background = Color4(0);  // transparent: alpha is the share of samples that hit
+  s.rayTracing.samples = 64;
+  s.rayTracing.denoise = false;
+  const Image raw64 = renderScene(s);
+  s.rayTracing.samples = 16;
+  const Image raw16 = renderScene(s);
+  s.rayTracing.denoise = true;
+  const Image denoised16 = renderScene(s);
+  int edges = 0, differing = 0;
+  for (std::size_t i = 3; i < raw64.rgba.size(); i += 4) {
+    const bool edge = raw16.rgba[i] != 0 && raw16.rgba[i] != 255;
+    EXPECT_EQ(int(denoised16.rgba[i]), int((edge ? raw64 : raw16).rgba[i])) << "pixel " << i / 4;
+    edges += edge;
+    differing += edge && raw16.rgba[i] != raw64.rgba[i];
+  }
+  EXPECT_GE(edges, 20);
+  EXPECT_GE(differing, 10);
+}
+
 TEST(PathTracer, APartMirrorsReflectionIsALayerOfItsOwnGuidedByWhatItSaw) {
   // A black wall facing the camera that mirrors half of what arrives (k = 0.5), and behind the
   // camera a lamp (emission 1) facing it, off to the left: the wall's left half reflects the lamp,

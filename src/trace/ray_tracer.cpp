@@ -21,6 +21,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <optional>
 #include <span>
 
@@ -33,6 +34,12 @@ bool readsTextures(const Object& object) { return drawnTexture(object) || mapsDr
 
 constexpr int kTile = 16;   // pixels on a side of a parallel task
 constexpr int kBlock = 4;   // pixels on a side of a primary ray packet
+
+// Where a pixel's guides are refined (refineGuides): where its samples' albedos differ by more
+// than this in a channel, or only some of them hit a surface; over this many samples (the
+// picture's own among them), 4 times the picture's, from 32 to 256.
+constexpr Real kAlbedoSpread = Real(1) / 64;
+int guideSamples(int samples) { return samples < 2 ? samples : std::clamp(4 * samples, 32, 256); }
 
 using Clock = std::chrono::steady_clock;
 
@@ -54,9 +61,10 @@ struct TileCounts {
 // hits) is exact but for the pixel's own sampling: it is taken out of the surfaces' layer, not
 // filtered, and added back after.
 struct DenoiseLayer {
-  std::vector<float> color, albedo, normal, variance, depth;
+  std::vector<float> color, albedo, normal, variance, depth, demodulation;
   explicit DenoiseLayer(std::size_t pixels)
-      : color(4 * pixels), albedo(3 * pixels), normal(3 * pixels), variance(pixels), depth(pixels) {}
+      : color(4 * pixels), albedo(3 * pixels), normal(3 * pixels), variance(pixels), depth(pixels),
+        demodulation(3 * pixels) {}
 };
 struct DenoiseBuffers {
   std::vector<float> beauty, coverage, direct;
@@ -98,11 +106,21 @@ struct LayerSums {
     for (int k = 0; k < 3; ++k) {
       out.albedo[3 * i + std::size_t(k)] = float(albedo[k] / guides);
       out.normal[3 * i + std::size_t(k)] = float(normal[k] / guides);
+      out.demodulation[3 * i + std::size_t(k)] = out.albedo[3 * i + std::size_t(k)];
     }
     out.depth[i] = float(depth / guides);
     const Real mean = luminance / hits;
     out.variance[i] = float(std::max(Real(0), luminanceSquared / hits - mean * mean) / hits);
   }
+};
+
+// A pixel's guides over more samples than its light was: the mean albedo, normal and distance of
+// the first surfaces hit, and the share of the samples that hit one.
+struct RefinedGuides {
+  Color3 albedo{0};
+  Vec3 normal{0};
+  Real depth = 0;
+  Real coverage = 0;
 };
 
 // What one pixel's samples add up to: every sample (the background where they miss), and those
@@ -125,6 +143,13 @@ struct PixelSums {
   // times the reference's value at 16 samples), which the filter's outlier pass is for.
   // (2CylinderEngine, ClearCoatTest.gltf at 16 samples, 320×240: 0.00093, 0.0084 with no such
   // rule; 0.00096, 0.00059 with this; 0.00117, 0.00060 with 0.5.)
+  // The spread of the hits' first surfaces' albedos, and whether any hit's first surface was
+  // wholly ideal (a mirror's or glass's guides lie past it): see refineGuides.
+  Color3 albedoLow{std::numeric_limits<Real>::infinity()}, albedoHigh{-std::numeric_limits<Real>::infinity()};
+  bool idealFirst = false;
+  // The guides and coverage over more samples than the picture's (refineGuides), where taken.
+  std::optional<RefinedGuides> refined;
+
   bool directExact() const {
     const Real n = Real(std::max(hitCount, 1)), mean = directLuminance / n;
     const Real varianceOfMean = std::max(Real(0), directLuminanceSquared / n - mean * mean) / n;
@@ -154,6 +179,7 @@ class TracedFrame {
     for (int s = 0; s < samples; ++s)
       for (int by = y0; by < y1; by += kBlock)
         for (int bx = x0; bx < x1; bx += kBlock) block(bx, by, x1, y1, s, x0, y0, sums, counts);
+    if (denoised_) refineGuides(x0, y0, x1, y1, sums, counts);
     for (int y = y0; y < y1; ++y)
       for (int x = x0; x < x1; ++x) {
         const PixelSums& f = sums[std::size_t((y - y0) * kTile + (x - x0))];
@@ -168,9 +194,24 @@ class TracedFrame {
         for (int k = 0; k < 4; ++k) denoised_->beauty[4 * i + std::size_t(k)] = float(c[k]);
         denoised_->coverage[i] = float(coverage);
         const bool exact = f.directExact();
-        (exact ? f.surface : f.surfaceWithDirect).write(denoised_->surface, i, f.hitCount, c[3]);
+        DenoiseLayer& layer = denoised_->surface;
+        (exact ? f.surface : f.surfaceWithDirect).write(layer, i, f.hitCount, c[3]);
+        float* albedo = &layer.albedo[3 * i];
         for (int k = 0; k < 3; ++k)
           denoised_->direct[3 * i + std::size_t(k)] = exact ? float(f.direct[k] / Real(std::max(f.hitCount, 1))) : 0.0f;
+        if (f.refined) {
+          // The direct light, unfiltered, takes the refined albedo as the filtered light does.
+          for (int k = 0; k < 3; ++k) {
+            const float divided = albedo[k], refined = float(f.refined->albedo[k]);
+            denoised_->direct[3 * i + std::size_t(k)] *= remodulationOf(refined, divided) / demodulationOf(divided);
+            albedo[k] = refined;
+            layer.normal[3 * i + std::size_t(k)] = float(f.refined->normal[k]);
+          }
+          layer.depth[i] = float(f.refined->depth);
+          const Real coverage = f.refined->coverage;
+          denoised_->coverage[i] = float(coverage);
+          layer.color[4 * i + 3] = float(coverage + scene_.background.a * (1 - coverage));
+        }
         f.mirrored.write(denoised_->mirrored, i, f.hitCount, c[3]);
       }
   }
@@ -222,40 +263,12 @@ class TracedFrame {
       const int x = bx + k % kBlock, y = by + k / kBlock;
       const RayHit& hit = hits[std::size_t(k)];
       const Ray& ray = rays[std::size_t(k)];
-      RayCone cone;
-      cone.spread = camera_.pixelWidthAt(1) - camera_.pixelWidthAt(0);
-      cone.width = camera_.pixelWidthAt(0);
-      if (hit.t >= 0 && readsTextures(*rays_.mesh(hit.object).object)) {
-        // The rays through the next pixel right and the next one up (GL's window y is up), as the
-        // rasterizer's derivatives, a share of a pixel away when a pixel takes many samples.
-        const Vec2 at = pixelPoint(x, y, s);
-        cone.differentials = true;
-        cone.right = camera_.through(at.x + differentialReach_, at.y);
-        cone.up = camera_.through(at.x, at.y - differentialReach_);
-      }
+      const RayCone cone = coneOf(x, y, s, hit);
       const RayHit* first = hit.t >= 0 ? &hit : nullptr;
       PixelSums& pixel = sums[std::size_t((y - y0) * kTile + (x - x0))];
       pixel.hitCount += first ? 1 : 0;
       if (pathTracer_) {
-        // Radiance is averaged as it is: the mean converges to the rendering equation's solution.
-        // (A sample that overflowed, say under an emitter of absurd strength, counts as nothing.)
-        PathFeatures guides;
-        const Color4 radiance =
-            pathTracer_->primary(ray, first, cone, counts.rays, {sampleSeed(x, y, s, 3), sampleSeed(x, y, 0, 1), std::uint32_t(s)},
-                                 denoised_ ? &guides : nullptr);
-        if (!std::isfinite(radiance.r + radiance.g + radiance.b + radiance.a)) continue;
-        pixel.all += radiance;
-        if (first) pixel.hits += Color3(radiance);
-        if (denoised_ && first) {
-          const Color3 surface = Color3(radiance) - guides.mirroredRadiance;
-          const Real directLuminance = luminance(guides.direct);
-          pixel.direct += guides.direct;
-          pixel.directLuminance += directLuminance;
-          pixel.directLuminanceSquared += directLuminance * directLuminance;
-          pixel.surface.add(surface - guides.direct, guides.albedo, guides.normal, guides.depth, true);
-          pixel.surfaceWithDirect.add(surface, guides.albedo, guides.normal, guides.depth, true);
-          pixel.mirrored.add(guides.mirroredRadiance, guides.mirrorAlbedo, guides.mirrorNormal, 0, guides.mirrored);
-        }
+        pathSample(pixel, x, y, s, ray, first, cone, counts);
         continue;
       }
       PixelProbe* probe = probe_ && s == 0 && x == probe_->x && y == probe_->y ? probe_ : nullptr;
@@ -264,6 +277,102 @@ class TracedFrame {
       pixel.all += c;
       if (first) pixel.hits += Color3(c);
     }
+  }
+
+  // Sample s of pixel (x, y) path traced, along `ray` to its first hit (null: none), into its sums.
+  void pathSample(PixelSums& pixel, int x, int y, int s, const Ray& ray, const RayHit* first, const RayCone& cone,
+                  TileCounts& counts) const {
+    // Radiance is averaged as it is: the mean converges to the rendering equation's solution.
+    // (A sample that overflowed, say under an emitter of absurd strength, counts as nothing.)
+    PathFeatures guides;
+    const Color4 radiance =
+        pathTracer_->primary(ray, first, cone, counts.rays, {sampleSeed(x, y, s, 3), sampleSeed(x, y, 0, 1), std::uint32_t(s)},
+                             denoised_ ? &guides : nullptr);
+    if (!std::isfinite(radiance.r + radiance.g + radiance.b + radiance.a)) return;
+    pixel.all += radiance;
+    if (first) pixel.hits += Color3(radiance);
+    if (denoised_ && first) {
+      const Color3 surface = Color3(radiance) - guides.mirroredRadiance;
+      const Real directLuminance = luminance(guides.direct);
+      pixel.direct += guides.direct;
+      pixel.directLuminance += directLuminance;
+      pixel.directLuminanceSquared += directLuminance * directLuminance;
+      pixel.surface.add(surface - guides.direct, guides.albedo, guides.normal, guides.depth, true);
+      pixel.surfaceWithDirect.add(surface, guides.albedo, guides.normal, guides.depth, true);
+      pixel.mirrored.add(guides.mirroredRadiance, guides.mirrorAlbedo, guides.mirrorNormal, 0, guides.mirrored);
+      pixel.albedoLow = glm::min(pixel.albedoLow, guides.albedo);
+      pixel.albedoHigh = glm::max(pixel.albedoHigh, guides.albedo);
+      pixel.idealFirst |= !(idealChance(rays_.mesh(first->object).object->optics) < 1);
+    }
+  }
+
+  // The cone of sample s of pixel (x, y) whose primary ray made `hit`.
+  RayCone coneOf(int x, int y, int s, const RayHit& hit) const {
+    RayCone cone;
+    cone.spread = camera_.pixelWidthAt(1) - camera_.pixelWidthAt(0);
+    cone.width = camera_.pixelWidthAt(0);
+    if (hit.t >= 0 && readsTextures(*rays_.mesh(hit.object).object)) {
+      // The rays through the next pixel right and the next one up (GL's window y is up), as the
+      // rasterizer's derivatives, a share of a pixel away when a pixel takes many samples.
+      const Vec2 at = pixelPoint(x, y, s);
+      cone.differentials = true;
+      cone.right = camera_.through(at.x + differentialReach_, at.y);
+      cone.up = camera_.through(at.x, at.y - differentialReach_);
+    }
+    return cone;
+  }
+
+  // The denoiser multiplies the filtered light back by the albedo, and lays it over the background
+  // by the coverage; over the picture's samples both keep their anti-aliasing's error (a texture's
+  // or a silhouette's edge inside a pixel, seen by 16 samples), which no filter of the light can
+  // take out. Where a pixel's samples saw different albedos, or only some of them a surface, its
+  // guides and coverage are therefore taken over more samples (guideSamples, the next ones of the
+  // pixel's stratified sequence), of the first surface only: a primary ray and its material each,
+  // no light. The light itself is still divided by the picture's own albedo, which its samples
+  // saw. (A pixel whose samples met a wholly ideal surface keeps its guides: they lie past it.)
+  void refineGuides(int x0, int y0, int x1, int y1, std::array<PixelSums, kTile * kTile>& sums,
+                    TileCounts& counts) const {
+    const int samples = samplesPerPixel(scene_), total = guideSamples(samples);
+    if (total <= samples) return;
+    for (int y = y0; y < y1; ++y)
+      for (int x = x0; x < x1; ++x) {
+        PixelSums& f = sums[std::size_t((y - y0) * kTile + (x - x0))];
+        const Color3 spread = f.albedoHigh - f.albedoLow;
+        const bool differ = std::max({spread.r, spread.g, spread.b}) > kAlbedoSpread;
+        if (f.hitCount == 0 || f.idealFirst || !(differ || f.hitCount < samples)) continue;
+        Color3 albedo = f.surface.albedo;
+        Vec3 normal = f.surface.normal;
+        Real depth = f.surface.depth;
+        int hitCount = f.hitCount, guided = f.surface.guided;
+        bool ideal = false;
+        for (int s0 = samples; s0 < total && !ideal; s0 += 16) {
+          std::array<Ray, 16> rays;
+          std::array<bool, 16> active;
+          std::array<RayHit, 16> hits;
+          for (int k = 0; k < 16; ++k) {
+            active[std::size_t(k)] = s0 + k < total;
+            const Vec2 at = pixelPoint(x, y, s0 + k);
+            rays[std::size_t(k)] = camera_.through(at.x, at.y);
+          }
+          rays_.intersect16(rays.data(), active.data(), hits.data());
+          for (int k = 0; k < 16 && active[std::size_t(k)]; ++k) {
+            ++counts.rays.primary;
+            const RayHit& hit = hits[std::size_t(k)];
+            if (hit.t < 0) continue;
+            ++hitCount;
+            const std::optional<SurfaceGuides> g =
+                pathTracer_->firstSurfaceGuides(rays[std::size_t(k)], hit, coneOf(x, y, s0 + k, hit));
+            if (!g) {
+              ideal = true;
+              break;
+            }
+            albedo += g->albedo, normal += g->normal, depth += g->depth, ++guided;
+          }
+        }
+        if (ideal || guided == 0) continue;
+        f.refined = RefinedGuides{albedo / Real(guided), normal / Real(guided), depth / Real(guided),
+                                  Real(hitCount) / Real(total)};
+      }
   }
 
   // Where sample s of pixel (x, y) goes through the image: the centre, or stratified over the pixel.
@@ -324,7 +433,8 @@ void traceScene(const Scene& scene, Image& image, RenderStats& stats, PixelProbe
     // The radiance of the samples that hit something is filtered (the background stays out of
     // it), then laid over the background by each pixel's coverage.
     const auto input = [&](const DenoiseLayer& layer) {
-      return DenoiseInput{scene.width, scene.height, layer.color, layer.albedo, layer.normal, layer.variance, layer.depth};
+      return DenoiseInput{scene.width, scene.height, layer.color, layer.albedo,        layer.normal,
+                          layer.variance, layer.depth, layer.demodulation};
     };
     std::vector<float> filtered(denoised->surface.color.size());
     if (denoised->mirrored.variance.empty())
