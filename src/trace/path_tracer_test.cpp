@@ -422,6 +422,47 @@ TEST(PathTracer, AnEdgeInsideAPixelTakesItsCoverageFromMoreSamples) {
   EXPECT_GE(differing, 10);
 }
 
+TEST(PathTracer, DenoisedATexturesEdgesAreFilteredForTheGuidesSamples) {
+  // A wall of vertical stripes, 8 texels wide, white and black, seen orthographically at 8 texels
+  // a pixel, the stripes' edges on the pixels' edges. Each sample reads the texture bilinearly:
+  // at the base level a pixel of a white stripe averages 31/32 (the linear ramp to the next
+  // stripe's texel centres reaches half a texel into it on both sides), at the next level 15/16.
+  // At 16 samples the pixels' samples differ (the ramps), so the guides are taken over 64: their
+  // filter is an eighth of a pixel, 1 texel, the base level; the 16 samples' own quarter pixel
+  // would have been the next level and blurred the stripes' edges into the picture.
+  Scene s = pathScene(32);
+  s.camera.projection = Projection::Orthographic;
+  s.camera.viewHeight = 2;  // 16 pixels a unit
+  s.rayTracing.samples = 16;
+  s.rayTracing.denoise = true;
+  Image stripes(16, 16);
+  for (int y = 0; y < 16; ++y)
+    for (int x = 0; x < 16; ++x) {
+      std::uint8_t* p = stripes.pixel(x, y);
+      p[0] = p[1] = p[2] = x < 8 ? 255 : 0, p[3] = 255;
+    }
+  Object wall = wallFacingTheCamera(1);
+  Mesh mesh = *wall.mesh;
+  for (const Vec3& p : mesh.positions) mesh.uvs.push_back({(p.x + 1) * 8, (p.y + 1) * 8});  // 128 texels a unit
+  wall.mesh = std::make_shared<const Mesh>(std::move(mesh));
+  wall.diffuseTexture = std::make_shared<const Texture>(stripes);
+  s.objects.push_back(wall);
+  FloatImage linear;
+  renderScene(s, nullptr, nullptr, &linear);
+  const FloatLayer& albedo = layerOf(linear, "albedo");
+  double sum[2] = {0, 0};
+  int count[2] = {0, 0};
+  for (int y = 0; y < 32; ++y)
+    for (int x = 0; x < 32; ++x) {
+      const int white = x % 2 == 0 ? 1 : 0;
+      const float a = albedo.values[3 * std::size_t(y * 32 + x)];
+      EXPECT_NEAR(a, white ? 31.0 / 32 : 1.0 / 32, 0.012) << "pixel " << x << ", " << y;
+      sum[white] += a, ++count[white];
+    }
+  EXPECT_NEAR(sum[1] / count[1], 31.0 / 32, 0.003);
+  EXPECT_NEAR(sum[0] / count[0], 1.0 / 32, 0.003);
+}
+
 TEST(PathTracer, APartMirrorsReflectionIsALayerOfItsOwnGuidedByWhatItSaw) {
   // A black wall facing the camera that mirrors half of what arrives (k = 0.5), and behind the
   // camera a lamp (emission 1) facing it, off to the left: the wall's left half reflects the lamp,
