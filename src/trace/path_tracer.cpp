@@ -76,12 +76,41 @@ Color3 PathTracer::guideAlbedo(const PathBsdf& bsdf, const Color3& k, const Colo
   return glm::min((Color3(1) - k) * bsdf.albedo() + k + emission, Color3(1));
 }
 
-std::optional<SurfaceGuides> PathTracer::firstSurfaceGuides(const Ray& ray, const RayHit& hit, const RayCone& cone) const {
+std::optional<SurfaceGuides> PathTracer::firstSurfaceGuides(const Ray& ray, const RayHit& hit, const RayCone& cone,
+                                                            RayCounts& counts) const {
   const Surface s = surfaceAt(ray, hit, cone);
   const SurfaceOptics& optics = s.h.object->optics;
   if (!(idealChance(optics) < 1)) return std::nullopt;
   const PathBsdf bsdf(s.material, s.model, s.N);
-  return SurfaceGuides{guideAlbedo(bsdf, idealWeight(optics), s.emission), s.N, glm::length(s.h.position)};
+  const Color3 k = idealWeight(optics);
+  SurfaceGuides g{guideAlbedo(bsdf, k, s.emission), s.N, glm::length(s.h.position), Color3(0)};
+  // As walk() takes it with the denoiser: a part mirror's BSDF is followed for its 1 − k.
+  if (lights_.size() <= kAllLights)
+    for (const EyeLight& light : lights_) g.direct += lightFrom(light, s, bsdf, Color3(1) - k, 1, counts);
+  return g;
+}
+
+Color3 PathTracer::lightFrom(const EyeLight& light, const Surface& s, const PathBsdf& bsdf, const Color3& beta,
+                             Real weight, RayCounts& counts) const {
+  const bool shadows = scene_.rayTracing.shadows;
+  // Where is the light: the rasterizer's own sample (shading/), edge cases and all.
+  const LightSampleAt at = sampleLight(light, s.h.position, s.N);
+  const Real factor = at.attenuation * at.spot;
+  const bool leaves = glm::dot(at.L, s.N) > 0 && glm::dot(at.L, s.Ng) > 0;
+  if (!(factor > 0) || !(shadows ? leaves : glm::dot(at.L, s.N) > 0)) return Color3(0);
+  const BsdfValue f = bsdf.eval(s.wo, at.L);
+  if (f.sum() == Color3(0)) return Color3(0);
+  // A positional light at the point itself has nothing between them.
+  if (shadows && !(light.isPositional() && at.distance == 0)) {
+    Ray shadow;
+    shadow.origin = offsetOrigin(s.h.position, s.Ng, at.L);
+    shadow.direction = at.L;
+    if (light.isPositional()) shadow.tFar = at.distance * Real(1 - 1e-4);
+    ++counts.shadow;
+    if (rays_.occluded(shadow)) return Color3(0);
+  }
+  const Real E = kPiReal * factor * glm::dot(s.N, at.L) * weight;
+  return beta * (f.diffuse * light.diffuse + f.specular * light.specular) * E;
 }
 
 Color4 PathTracer::primary(const Ray& primaryRay, const RayHit* primaryHit, const RayCone& primaryCone,
@@ -257,31 +286,13 @@ Color3 PathTracer::walk(Walk w, Rng& rng, RayCounts& counts, const PathSample& s
     // Without shadows (a comparison with the local models) nothing, not even the facet, blocks them.
     // Up to kAllLights lights each get a shadow ray at every bounce; beyond, one chosen uniformly
     // stands for all n (weighted n), so that a scene of thousands of lights costs no more per path.
-    const bool shadows = scene_.rayTracing.shadows;
     const std::size_t lightCount = lights_.size();
     const bool everyLight = lightCount <= kAllLights;
     const std::size_t firstLight =
         everyLight ? 0 : std::min(lightCount - 1, std::size_t(rng.uniform() * Real(lightCount)));
     const Real lightWeight = everyLight ? Real(1) : Real(lightCount);
     for (std::size_t i = firstLight; i < (everyLight ? lightCount : firstLight + 1); ++i) {
-      const EyeLight& light = lights_[i];
-      // Where is the light: the rasterizer's own sample (shading/), edge cases and all.
-      const LightSampleAt at = sampleLight(light, h.position, N);
-      const Real factor = at.attenuation * at.spot;
-      if (!(factor > 0) || !(shadows ? leaves(at.L) : glm::dot(at.L, N) > 0)) continue;
-      const BsdfValue f = bsdf.eval(wo, at.L);
-      if (f.sum() == Color3(0)) continue;
-      // A positional light at the point itself has nothing between them.
-      if (shadows && !(light.isPositional() && at.distance == 0)) {
-        Ray shadow;
-        shadow.origin = offsetOrigin(h.position, Ng, at.L);
-        shadow.direction = at.L;
-        if (light.isPositional()) shadow.tFar = at.distance * Real(1 - 1e-4);
-        ++counts.shadow;
-        if (rays_.occluded(shadow)) continue;
-      }
-      const Real E = kPiReal * factor * glm::dot(N, at.L) * lightWeight;
-      const Color3 lit = w.beta * (f.diffuse * light.diffuse + f.specular * light.specular) * E;
+      const Color3 lit = lightFrom(lights_[i], surface, bsdf, w.beta, lightWeight, counts);
       radiance += lit;
       if (w.direct && everyLight) *w.direct += lit;  // for the denoiser: exact, kept out of its filter
     }

@@ -47,11 +47,13 @@ struct PathFeatures {
 class PathBsdf;
 
 // The denoiser's guides at a first surface that is not wholly ideal (PathFeatures' albedo,
-// normal and depth, as a path's first sample of it finds them).
+// normal and depth, as a path's first sample of it finds them), and its `direct` light as a
+// path's would be (0 where one light is drawn for many).
 struct SurfaceGuides {
   Color3 albedo{0};
   Vec3 normal{0};
   Real depth = 0;
+  Color3 direct{0};
 };
 
 // A surface's ideal part: its weight k (k_t for glass, else k_r: the rest is its BSDF's), and
@@ -80,9 +82,11 @@ class PathTracer {
   // `features`, the denoiser's guides along this path too.
   Color4 primary(const Ray& ray, const RayHit* hit, const RayCone& cone, RayCounts& counts, const PathSample& sample,
                  PathFeatures* features = nullptr) const;
-  // The guides a path along this primary ray would record, without its light: none where the
-  // first surface is wholly ideal (a mirror's or glass's guides lie past it).
-  std::optional<SurfaceGuides> firstSurfaceGuides(const Ray& ray, const RayHit& hit, const RayCone& cone) const;
+  // The guides a path along this primary ray would record, and its first surface's direct light
+  // (no path on from there): none where the first surface is wholly ideal (a mirror's or glass's
+  // guides lie past it).
+  std::optional<SurfaceGuides> firstSurfaceGuides(const Ray& ray, const RayHit& hit, const RayCone& cone,
+                                                  RayCounts& counts) const;
 
  private:
   // A surface as a path sees it: the hit, the ray's length to it and the way back to its origin,
@@ -100,6 +104,11 @@ class PathTracer {
   Surface surfaceAt(const Ray& ray, const RayHit& hit, const RayCone& cone) const;
   // The denoiser's albedo of a surface: its BSDF's, its ideal part k and its emission (up to 1).
   static Color3 guideAlbedo(const PathBsdf& bsdf, const Color3& k, const Color3& emission);
+  // What a surface reflects towards its viewer of a point, spot or directional light, times the
+  // path's throughput `beta` and `weight` (the lights it stands for): 0 where the light is behind
+  // the surface, out of its cone or blocked.
+  Color3 lightFrom(const EyeLight& light, const Surface& s, const PathBsdf& bsdf, const Color3& beta, Real weight,
+                   RayCounts& counts) const;
 
   // A path at a surface: the ray that found it and its hit, the ray cone, the throughput, the pdf
   // of the direction that led here, whether nothing but that direction could have found a light

@@ -422,17 +422,14 @@ TEST(PathTracer, AnEdgeInsideAPixelTakesItsCoverageFromMoreSamples) {
   EXPECT_GE(differing, 10);
 }
 
-TEST(PathTracer, DenoisedATexturesEdgesAreFilteredForTheGuidesSamples) {
-  // A wall of vertical stripes, 8 texels wide, white and black, seen orthographically at 8 texels
-  // a pixel, the stripes' edges on the pixels' edges. Each sample reads the texture bilinearly:
-  // at the base level a pixel of a white stripe averages 31/32 (the linear ramp to the next
-  // stripe's texel centres reaches half a texel into it on both sides), at the next level 15/16.
-  // At 16 samples the pixels' samples differ (the ramps), so the guides are taken over 64: their
-  // filter is an eighth of a pixel, 1 texel, the base level; the 16 samples' own quarter pixel
-  // would have been the next level and blurred the stripes' edges into the picture.
+// pathScene seen orthographically (16 pixels a unit) with the denoiser at 16 samples, filled by a
+// white wall of vertical stripes 8 texels wide, white and black, at 8 texels a pixel, the stripes'
+// edges on the pixels' edges. Every pixel's samples see different albedos (the bilinear ramps
+// between the stripes), so every pixel takes its guides over 64 samples.
+Scene stripedWallScene() {
   Scene s = pathScene(32);
   s.camera.projection = Projection::Orthographic;
-  s.camera.viewHeight = 2;  // 16 pixels a unit
+  s.camera.viewHeight = 2;
   s.rayTracing.samples = 16;
   s.rayTracing.denoise = true;
   Image stripes(16, 16);
@@ -447,8 +444,17 @@ TEST(PathTracer, DenoisedATexturesEdgesAreFilteredForTheGuidesSamples) {
   wall.mesh = std::make_shared<const Mesh>(std::move(mesh));
   wall.diffuseTexture = std::make_shared<const Texture>(stripes);
   s.objects.push_back(wall);
+  return s;
+}
+
+TEST(PathTracer, DenoisedATexturesEdgesAreFilteredForTheGuidesSamples) {
+  // Each sample reads the texture bilinearly: at the base level a pixel of a white stripe
+  // averages 31/32 (the linear ramp to the next stripe's texel centres reaches half a texel into
+  // it on both sides), at the next level 15/16. The guides' 64 samples filter the texture over an
+  // eighth of a pixel, 1 texel, the base level; the 16 samples' own quarter pixel would have been
+  // the next level and blurred the stripes' edges into the picture.
   FloatImage linear;
-  renderScene(s, nullptr, nullptr, &linear);
+  renderScene(stripedWallScene(), nullptr, nullptr, &linear);
   const FloatLayer& albedo = layerOf(linear, "albedo");
   double sum[2] = {0, 0};
   int count[2] = {0, 0};
@@ -461,6 +467,43 @@ TEST(PathTracer, DenoisedATexturesEdgesAreFilteredForTheGuidesSamples) {
     }
   EXPECT_NEAR(sum[1] / count[1], 31.0 / 32, 0.003);
   EXPECT_NEAR(sum[0] / count[0], 1.0 / 32, 0.003);
+}
+
+TEST(PathTracer, DenoisedAnEdgeInsideAPixelTakesItsDirectLightFromTheGuidesSamples) {
+  // The striped wall under a directional light, a black bar in front of it casting a shadow whose
+  // edges cross pixels; one bounce, no environment: a raw picture is its direct light alone. The
+  // denoised 16 samples' unfiltered direct light is that of the guides' 64 samples, the same
+  // points as 64 raw samples: the same values, where 16 raw samples differ from them.
+  Scene s = stripedWallScene();
+  s.rayTracing.maxDepth = 1;
+  Light light;
+  light.position = {0, 0.6f, 1, 0};
+  light.diffuse = Color3(1);
+  s.lights = {light};
+  Object bar;
+  bar.mesh = quad({-3, 0.2f, 1}, {3, 0.2f, 1}, {3, 0.35f, 1}, {-3, 0.35f, 1});  // its shadow: y in (-0.4, -0.25)
+  bar.material = lambertian(0);
+  s.objects.push_back(bar);
+  FloatImage denoised16, raw16, raw64;
+  renderScene(s, nullptr, nullptr, &denoised16);
+  s.rayTracing.denoise = false;
+  renderScene(s, nullptr, nullptr, &raw16);
+  s.rayTracing.samples = 64;
+  renderScene(s, nullptr, nullptr, &raw64);
+  const FloatLayer& direct = layerOf(denoised16, "direct");
+  int kept = 0, differing = 0;
+  for (std::size_t i = 0; i < direct.values.size() / 3; ++i) {
+    if (direct.values[3 * i] == 0) continue;  // shadow, the bar, or light one sample alone saw
+    // Rows 10 to 12 show the bar: where a black stripe's pixel holds it, no sample saw an albedo
+    // over 1/64 and its guides stay its own 16 samples'.
+    if (const std::size_t row = i / 32; row >= 10 && row <= 12) continue;
+    ++kept;
+    for (int c = 0; c < 3; ++c)
+      EXPECT_NEAR(direct.values[3 * i + std::size_t(c)], raw64.rgba[4 * i + std::size_t(c)], 1e-6f) << "pixel " << i;
+    differing += std::abs(raw16.rgba[4 * i] - raw64.rgba[4 * i]) > 0.01f;
+  }
+  EXPECT_GE(kept, 500);
+  EXPECT_GE(differing, 10);
 }
 
 TEST(PathTracer, APartMirrorsReflectionIsALayerOfItsOwnGuidedByWhatItSaw) {

@@ -115,12 +115,14 @@ struct LayerSums {
 };
 
 // A pixel's guides over more samples than its light was: the mean albedo, normal and distance of
-// the first surfaces hit, and the share of the samples that hit one.
+// the first surfaces hit, and the share of the samples that hit one; and over the same samples
+// the mean direct light of those surfaces.
 struct RefinedGuides {
   Color3 albedo{0};
   Vec3 normal{0};
   Real depth = 0;
   Real coverage = 0;
+  Color3 direct{0};
 };
 
 // What one pixel's samples add up to: every sample (the background where they miss), and those
@@ -205,11 +207,10 @@ class TracedFrame {
         for (int k = 0; k < 3; ++k)
           denoised_->direct[3 * i + std::size_t(k)] = exact ? float(f.direct[k] / Real(std::max(f.hitCount, 1))) : 0.0f;
         if (f.refined) {
-          // The direct light, unfiltered, takes the refined albedo as the filtered light does.
+          // The direct light, unfiltered, is the refined samples' too.
           for (int k = 0; k < 3; ++k) {
-            const float divided = albedo[k], refined = float(f.refined->albedo[k]);
-            denoised_->direct[3 * i + std::size_t(k)] *= remodulationOf(refined, divided) / demodulationOf(divided);
-            albedo[k] = refined;
+            if (exact) denoised_->direct[3 * i + std::size_t(k)] = float(f.refined->direct[k]);
+            albedo[k] = float(f.refined->albedo[k]);
             layer.normal[3 * i + std::size_t(k)] = float(f.refined->normal[k]);
           }
           layer.depth[i] = float(f.refined->depth);
@@ -348,6 +349,7 @@ class TracedFrame {
         Color3 albedo = f.surface.albedo;
         Vec3 normal = f.surface.normal;
         Real depth = f.surface.depth;
+        Color3 direct = f.direct;
         int hitCount = f.hitCount, guided = f.surface.guided;
         bool ideal = false;
         for (int s0 = samples; s0 < total && !ideal; s0 += 16) {
@@ -366,17 +368,17 @@ class TracedFrame {
             if (hit.t < 0) continue;
             ++hitCount;
             const std::optional<SurfaceGuides> g =
-                pathTracer_->firstSurfaceGuides(rays[std::size_t(k)], hit, coneOf(x, y, s0 + k, hit));
+                pathTracer_->firstSurfaceGuides(rays[std::size_t(k)], hit, coneOf(x, y, s0 + k, hit), counts.rays);
             if (!g) {
               ideal = true;
               break;
             }
-            albedo += g->albedo, normal += g->normal, depth += g->depth, ++guided;
+            albedo += g->albedo, normal += g->normal, depth += g->depth, direct += g->direct, ++guided;
           }
         }
         if (ideal || guided == 0) continue;
         f.refined = RefinedGuides{albedo / Real(guided), normal / Real(guided), depth / Real(guided),
-                                  Real(hitCount) / Real(total)};
+                                  Real(hitCount) / Real(total), direct / Real(hitCount)};
       }
   }
 
