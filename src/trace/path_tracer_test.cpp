@@ -506,6 +506,48 @@ TEST(PathTracer, DenoisedAnEdgeInsideAPixelTakesItsDirectLightFromTheGuidesSampl
   EXPECT_GE(differing, 10);
 }
 
+TEST(PathTracer, DenoisedAModelsEdgeInsideAPixelTakesItsDirectLightFromTheGuidesSamples) {
+  // A grey cube turned 45° about the vertical, its edge towards the camera, under a directional
+  // light from the right: the two faces it shows are of one albedo but lit 0.32 and 0.95. One
+  // bounce, no environment, and a convex cube: a raw picture is its direct light alone. Where a
+  // pixel's samples met both faces, the denoised 16 samples' unfiltered direct light is the
+  // guides' 64 samples', the same points as 64 raw samples; elsewhere (one face) every sample has
+  // the same light. So it equals the 64 raw samples' everywhere the cube covers, where 16 raw
+  // samples differ from them along the edge.
+  Scene s = pathScene(32);
+  s.background = Color4(0);  // transparent: alpha is the share of samples that hit
+  s.rayTracing.samples = 16;
+  s.rayTracing.denoise = true;
+  s.rayTracing.maxDepth = 1;
+  Light light;
+  light.position = {0.5f, 0, 1, 0};
+  light.diffuse = Color3(1);
+  s.lights = {light};
+  Object cube;
+  cube.mesh = std::make_shared<const Mesh>(makeCube(1.5f));
+  // (Its edge a little off the picture's centre, so that it crosses a column of pixels.)
+  cube.worldFromObject = glm::rotate(glm::translate(Mat4(1), Vec3(0.04f, 0, 0)), Real(glm::radians(45.0)), Vec3(0, 1, 0));
+  cube.material = lambertian(0.5f);
+  s.objects.push_back(cube);
+  FloatImage denoised16, raw16, raw64;
+  renderScene(s, nullptr, nullptr, &denoised16);
+  s.rayTracing.denoise = false;
+  renderScene(s, nullptr, nullptr, &raw16);
+  s.rayTracing.samples = 64;
+  renderScene(s, nullptr, nullptr, &raw64);
+  const FloatLayer& direct = layerOf(denoised16, "direct");
+  int covered = 0, differing = 0;
+  for (std::size_t i = 0; i < direct.values.size() / 3; ++i) {
+    if (raw64.rgba[4 * i + 3] != 1.0f) continue;  // the background shows (alpha: hits' share)
+    ++covered;
+    for (int c = 0; c < 3; ++c)
+      EXPECT_NEAR(direct.values[3 * i + std::size_t(c)], raw64.rgba[4 * i + std::size_t(c)], 1e-6f) << "pixel " << i;
+    differing += std::abs(raw16.rgba[4 * i] - raw64.rgba[4 * i]) > 0.005f;
+  }
+  EXPECT_GE(covered, 100);
+  EXPECT_GE(differing, 8);
+}
+
 TEST(PathTracer, APartMirrorsReflectionIsALayerOfItsOwnGuidedByWhatItSaw) {
   // A black wall facing the camera that mirrors half of what arrives (k = 0.5), and behind the
   // camera a lamp (emission 1) facing it, off to the left: the wall's left half reflects the lamp,

@@ -36,9 +36,12 @@ constexpr int kTile = 16;   // pixels on a side of a parallel task
 constexpr int kBlock = 4;   // pixels on a side of a primary ray packet
 
 // Where a pixel's guides are refined (refineGuides): where its samples' albedos differ by more
-// than this in a channel, or only some of them hit a surface; over this many samples (the
-// picture's own among them), 4 times the picture's, from 32 to 256.
+// than this in a channel, or the mean of their unit normals is shorter than kNormalsAgree (they
+// met faces turned apart: two at 90°, one sample of 16 on the second, give 0.94; the same face
+// of a curved or normal-mapped surface comes near 1), or only some of them hit a surface; over
+// this many samples (the picture's own among them), 4 times the picture's, from 32 to 256.
 constexpr Real kAlbedoSpread = Real(1) / 64;
+constexpr Real kNormalsAgree = Real(0.95);
 int guideSamples(int samples) { return samples < 2 ? samples : std::clamp(4 * samples, 32, 256); }
 
 using Clock = std::chrono::steady_clock;
@@ -329,13 +332,16 @@ class TracedFrame {
   }
 
   // The denoiser multiplies the filtered light back by the albedo, and lays it over the background
-  // by the coverage; over the picture's samples both keep their anti-aliasing's error (a texture's
-  // or a silhouette's edge inside a pixel, seen by 16 samples), which no filter of the light can
-  // take out. Where a pixel's samples saw different albedos, or only some of them a surface, its
-  // guides and coverage are therefore taken over more samples (guideSamples, the next ones of the
-  // pixel's stratified sequence), of the first surface only: a primary ray and its material each,
-  // no light. The light itself is still divided by the picture's own albedo, which its samples
-  // saw. (A pixel whose samples met a wholly ideal surface keeps its guides: they lie past it.)
+  // by the coverage, and adds the unfiltered direct light; over the picture's samples all three
+  // keep their anti-aliasing's error (a texture's, a silhouette's or a model's edge inside a
+  // pixel, seen by 16 samples), which no filter of the light can take out. Where a pixel's
+  // samples saw different albedos, faces turned apart (kNormalsAgree), or only some of them a
+  // surface, its guides, coverage and direct light are therefore taken over more samples
+  // (guideSamples, the next ones of the pixel's stratified sequence), of the first surface only:
+  // a primary ray, its material and its shadow rays to the point, spot and directional lights
+  // each, no path on. The filtered light itself is still divided by the picture's own albedo,
+  // which its samples saw. (A pixel whose samples met a wholly ideal surface keeps its guides:
+  // they lie past it.)
   void refineGuides(int x0, int y0, int x1, int y1, std::array<PixelSums, kTile * kTile>& sums,
                     TileCounts& counts) const {
     const int samples = samplesPerPixel(scene_), total = guideSamples(samples);
@@ -345,7 +351,8 @@ class TracedFrame {
         PixelSums& f = sums[std::size_t((y - y0) * kTile + (x - x0))];
         const Color3 spread = f.albedoHigh - f.albedoLow;
         const bool differ = std::max({spread.r, spread.g, spread.b}) > kAlbedoSpread;
-        if (f.hitCount == 0 || f.idealFirst || !(differ || f.hitCount < samples)) continue;
+        const bool bends = glm::length(f.surface.normal) < kNormalsAgree * Real(std::max(f.surface.guided, 1));
+        if (f.hitCount == 0 || f.idealFirst || !(differ || bends || f.hitCount < samples)) continue;
         Color3 albedo = f.surface.albedo;
         Vec3 normal = f.surface.normal;
         Real depth = f.surface.depth;
