@@ -16,7 +16,7 @@ namespace illum::denoising {
 constexpr int kPasses = 3;  // of the 3×3 kernel, taps 1, 2 and 4 pixels apart
 constexpr float kSigmaColor = 4.0f;    // in standard deviations of the pixel's noise
 constexpr float kSigmaNormal = 0.3f;   // |n_p − n_q| of unit normals (docs/ray-tracing.md: 0.1 → 0.3)
-constexpr float kSigmaAlbedo = 0.02f;  // |a_p − a_q|
+constexpr float kSigmaAlbedo = 0.04f;  // |a_p − a_q| (docs/ray-tracing.md: 0.02 → 0.04)
 // |ln z_p − ln z_q| over a tap's distance in pixels: depths 1 % apart a pixel from each other
 // (Cornell box 0.0014 → 0.0011 at 16 samples; 0.5 % or 2 %: 0.0012; the others as good or a little
 // better). Two surfaces of one normal and albedo, one behind the other (an engine's fins and the
