@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <stdexcept>
 #include <string>
@@ -469,13 +470,40 @@ TEST(PathTracer, DenoisedATexturesEdgesAreFilteredForTheGuidesSamples) {
   EXPECT_NEAR(sum[0] / count[0], 1.0 / 32, 0.003);
 }
 
+// One bounce, no environment, and nothing a light bounces off onto the rest: a raw picture of
+// `s` is its direct light alone. The denoised 16 samples' unfiltered direct light, where a
+// pixel's guides are taken over 64 samples, is theirs, the same points as 64 raw samples: the
+// same values, at every pixel `compared` picks (given the 64 raw samples; of those with a
+// direct light kept: not one sample alone's), where 16 raw samples differ from them by more
+// than `differs` in at least `differing` pixels.
+void expectTheDirectLightOf64Samples(Scene s, const std::function<bool(std::size_t, const FloatImage&)>& compared, float differs,
+                                     int atLeastCompared, int differing) {
+  s.rayTracing.samples = 16;
+  s.rayTracing.denoise = true;
+  s.rayTracing.maxDepth = 1;
+  FloatImage denoised16, raw16, raw64;
+  renderScene(s, nullptr, nullptr, &denoised16);
+  s.rayTracing.denoise = false;
+  renderScene(s, nullptr, nullptr, &raw16);
+  s.rayTracing.samples = 64;
+  renderScene(s, nullptr, nullptr, &raw64);
+  const FloatLayer& direct = layerOf(denoised16, "direct");
+  int count = 0, differ = 0;
+  for (std::size_t i = 0; i < direct.values.size() / 3; ++i) {
+    if (direct.values[3 * i] == 0 || !compared(i, raw64)) continue;
+    ++count;
+    for (int c = 0; c < 3; ++c)
+      EXPECT_NEAR(direct.values[3 * i + std::size_t(c)], raw64.rgba[4 * i + std::size_t(c)], 1e-6f) << "pixel " << i;
+    differ += std::abs(raw16.rgba[4 * i] - raw64.rgba[4 * i]) > differs;
+  }
+  EXPECT_GE(count, atLeastCompared);
+  EXPECT_GE(differ, differing);
+}
+
 TEST(PathTracer, DenoisedAnEdgeInsideAPixelTakesItsDirectLightFromTheGuidesSamples) {
   // The striped wall under a directional light, a black bar in front of it casting a shadow whose
-  // edges cross pixels; one bounce, no environment: a raw picture is its direct light alone. The
-  // denoised 16 samples' unfiltered direct light is that of the guides' 64 samples, the same
-  // points as 64 raw samples: the same values, where 16 raw samples differ from them.
+  // edges cross pixels.
   Scene s = stripedWallScene();
-  s.rayTracing.maxDepth = 1;
   Light light;
   light.position = {0, 0.6f, 1, 0};
   light.diffuse = Color3(1);
@@ -484,41 +512,19 @@ TEST(PathTracer, DenoisedAnEdgeInsideAPixelTakesItsDirectLightFromTheGuidesSampl
   bar.mesh = quad({-3, 0.2f, 1}, {3, 0.2f, 1}, {3, 0.35f, 1}, {-3, 0.35f, 1});  // its shadow: y in (-0.4, -0.25)
   bar.material = lambertian(0);
   s.objects.push_back(bar);
-  FloatImage denoised16, raw16, raw64;
-  renderScene(s, nullptr, nullptr, &denoised16);
-  s.rayTracing.denoise = false;
-  renderScene(s, nullptr, nullptr, &raw16);
-  s.rayTracing.samples = 64;
-  renderScene(s, nullptr, nullptr, &raw64);
-  const FloatLayer& direct = layerOf(denoised16, "direct");
-  int kept = 0, differing = 0;
-  for (std::size_t i = 0; i < direct.values.size() / 3; ++i) {
-    if (direct.values[3 * i] == 0) continue;  // shadow, the bar, or light one sample alone saw
-    // Rows 10 to 12 show the bar: where a black stripe's pixel holds it, no sample saw an albedo
-    // over 1/64 and its guides stay its own 16 samples'.
-    if (const std::size_t row = i / 32; row >= 10 && row <= 12) continue;
-    ++kept;
-    for (int c = 0; c < 3; ++c)
-      EXPECT_NEAR(direct.values[3 * i + std::size_t(c)], raw64.rgba[4 * i + std::size_t(c)], 1e-6f) << "pixel " << i;
-    differing += std::abs(raw16.rgba[4 * i] - raw64.rgba[4 * i]) > 0.01f;
-  }
-  EXPECT_GE(kept, 500);
-  EXPECT_GE(differing, 10);
+  // Rows 10 to 12 show the bar: where a black stripe's pixel holds it, no sample saw an albedo
+  // over 1/64 and its guides stay its own 16 samples'.
+  expectTheDirectLightOf64Samples(s, [](std::size_t i, const FloatImage&) { return i / 32 < 10 || i / 32 > 12; }, 0.01f, 500, 10);
 }
 
 TEST(PathTracer, DenoisedAModelsEdgeInsideAPixelTakesItsDirectLightFromTheGuidesSamples) {
   // A grey cube turned 45° about the vertical, its edge towards the camera, under a directional
-  // light from the right: the two faces it shows are of one albedo but lit 0.32 and 0.95. One
-  // bounce, no environment, and a convex cube: a raw picture is its direct light alone. Where a
-  // pixel's samples met both faces, the denoised 16 samples' unfiltered direct light is the
-  // guides' 64 samples', the same points as 64 raw samples; elsewhere (one face) every sample has
-  // the same light. So it equals the 64 raw samples' everywhere the cube covers, where 16 raw
-  // samples differ from them along the edge.
+  // light from the right: the two faces it shows are of one albedo but lit 0.32 and 0.95. Where a
+  // pixel's samples met both faces its guides are taken over 64 samples; elsewhere (one face)
+  // every sample has the same light. So the direct light equals the 64 raw samples' everywhere
+  // the cube covers, where 16 raw samples differ from them along the edge.
   Scene s = pathScene(32);
   s.background = Color4(0);  // transparent: alpha is the share of samples that hit
-  s.rayTracing.samples = 16;
-  s.rayTracing.denoise = true;
-  s.rayTracing.maxDepth = 1;
   Light light;
   light.position = {0.5f, 0, 1, 0};
   light.diffuse = Color3(1);
@@ -529,23 +535,9 @@ TEST(PathTracer, DenoisedAModelsEdgeInsideAPixelTakesItsDirectLightFromTheGuides
   cube.worldFromObject = glm::rotate(glm::translate(Mat4(1), Vec3(0.04f, 0, 0)), Real(glm::radians(45.0)), Vec3(0, 1, 0));
   cube.material = lambertian(0.5f);
   s.objects.push_back(cube);
-  FloatImage denoised16, raw16, raw64;
-  renderScene(s, nullptr, nullptr, &denoised16);
-  s.rayTracing.denoise = false;
-  renderScene(s, nullptr, nullptr, &raw16);
-  s.rayTracing.samples = 64;
-  renderScene(s, nullptr, nullptr, &raw64);
-  const FloatLayer& direct = layerOf(denoised16, "direct");
-  int covered = 0, differing = 0;
-  for (std::size_t i = 0; i < direct.values.size() / 3; ++i) {
-    if (raw64.rgba[4 * i + 3] != 1.0f) continue;  // the background shows (alpha: hits' share)
-    ++covered;
-    for (int c = 0; c < 3; ++c)
-      EXPECT_NEAR(direct.values[3 * i + std::size_t(c)], raw64.rgba[4 * i + std::size_t(c)], 1e-6f) << "pixel " << i;
-    differing += std::abs(raw16.rgba[4 * i] - raw64.rgba[4 * i]) > 0.005f;
-  }
-  EXPECT_GE(covered, 100);
-  EXPECT_GE(differing, 8);
+  // (Where the background shows, the direct light is the hits' mean, the picture every sample's.)
+  const auto covered = [](std::size_t i, const FloatImage& raw64) { return raw64.rgba[4 * i + 3] == 1.0f; };
+  expectTheDirectLightOf64Samples(s, covered, 0.005f, 100, 8);
 }
 
 TEST(PathTracer, APartMirrorsReflectionIsALayerOfItsOwnGuidedByWhatItSaw) {
