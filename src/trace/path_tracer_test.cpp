@@ -637,39 +637,58 @@ TEST(PathTracer, TheFirstSurfacesLightFromPointLightsIsExactAndNotFiltered) {
   for (const float v : layerOf(linear, "direct").values) ASSERT_EQ(v, 0.0f);
 }
 
-TEST(PathTracer, LightThatOneSampleOfAPixelSawIsFiltered) {
+TEST(PathTracer, LightThatOneSampleOfAPixelSawIsTakenOverMoreSamplesOrFiltered) {
   // A narrow spot light's disc on the wall, smaller than a pixel, one bounce: where all of a
   // pixel's samples agree (none saw the disc) its direct light is exact and kept out of the
-  // filter; where one sample alone saw it, that is the pixel's noise, not its value (the
-  // reference's is the disc's share of the pixel): the light goes to the filter, whose outlier
-  // pass brings the pixel down towards its neighbours.
-  Scene s = denoisedWallScene(16);
-  s.rayTracing.maxDepth = 1;
-  Light spot;
-  spot.position = {0.31f, 0.27f, 3, 1};
-  spot.spotDirection = {0, 0, -1};
-  spot.spotCutoff = 0.5f;  // degrees: a disc of radius 0.026 on the wall, a pixel 0.1 wide
-  s.lights = {spot};
-  FloatImage linear;
-  renderScene(s, nullptr, nullptr, &linear);
-  const FloatLayer &direct = layerOf(linear, "direct"), &beauty = layerOf(linear, "beauty");
-  // Each sample on the disc sees 0.5 (its cosines are 1 within 1e-4).
-  int oneSample = 0, more = 0;
-  for (std::size_t i = 0; i < direct.values.size() / 3; ++i) {
-    const float raw = beauty.values[4 * i], kept = direct.values[3 * i], denoised = linear.rgba[4 * i];
-    const long seen = std::lround(raw / (0.5f / 16));
-    if (seen == 1) {
-      ++oneSample;
-      EXPECT_EQ(kept, 0.0f) << "pixel " << i;
-      EXPECT_LT(denoised, 0.5f * raw) << "pixel " << i;
-    } else if (seen > 1) {
-      ++more;
-      EXPECT_EQ(kept, raw) << "pixel " << i;
-      EXPECT_NEAR(denoised, raw, 1e-6f) << "pixel " << i;
+  // filter. Where one sample alone of 16 saw it, that is the pixel's noise, not its value (the
+  // reference's is the disc's share of the pixel): the direct light is taken over 64 samples, the
+  // same points as 64 raw samples, and kept if more than one of those saw the disc; if one alone
+  // did, it goes to the filter, whose outlier pass brings the pixel down towards its neighbours.
+  struct Seen {
+    int more = 0, oneOf16 = 0, oneOf64 = 0;
+  };
+  const auto spotOnTheWall = [](Vec3 at, Real cutoff) {
+    Scene s = denoisedWallScene(16);
+    s.rayTracing.maxDepth = 1;
+    Light spot;
+    spot.position = Vec4(at, 1);
+    spot.spotDirection = {0, 0, -1};
+    spot.spotCutoff = cutoff;
+    s.lights = {spot};
+    FloatImage linear, raw64;
+    renderScene(s, nullptr, nullptr, &linear);
+    s.rayTracing.denoise = false;
+    s.rayTracing.samples = 64;
+    renderScene(s, nullptr, nullptr, &raw64);
+    const FloatLayer &direct = layerOf(linear, "direct"), &beauty = layerOf(linear, "beauty");
+    // Each sample on the disc sees 0.5 (its cosines are 1 within 1e-4).
+    Seen seen;
+    for (std::size_t i = 0; i < direct.values.size() / 3; ++i) {
+      const float raw = beauty.values[4 * i], kept = direct.values[3 * i], denoised = linear.rgba[4 * i];
+      const long of16 = std::lround(raw / (0.5f / 16)), of64 = std::lround(raw64.rgba[4 * i] / (0.5f / 64));
+      if (of16 > 1) {
+        ++seen.more;
+        EXPECT_EQ(kept, raw) << "pixel " << i;
+        EXPECT_NEAR(denoised, raw, 1e-6f) << "pixel " << i;
+      } else if (of16 == 1 && of64 > 1) {
+        ++seen.oneOf16;
+        EXPECT_NEAR(kept, raw64.rgba[4 * i], 1e-6f) << "pixel " << i;
+      } else if (of16 == 1) {
+        ++seen.oneOf64;
+        EXPECT_EQ(kept, 0.0f) << "pixel " << i;
+        EXPECT_LT(denoised, 0.5f * raw) << "pixel " << i;
+      }
     }
-  }
-  EXPECT_EQ(oneSample, 1);
-  EXPECT_EQ(more, 1);
+    return seen;
+  };
+  // A disc of radius 0.026 (the wall's pixels are 0.1 wide): one pixel where two or more of 16
+  // samples saw it, one where one did and 5 of 64.
+  const Seen wide = spotOnTheWall({0.31f, 0.27f, 3}, 0.5f);
+  EXPECT_EQ(wide.more, 1);
+  EXPECT_EQ(wide.oneOf16, 1);
+  // Of radius 0.005: one sample of 16 saw it, and of 64 that one alone.
+  const Seen narrow = spotOnTheWall({0.33f, 0.25f, 3}, 0.1f);
+  EXPECT_EQ(narrow.oneOf64, 1);
 }
 
 TEST(PathTracer, TheSameBytesOnEveryThreadCount) {

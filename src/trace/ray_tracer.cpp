@@ -38,8 +38,10 @@ constexpr int kBlock = 4;   // pixels on a side of a primary ray packet
 // Where a pixel's guides are refined (refineGuides): where its samples' albedos differ by more
 // than this in a channel, or the mean of their unit normals is shorter than kNormalsAgree (they
 // met faces turned apart: two at 90°, one sample of 16 on the second, give 0.94; the same face
-// of a curved or normal-mapped surface comes near 1), or only some of them hit a surface; over
-// this many samples (the picture's own among them), 4 times the picture's, from 32 to 256.
+// of a curved or normal-mapped surface comes near 1), or their direct light is not exact
+// (DirectSums::exact: a highlight or a shadow's edge smaller than the pixel), or only some of
+// them hit a surface; over this many samples (the picture's own among them), 4 times the
+// picture's, from 32 to 256.
 constexpr Real kAlbedoSpread = Real(1) / 64;
 constexpr Real kNormalsAgree = Real(0.95);
 int guideSamples(int samples) { return samples < 2 ? samples : std::clamp(4 * samples, 32, 256); }
@@ -117,6 +119,30 @@ struct LayerSums {
   }
 };
 
+// The first surface's light from point, spot and directional lights over a pixel's hits: its sum,
+// and its luminance's and its square's, to tell whether their mean is exact for the pixel.
+struct DirectSums {
+  Color3 sum{0};
+  Real luminance = 0, luminanceSquared = 0;
+
+  void add(const Color3& direct) {
+    const Real l = illum::luminance(direct);
+    sum += direct, luminance += l, luminanceSquared += l * l;
+  }
+  // Whether the mean over `hits` is kept out of the filter: unless the standard error of its
+  // mean is over 0.75 of the mean, as where one sample alone of n saw the light (√((n − 1)/n) of
+  // it; two of n: √((n − 2)/2n) < 0.71). That one sample saw a highlight smaller than the pixel,
+  // or the sliver of a light's edge: exact for itself, noise for the pixel (on a smooth clear
+  // coat, 30 times the reference's value at 16 samples), which the filter's outlier pass is for.
+  // (2CylinderEngine, ClearCoatTest.gltf at 16 samples, 320×240: 0.00093, 0.0084 with no such
+  // rule; 0.00096, 0.00059 with this; 0.00117, 0.00060 with 0.5.)
+  bool exact(int hits) const {
+    const Real n = Real(std::max(hits, 1)), mean = luminance / n;
+    const Real varianceOfMean = std::max(Real(0), luminanceSquared / n - mean * mean) / n;
+    return varianceOfMean <= Real(0.75 * 0.75) * mean * mean;
+  }
+};
+
 // A pixel's guides over more samples than its light was: the mean albedo, normal and distance of
 // the first surfaces hit, and the share of the samples that hit one; and over the same samples
 // the mean direct light of those surfaces.
@@ -126,6 +152,7 @@ struct RefinedGuides {
   Real depth = 0;
   Real coverage = 0;
   Color3 direct{0};
+  bool directExact = false;  // DirectSums::exact over those samples
 };
 
 // What one pixel's samples add up to: every sample (the background where they miss), and those
@@ -136,18 +163,9 @@ struct PixelSums {
   int hitCount = 0;
   LayerSums surface, mirrored;
   // The first surface's light from point, spot and directional lights, and the surfaces' layer
-  // with it left in, for where its samples disagree.
-  Color3 direct{0};
-  Real directLuminance = 0, directLuminanceSquared = 0;
+  // with it left in, for where it is not exact (DirectSums::exact).
+  DirectSums direct;
   LayerSums surfaceWithDirect;
-
-  // Whether the direct light is kept out of the filter: unless the standard error of its mean is
-  // over 0.75 of the mean, as where one sample alone of n saw the light (√((n − 1)/n) of it; two
-  // of n: √((n − 2)/2n) < 0.71). That one sample saw a highlight smaller than the pixel, or the
-  // sliver of a light's edge: exact for itself, noise for the pixel (on a smooth clear coat, 30
-  // times the reference's value at 16 samples), which the filter's outlier pass is for.
-  // (2CylinderEngine, ClearCoatTest.gltf at 16 samples, 320×240: 0.00093, 0.0084 with no such
-  // rule; 0.00096, 0.00059 with this; 0.00117, 0.00060 with 0.5.)
   // The spread of the hits' first surfaces' albedos, and whether any hit's first surface was
   // wholly ideal (a mirror's or glass's guides lie past it): see refineGuides.
   Color3 albedoLow{std::numeric_limits<Real>::infinity()}, albedoHigh{-std::numeric_limits<Real>::infinity()};
@@ -155,11 +173,8 @@ struct PixelSums {
   // The guides and coverage over more samples than the picture's (refineGuides), where taken.
   std::optional<RefinedGuides> refined;
 
-  bool directExact() const {
-    const Real n = Real(std::max(hitCount, 1)), mean = directLuminance / n;
-    const Real varianceOfMean = std::max(Real(0), directLuminanceSquared / n - mean * mean) / n;
-    return varianceOfMean <= Real(0.75 * 0.75) * mean * mean;
-  }
+  // Whether the direct light the picture shows is exact: over the refined samples where taken.
+  bool directExact() const { return refined ? refined->directExact : direct.exact(hitCount); }
 };
 
 class TracedFrame {
@@ -208,7 +223,7 @@ class TracedFrame {
         (exact ? f.surface : f.surfaceWithDirect).write(layer, i, f.hitCount, c[3]);
         float* albedo = &layer.albedo[3 * i];
         for (int k = 0; k < 3; ++k)
-          denoised_->direct[3 * i + std::size_t(k)] = exact ? float(f.direct[k] / Real(std::max(f.hitCount, 1))) : 0.0f;
+          denoised_->direct[3 * i + std::size_t(k)] = exact ? float(f.direct.sum[k] / Real(std::max(f.hitCount, 1))) : 0.0f;
         if (f.refined) {
           // The direct light, unfiltered, is the refined samples' too.
           for (int k = 0; k < 3; ++k) {
@@ -302,10 +317,7 @@ class TracedFrame {
     if (first) pixel.hits += Color3(radiance);
     if (denoised_ && first) {
       const Color3 surface = Color3(radiance) - guides.mirroredRadiance;
-      const Real directLuminance = luminance(guides.direct);
-      pixel.direct += guides.direct;
-      pixel.directLuminance += directLuminance;
-      pixel.directLuminanceSquared += directLuminance * directLuminance;
+      pixel.direct.add(guides.direct);
       pixel.surface.add(surface - guides.direct, guides.albedo, guides.normal, guides.depth, true);
       pixel.surfaceWithDirect.add(surface, guides.albedo, guides.normal, guides.depth, true);
       pixel.mirrored.add(guides.mirroredRadiance, guides.mirrorAlbedo, guides.mirrorNormal, 0, guides.mirrored);
@@ -335,8 +347,9 @@ class TracedFrame {
   // by the coverage, and adds the unfiltered direct light; over the picture's samples all three
   // keep their anti-aliasing's error (a texture's, a silhouette's or a model's edge inside a
   // pixel, seen by 16 samples), which no filter of the light can take out. Where a pixel's
-  // samples saw different albedos, faces turned apart (kNormalsAgree), or only some of them a
-  // surface, its guides, coverage and direct light are therefore taken over more samples
+  // samples saw different albedos, faces turned apart (kNormalsAgree), direct light that is not
+  // exact, or only some of them a surface, its guides, coverage and direct light are therefore
+  // taken over more samples
   // (guideSamples, the next ones of the pixel's stratified sequence), of the first surface only:
   // a primary ray, its material and its shadow rays to the point, spot and directional lights
   // each, no path on. The filtered light itself is still divided by the picture's own albedo,
@@ -352,11 +365,12 @@ class TracedFrame {
         const Color3 spread = f.albedoHigh - f.albedoLow;
         const bool differ = std::max({spread.r, spread.g, spread.b}) > kAlbedoSpread;
         const bool bends = glm::length(f.surface.normal) < kNormalsAgree * Real(std::max(f.surface.guided, 1));
-        if (f.hitCount == 0 || f.idealFirst || !(differ || bends || f.hitCount < samples)) continue;
+        const bool lightDiffers = !f.direct.exact(f.hitCount);
+        if (f.hitCount == 0 || f.idealFirst || !(differ || bends || lightDiffers || f.hitCount < samples)) continue;
         Color3 albedo = f.surface.albedo;
         Vec3 normal = f.surface.normal;
         Real depth = f.surface.depth;
-        Color3 direct = f.direct;
+        DirectSums direct = f.direct;
         int hitCount = f.hitCount, guided = f.surface.guided;
         bool ideal = false;
         for (int s0 = samples; s0 < total && !ideal; s0 += 16) {
@@ -380,12 +394,13 @@ class TracedFrame {
               ideal = true;
               break;
             }
-            albedo += g->albedo, normal += g->normal, depth += g->depth, direct += g->direct, ++guided;
+            albedo += g->albedo, normal += g->normal, depth += g->depth, ++guided;
+            direct.add(g->direct);
           }
         }
         if (ideal || guided == 0) continue;
         f.refined = RefinedGuides{albedo / Real(guided), normal / Real(guided), depth / Real(guided),
-                                  Real(hitCount) / Real(total), direct / Real(hitCount)};
+                                  Real(hitCount) / Real(total), direct.sum / Real(hitCount), direct.exact(hitCount)};
       }
   }
 
