@@ -349,12 +349,11 @@ class TracedFrame {
   // pixel, seen by 16 samples), which no filter of the light can take out. Where a pixel's
   // samples saw different albedos, faces turned apart (kNormalsAgree), direct light that is not
   // exact, or only some of them a surface, its guides, coverage and direct light are therefore
-  // taken over more samples
-  // (guideSamples, the next ones of the pixel's stratified sequence), of the first surface only:
-  // a primary ray, its material and its shadow rays to the point, spot and directional lights
-  // each, no path on. The filtered light itself is still divided by the picture's own albedo,
-  // which its samples saw. (A pixel whose samples met a wholly ideal surface keeps its guides:
-  // they lie past it.)
+  // taken over more samples (guideSamples, the next ones of the pixel's stratified sequence), of
+  // the first surface only: a primary ray, its material and its shadow rays to the point, spot
+  // and directional lights each, no path on. The filtered light itself is still divided by the
+  // picture's own albedo, which its samples saw. (A pixel whose samples met a wholly ideal
+  // surface keeps its guides: they lie past it.)
   void refineGuides(int x0, int y0, int x1, int y1, std::array<PixelSums, kTile * kTile>& sums,
                     TileCounts& counts) const {
     const int samples = samplesPerPixel(scene_), total = guideSamples(samples);
