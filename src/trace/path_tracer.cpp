@@ -96,8 +96,7 @@ Color3 PathTracer::lightFrom(const EyeLight& light, const Surface& s, const Path
   // Where is the light: the rasterizer's own sample (shading/), edge cases and all.
   const LightSampleAt at = sampleLight(light, s.h.position, s.N);
   const Real factor = at.attenuation * at.spot;
-  const bool leaves = glm::dot(at.L, s.N) > 0 && glm::dot(at.L, s.Ng) > 0;
-  if (!(factor > 0) || !(shadows ? leaves : glm::dot(at.L, s.N) > 0)) return Color3(0);
+  if (!(factor > 0) || !(shadows ? s.leaves(at.L) : glm::dot(at.L, s.N) > 0)) return Color3(0);
   const BsdfValue f = bsdf.eval(s.wo, at.L);
   if (f.sum() == Color3(0)) return Color3(0);
   // A positional light at the point itself has nothing between them.
@@ -199,7 +198,6 @@ Color3 PathTracer::walk(Walk w, Rng& rng, RayCounts& counts, const PathSample& s
     };
 
     const PathBsdf bsdf(surface.material, surface.model, N);
-    const auto leaves = [&](const Vec3& wi) { return glm::dot(wi, N) > 0 && glm::dot(wi, Ng) > 0; };
 
     // Mirror and glass: the material is k × an ideal mirror (k = k_r) or a smooth dielectric
     // (k = k_t: Fresnel's F reflected, 1 − F refracted) plus (1 − k) × its BSDF (below: which of
@@ -305,7 +303,7 @@ Color3 PathTracer::walk(Walk w, Rng& rng, RayCounts& counts, const PathSample& s
       const Real distance = glm::length(d);
       const Vec3 wi = d / distance;
       const Real cosLight = -glm::dot(s.normal, wi);  // the light's front faces the point
-      if (distance > 0 && cosLight > 0 && leaves(wi)) {
+      if (distance > 0 && cosLight > 0 && surface.leaves(wi)) {
         const BsdfValue f = bsdf.eval(wo, wi);
         // The shadow ray stops just short of the light's surface, measured from where it starts.
         Ray shadow;
@@ -329,7 +327,7 @@ Color3 PathTracer::walk(Walk w, Rng& rng, RayCounts& counts, const PathSample& s
       const Vec2 u = pair(2);
       const EnvironmentSample e = environmentLight_->sample(u.x, u.y);
       const Vec3 wi = glm::transpose(worldFromView_) * e.direction;
-      if (e.pdf > 0 && leaves(wi)) {
+      if (e.pdf > 0 && surface.leaves(wi)) {
         const BsdfValue f = bsdf.eval(wo, wi);
         if (f.sum() != Color3(0)) {
           Ray shadow;

@@ -100,6 +100,8 @@ class PathTracer {
     LightingModel model{};
     Color3 emission{0};
     Vec3 Ng{0}, N{0};
+    // Whether light along wi leaves (or arrives) above both the shading normal and the facet.
+    bool leaves(const Vec3& wi) const { return glm::dot(wi, N) > 0 && glm::dot(wi, Ng) > 0; }
   };
   Surface surfaceAt(const Ray& ray, const RayHit& hit, const RayCone& cone) const;
   // The denoiser's albedo of a surface: its BSDF's, its ideal part k and its emission (up to 1).
