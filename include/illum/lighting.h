@@ -86,6 +86,11 @@ PhysicalMaterial physicalFromGl(const Material& m);
 void glFromPhysical(Material& m, const PhysicalMaterial& p);
 // What cook-torrance reads of any material.
 inline PhysicalMaterial physicalOf(const Material& m) { return m.physicallyBased ? m.physical : physicalFromGl(m); }
+// What the lighting model `model` reads of the physically based description: all of it for
+// cook-torrance, nothing for the classic models (which read the GL colours).
+inline PhysicalMaterial physicalFor(const Material& m, LightingModel model) {
+  return model == LightingModel::CookTorrance ? physicalOf(m) : PhysicalMaterial{};
+}
 // The material GL uses at a vertex with colour `c` under GL_COLOR_MATERIAL(GL_AMBIENT_AND_DIFFUSE);
 // for cook-torrance the colour is the base colour.
 inline Material withVertexColor(Material m, const Color4& c) {

@@ -78,11 +78,12 @@ HWY_INLINE void AddReflected(D d, TermsL<V>& terms, const LightSumsL<V>& sums, c
 }
 
 // The material's own colours at every lane: GL's ambient and diffuse, or for cook-torrance the
-// base colour in both (which vertex colours replace as they replace GL's two).
+// base colour in both (which vertex colours replace as they replace GL's two). `physical` is
+// physicalFor(m, model), which the caller asks for once rather than once a vector.
 template <class D, class V = hn::VFromD<D>>
-HWY_INLINE MaterialColorsL<V> UniformColors(D d, const Material& m, LightingModel model) {
+HWY_INLINE MaterialColorsL<V> UniformColors(D d, const Material& m, const PhysicalMaterial& physical, LightingModel model) {
   if (model == LightingModel::CookTorrance) {
-    const Vec3L<V> base = Broadcast(d, physicalOf(m).baseColor);
+    const Vec3L<V> base = Broadcast(d, physical.baseColor);
     return {base, base, hn::Set(d, m.diffuse.a)};
   }
   return {Broadcast(d, Vec3(m.ambient)), Broadcast(d, Vec3(m.diffuse)), hn::Set(d, m.diffuse.a)};
@@ -275,15 +276,16 @@ struct MappedL {
   const Vec3L<V>* emission = nullptr;
 };
 
-// The whole equation at each lane: emission, global ambient, then every light in order.
+// The whole equation at each lane: emission, global ambient, then every light in order
+// (`physicalMaterial` is physicalFor(material, model)).
 template <class D, class V = hn::VFromD<D>>
 HWY_INLINE TermsL<V> ShadeEquation(D d, std::span<const EyeLight> lights, const LightModel& lightModel,
-                                   const Material& material, const MaterialColorsL<V>& colors, LightingModel model,
-                                   const SurfaceL<V>& s, const MappedL<V>& mapped = {}) {
+                                   const Material& material, const PhysicalMaterial& physicalMaterial,
+                                   const MaterialColorsL<V>& colors, LightingModel model, const SurfaceL<V>& s,
+                                   const MappedL<V>& mapped = {}) {
   TermsL<V> terms = TermsWithoutLights(d, lightModel, material, colors, model);
   const bool noteShader = follows(model, lightModel.convention) && lightModel.convention == Convention::NoteShader;
   if (mapped.emission && !noteShader) terms.emission = *mapped.emission;  // (the note's shader has no emission)
-  const PhysicalMaterial physicalMaterial = model == LightingModel::CookTorrance ? physicalOf(material) : PhysicalMaterial{};
   const PhysicalL<V> physical = mapped.metallic ? LanePhysical(d, physicalMaterial, *mapped.metallic, *mapped.roughness)
                                                 : UniformPhysical(d, physicalMaterial);
   if (lightModel.environment && !noteShader)

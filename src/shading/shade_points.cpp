@@ -34,31 +34,35 @@ HWY_INLINE void LoadMaps(D d, const SurfacePoints& p, std::size_t i, MapLanes<V>
   }
 }
 
+// (`physical` is physicalFor(setup.material, setup.model): asked for once per batch or owner, not
+// once a vector, where deriving it from a GL material had cost a twelfth of a frame.)
 template <class D, class V = hn::VFromD<D>>
-HWY_INLINE void LitColor(D d, const ShadeSetup& setup, SurfaceL<V>& s, const Real* const* color, const Real* open,
-                         V& r, V& g, V& b, V& a, const MappedL<V>& mapped = {}) {
+HWY_INLINE void LitColor(D d, const ShadeSetup& setup, const PhysicalMaterial& physical, SurfaceL<V>& s,
+                         const Real* const* color, const Real* open, V& r, V& g, V& b, V& a,
+                         const MappedL<V>& mapped = {}) {
   s.toViewer = ToViewer(d, s.P, viewerIsLocal(setup.lightModel));
-  MaterialColorsL<V> colors = UniformColors(d, setup.material, setup.model);
+  MaterialColorsL<V> colors = UniformColors(d, setup.material, physical, setup.model);
   if (color) {
     const Vec3L<V> c{hn::LoadU(d, color[0]), hn::LoadU(d, color[1]), hn::LoadU(d, color[2])};
     colors = {c, c, hn::LoadU(d, color[3])};
   }
-  TermsL<V> terms = ShadeEquation(d, setup.lights, setup.lightModel, setup.material, colors, setup.model, s, mapped);
+  TermsL<V> terms =
+      ShadeEquation(d, setup.lights, setup.lightModel, setup.material, physical, colors, setup.model, s, mapped);
   if (open) terms.ambient = hn::LoadU(d, open) * terms.ambient;
   ClampedColor(d, terms, colors.alpha, setup.lightModel.toneMap, r, g, b, a);
 }
 
 // Points [first, first + lanes) of `p`, read from and written to arrays offset by `first`.
 template <class D>
-HWY_INLINE void ShadeLanes(D d, const ShadeSetup& setup, const Real* const position[3], const Real* const normal[3],
-                           const Real* const color[4], const Real* open, Real* const out[4],
-                           const MappedL<hn::VFromD<D>>& mapped = {}) {
+HWY_INLINE void ShadeLanes(D d, const ShadeSetup& setup, const PhysicalMaterial& physical, const Real* const position[3],
+                           const Real* const normal[3], const Real* const color[4], const Real* open,
+                           Real* const out[4], const MappedL<hn::VFromD<D>>& mapped = {}) {
   using V = hn::VFromD<D>;
   SurfaceL<V> s;
   s.P = {hn::LoadU(d, position[0]), hn::LoadU(d, position[1]), hn::LoadU(d, position[2])};
   s.N = {hn::LoadU(d, normal[0]), hn::LoadU(d, normal[1]), hn::LoadU(d, normal[2])};
   V r, g, b, a;
-  LitColor(d, setup, s, color[0] ? color : nullptr, open, r, g, b, a, mapped);
+  LitColor(d, setup, physical, s, color[0] ? color : nullptr, open, r, g, b, a, mapped);
   hn::StoreU(r, d, out[0]);
   hn::StoreU(g, d, out[1]);
   hn::StoreU(b, d, out[2]);
@@ -69,6 +73,7 @@ void ShadePoints(const ShadeSetup& setup, const SurfacePoints& p, Real* const ou
   const hn::ScalableTag<Real> d;
   const std::size_t lanes = hn::Lanes(d);
   const bool colored = p.color[0] != nullptr;
+  const PhysicalMaterial physical = physicalFor(setup.material, setup.model);
   std::size_t i = 0;
   for (; i + lanes <= p.count; i += lanes) {
     const Real* position[3] = {p.position[0] + i, p.position[1] + i, p.position[2] + i};
@@ -78,7 +83,7 @@ void ShadePoints(const ShadeSetup& setup, const SurfacePoints& p, Real* const ou
     Real* const dst[4] = {out[0] + i, out[1] + i, out[2] + i, out[3] + i};
     MapLanes<hn::VFromD<decltype(d)>> maps;
     LoadMaps(d, p, i, maps);
-    ShadeLanes(d, setup, position, normal, color, p.ambientOpen ? p.ambientOpen + i : nullptr, dst, maps.mapped);
+    ShadeLanes(d, setup, physical, position, normal, color, p.ambientOpen ? p.ambientOpen + i : nullptr, dst, maps.mapped);
   }
   if (i == p.count) return;
   // The last few points: copied into full vectors, the spare lanes repeating the last point.
@@ -104,12 +109,28 @@ void ShadePoints(const ShadeSetup& setup, const SurfacePoints& p, Real* const ou
   const Real* color[4] = {};
   if (colored) color[0] = in[6], color[1] = in[7], color[2] = in[8], color[3] = in[9];
   Real* const dst[4] = {result[0], result[1], result[2], result[3]};
-  ShadeLanes(d, setup, position, normal, color, p.ambientOpen ? in[10] : nullptr, dst, maps.mapped);
+  ShadeLanes(d, setup, physical, position, normal, color, p.ambientOpen ? in[10] : nullptr, dst, maps.mapped);
   for (std::size_t k = 0; i + k < p.count; ++k)
     for (int c = 0; c < 4; ++c) out[c][i + k] = result[c][k];
 }
 
 #if !ILLUM_USE_DOUBLE
+// Each owner's physicalFor, asked for when the owner differs from the last one asked about (a
+// tile's pixels come owner after owner).
+class OwnerPhysical {
+ public:
+  explicit OwnerPhysical(std::span<const ShadeSetup> setups) : setups_(setups) {}
+  const PhysicalMaterial& operator()(std::uint32_t owner) {
+    if (owner != owner_) owner_ = owner, physical_ = physicalFor(setups_[owner].material, setups_[owner].model);
+    return physical_;
+  }
+
+ private:
+  std::span<const ShadeSetup> setups_;
+  std::uint32_t owner_ = kNoOwner;
+  PhysicalMaterial physical_;
+};
+
 // The lanes of vectors that an object's edge splits (some lanes empty or another owner's), gathered
 // owner by owner into dense vectors before they are lit: lighting each such vector once per owner
 // it holds would light the other lanes for nothing (a tenth of the work on small objects). The
@@ -120,8 +141,9 @@ class EdgeLanes {
   using DU = hn::RebindToUnsigned<D>;
   static constexpr std::size_t kRoom = 2 * hn::MaxLanes(D());
 
-  EdgeLanes(std::span<const ShadeSetup> setups, std::span<const std::uint8_t> colored, std::uint32_t* rgba)
-      : setups_(setups), colored_(colored), rgba_(rgba) {}
+  EdgeLanes(std::span<const ShadeSetup> setups, std::span<const std::uint8_t> colored, std::uint32_t* rgba,
+            OwnerPhysical& physical)
+      : setups_(setups), colored_(colored), rgba_(rgba), physical_(physical) {}
 
   // The lanes `mine` of pixels [i, i + lanes), all owner `o`'s. A whole vector of one owner's
   // lanes is lit as soon as it is gathered; the lanes past it wait for the next.
@@ -165,7 +187,7 @@ class EdgeLanes {
     s.N = {hn::Load(d, plane_[3]), hn::Load(d, plane_[4]), hn::Load(d, plane_[5])};
     const Real* color[4] = {plane_[6], plane_[7], plane_[8], plane_[9]};
     V r, g, b, a;
-    LitColor(d, setups_[owner_], s, colored_[owner_] ? color : nullptr, nullptr, r, g, b, a);
+    LitColor(d, setups_[owner_], physical_(owner_), s, colored_[owner_] ? color : nullptr, nullptr, r, g, b, a);
     HWY_ALIGN std::uint32_t packed[hn::MaxLanes(du)];
     hn::Store(PackUnorm8(d, r, g, b, a), du, packed);
     for (std::size_t k = 0; k < n; ++k) rgba_[pixel_[k]] = packed[k];
@@ -174,6 +196,7 @@ class EdgeLanes {
   std::span<const ShadeSetup> setups_;
   std::span<const std::uint8_t> colored_;
   std::uint32_t* rgba_;
+  OwnerPhysical& physical_;
   // Position, normal, colour; lanes past count_ keep earlier points (finite values, never stored).
   HWY_ALIGN float plane_[10][kRoom] = {};
   HWY_ALIGN std::uint32_t pixel_[kRoom] = {};
@@ -190,7 +213,8 @@ void ShadeOwnedPoints(std::span<const ShadeSetup> setups, std::span<const std::u
   using V = hn::VFromD<decltype(d)>;
   const std::size_t lanes = hn::Lanes(d);
   const auto none = hn::Set(du, kNoOwner);
-  EdgeLanes edges(setups, colored, rgba);
+  OwnerPhysical physical(setups);
+  EdgeLanes edges(setups, colored, rgba, physical);
   for (std::size_t i = 0; i < p.count; i += lanes) {
     const auto owners = hn::LoadU(du, owner + i);
     auto todo = owners != none;
@@ -202,7 +226,7 @@ void ShadeOwnedPoints(std::span<const ShadeSetup> setups, std::span<const std::u
     if (hn::AllTrue(du, owners == hn::Set(du, first))) {  // a whole vector of one owner: lit as it is
       const Real* color[4] = {p.color[0] + i, p.color[1] + i, p.color[2] + i, p.color[3] + i};
       V r, g, b, a;
-      LitColor(d, setups[first], s, colored[first] ? color : nullptr, nullptr, r, g, b, a);
+      LitColor(d, setups[first], physical(first), s, colored[first] ? color : nullptr, nullptr, r, g, b, a);
       hn::StoreU(PackUnorm8(d, r, g, b, a), du, rgba + i);
       continue;
     }
@@ -258,7 +282,7 @@ HWY_NAMESPACE::SurfaceL<V> surface(const SurfaceGeometry& s) {
   return {lanes(s.position), lanes(s.normal), lanes(s.toViewer)};
 }
 HWY_NAMESPACE::MaterialColorsL<V> colors(const Material& m, LightingModel model) {
-  return HWY_NAMESPACE::UniformColors(d, m, model);
+  return HWY_NAMESPACE::UniformColors(d, m, physicalFor(m, model), model);
 }
 
 }  // namespace one
@@ -267,8 +291,7 @@ void accumulateLight(LightingTerms& terms, const EyeLight& light, const Material
                      const SurfaceGeometry& surface, LightDetail* detail, Convention convention) {
   auto t = HWY_NAMESPACE::NoTerms(one::d);
   auto sums = HWY_NAMESPACE::NoLight(one::d);
-  const auto physical = HWY_NAMESPACE::UniformPhysical(
-      one::d, model == LightingModel::CookTorrance ? physicalOf(material) : PhysicalMaterial{});
+  const auto physical = HWY_NAMESPACE::UniformPhysical(one::d, physicalFor(material, model));
   const auto colors = one::colors(material, model);
   if (detail) {
     *detail = LightDetail{};
@@ -286,7 +309,8 @@ void accumulateLight(LightingTerms& terms, const EyeLight& light, const Material
 
 LightingTerms evaluateTerms(std::span<const EyeLight> lights, const LightModel& lightModel, const Material& material,
                             LightingModel model, const SurfaceGeometry& surface) {
-  const auto t = HWY_NAMESPACE::ShadeEquation(one::d, lights, lightModel, material, one::colors(material, model),
+  const auto t = HWY_NAMESPACE::ShadeEquation(one::d, lights, lightModel, material, physicalFor(material, model),
+                                              one::colors(material, model),
                                               model, one::surface(surface));
   return {HWY_NAMESPACE::Lane0(t.emission), HWY_NAMESPACE::Lane0(t.ambient), HWY_NAMESPACE::Lane0(t.diffuse),
           HWY_NAMESPACE::Lane0(t.specular)};

@@ -207,7 +207,9 @@ TEST(ShadePoints, EverySimdTargetGivesTheSameBits) {
 // Each owned point lit with its owner's setup, as shadePoints lights it, whatever the vector's
 // other lanes hold: whole vectors of one owner, vectors split between owners or partly empty
 // (gathered owner by owner before they are lit), owners alternating lane by lane, one owner's
-// lanes with holes in every vector, and an owner with colours of its own. On every SIMD target.
+// lanes with holes in every vector, and an owner with colours of its own; two cook-torrance
+// owners, a GL material and a physically based one, whose physical description each vector
+// must take from its own owner. On every SIMD target.
 TEST(ShadeOwnedPoints, LightsEachPointWithItsOwnersSetupWhateverItsVectorHolds) {
   std::mt19937 rng(7);
   const std::size_t n = 1024;
@@ -219,14 +221,22 @@ TEST(ShadeOwnedPoints, LightsEachPointWithItsOwnersSetupWhateverItsVectorHolds) 
   setups[2].model = LightingModel::Phong;
   setups[2].material.specular = {1, 1, 1, 1};
   setups[2].material.shininess = 61;
-  const std::vector<std::uint8_t> colored = {0, 1, 0};
+  setups.push_back(setups[1]);
+  setups[3].model = LightingModel::CookTorrance;  // the GL material seen through physicalOf
+  setups.push_back(setups[3]);
+  PhysicalMaterial metal;
+  metal.baseColor = {0.9f, 0.6f, 0.2f};
+  metal.metallic = 1;
+  metal.roughness = 0.3f;
+  glFromPhysical(setups[4].material, metal);
+  const std::vector<std::uint8_t> colored = {0, 1, 0, 0, 0};
   std::vector<std::uint32_t> owner(n);
   for (std::size_t i = 0; i < n; ++i) {
     const std::size_t block = i / 64;  // runs of 64: longer than any vector
     owner[i] = block % 6 == 0   ? 0
                : block % 6 == 1 ? (i % 3 == 0 ? kNoOwner : std::uint32_t(i % 2 + 1))  // mixed, lane by lane
                : block % 6 == 2 ? (i % 64 < 21 ? 2 : i % 64 < 40 ? kNoOwner : 1)      // split runs
-               : block % 6 == 3 ? std::uint32_t(rng() % 4 == 0 ? kNoOwner : rng() % 3)
+               : block % 6 == 3 ? std::uint32_t(rng() % 4 == 0 ? kNoOwner : rng() % 5)
                // One owner with holes: its lanes gathered across vectors, more than one vector's worth.
                : block % 6 == 4 ? (i % 5 == 0 ? kNoOwner : 1)
                                 : (i % 7 == 3 ? kNoOwner : 2);
