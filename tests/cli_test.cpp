@@ -656,6 +656,19 @@ TEST(CliRayTracing, RendererOptionsApplyAndBadValuesAreRefused) {
   EXPECT_NE(bad.err.find("--renderer: expected raster, whitted, hall or path"), std::string::npos) << bad.err;
   EXPECT_EQ(run("render --renderer whitted --samples 0 -o " + out).exitCode, 2);
   EXPECT_EQ(run("render --renderer whitted --max-depth 17 -o " + out).exitCode, 2);
+  // --seed: another picture of the same samples' noise, the same bytes for the same seed; the
+  // rasterizer, which takes no random samples, refuses it.
+  const auto jittered = [&](const std::string& seed) {
+    const RunResult r = run("render --renderer whitted --samples 4 --width 96 --height 54" + seed + " -o " + out);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    return illum::readPng(out).rgba;
+  };
+  EXPECT_EQ(jittered(""), jittered(" --seed 0"));
+  EXPECT_EQ(jittered(" --seed 9"), jittered(" --seed 9"));
+  EXPECT_NE(jittered(" --seed 9"), jittered(""));
+  const RunResult raster = run("render --seed 3 -o " + out);
+  EXPECT_EQ(raster.exitCode, 2);
+  EXPECT_NE(raster.err.find("--seed: the ray tracers'"), std::string::npos) << raster.err;
 }
 
 TEST(CliRayTracing, DebugPixelReportsShadowsAndTheTracedColour) {

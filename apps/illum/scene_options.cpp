@@ -16,6 +16,7 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <limits>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -343,6 +344,10 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o, std::vector<std::string>* i
       ->check(wholeRange(1, kMaxSamples));
   cmd.add_option("--max-depth", o.maxDepth, "Ray tracers: reflected and refracted bounces followed [5]")
       ->check(wholeRange(0, kMaxRayDepth));
+  cmd.add_option("--seed", o.seed,
+                 "Ray tracers: which of the equally good pictures their samples give (the same seed, the same bytes) "
+                 "[scenes: their \"seed\"; 0]")
+      ->check(wholeRange(0, std::numeric_limits<int>::max()));
   cmd.add_option("--tone-map", o.toneMap, "Radiance above 1: none (clamp; default), reinhard or aces");
   cmd.add_option("--encoding", o.encoding, "Bytes of the picture: linear (GL's; default) or srgb");
   cmd.add_option("--background-color,--background", o.background, "Background colour R,G,B or #rrggbb");
@@ -596,6 +601,7 @@ Scene prepareScene(SceneOptions o, double* loadMs, ModelCache* cache, std::vecto
     scene.multisample = 8;  // previews are anti-aliased
   }
   if (o.maxDepth) scene.rayTracing.maxDepth = *o.maxDepth;
+  if (o.seed) scene.rayTracing.seed = std::uint32_t(*o.seed);
   if (!o.background.empty()) {
     // The background is the colour the picture shows: in an sRGB picture, the linear value that
     // encodes to it.
@@ -632,6 +638,9 @@ Scene prepareScene(SceneOptions o, double* loadMs, ModelCache* cache, std::vecto
   if (o.denoise && scene.renderer != RendererKind::Path)
     throw InputError("--denoise: the path tracer's; the rasterizer and the Whitted and Hall tracers draw no noise "
                      "to remove (use --renderer path)");
+  if (o.seed && scene.renderer == RendererKind::Raster)
+    throw InputError("--seed: the ray tracers'; the rasterizer takes no random samples (use --renderer whitted, hall "
+                     "or path)");
   if (model) scene.pointSize = 3;  // a point cloud's 1-pixel points are hard to see in a preview
   if (o.pointSize) scene.pointSize = Real(*o.pointSize);
   if (o.lineWidth) scene.lineWidth = Real(*o.lineWidth);

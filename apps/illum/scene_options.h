@@ -37,7 +37,7 @@ struct SceneOptions {
   std::string toneMap, encoding;
   std::string renderer;  // raster, whitted or hall
   bool noShadows = false;
-  std::optional<int> samples, maxDepth;
+  std::optional<int> samples, maxDepth, seed;
   bool noBackground = false;
   bool edges = false, grid = false, axes = false;
   bool ambientOcclusion = false, noAmbientOcclusion = false;

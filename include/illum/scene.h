@@ -140,6 +140,10 @@ struct RayTracing {
   int maxDepth = 5;      // reflected and refracted rays followed this many bounces deep
   bool shadows = true;   // shadow rays towards every light
   std::optional<int> samples;  // rays per pixel: 1 through the centre, more jittered (fixed seeds)
+  // Which of the equally good pictures the samples give: each seed scrambles every pixel's sample
+  // points and paths another way (the same seed, the same bytes); 0 is the picture of every earlier
+  // version. Renders of several seeds tell a picture's noise from its bias.
+  std::uint32_t seed = 0;
   Color3 environment{0};       // the path tracer: radiance arriving from everywhere rays escape to
   // ... or from an equirectangular .hdr image, times `environment` (which is then 1 unless given)
   std::shared_ptr<const EnvironmentMapFile> environmentMap;

@@ -478,7 +478,7 @@ Scene parseScene(const std::string& text, const std::string& name, const std::fi
                   "light_model", "lights", "objects", "labels", "blend", "renderer", "max_depth", "shadows",
                   "samples", "environment", "environment_map", "tone_map", "encoding", "multisample", "overlays", "ambient_occlusion",
                   "point_size", "line_width", "denoise", "environment_lighting", "environment_rotation",
-                  "environment_background", "studio_environment"});
+                  "environment_background", "studio_environment", "seed"});
   Scene s;
   if (j.has("version") && j.at("version").integer(0, std::numeric_limits<int>::max()) != 1)
     j.at("version").fail("expected version 1");
@@ -548,6 +548,7 @@ Scene parseScene(const std::string& text, const std::string& name, const std::fi
   if (j.has("shadows")) s.rayTracing.shadows = j.at("shadows").boolean();
   if (j.has("denoise")) s.rayTracing.denoise = j.at("denoise").boolean();
   if (j.has("samples")) s.rayTracing.samples = j.at("samples").integer(1, kMaxSamples);
+  if (j.has("seed")) s.rayTracing.seed = std::uint32_t(j.at("seed").integer(0, std::numeric_limits<int>::max()));
   if (j.has("studio_environment") && j.has("environment_map") && j.at("studio_environment").boolean())
     j.at("studio_environment").fail("expected either an \"environment_map\" file or the studio, not both");
   if (j.has("environment_map")) {

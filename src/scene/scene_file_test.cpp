@@ -238,13 +238,15 @@ TEST(SceneDefaults, RayTracingKeysLeaveTheRasterizerAsItWas) {
 }
 
 TEST(SceneFile, ReadsTheRayTracingKeys) {
-  const Scene s = parse(R"({"renderer": "hall", "max_depth": 7, "shadows": false, "samples": 16,
+  const Scene s = parse(R"({"renderer": "hall", "max_depth": 7, "shadows": false, "samples": 16, "seed": 42,
     "objects": [{"material": {"reflective": [0.1, 0.2, 0.3], "transmissive": [0.9, 0.8, 0.7], "ior": 1.33,
                               "transmission_shininess": 12, "filter": [0.5, 0.6, 0.7]}}]})");
   EXPECT_EQ(s.renderer, RendererKind::Hall);
   EXPECT_EQ(s.rayTracing.maxDepth, 7);
   EXPECT_FALSE(s.rayTracing.shadows);
   EXPECT_EQ(s.rayTracing.samples, 16);
+  EXPECT_EQ(s.rayTracing.seed, 42u);
+  EXPECT_EQ(parse("{}").rayTracing.seed, 0u);
   const SurfaceOptics& o = s.objects[0].optics;
   EXPECT_EQ(o.reflective, Color3(Real(0.1), Real(0.2), Real(0.3)));
   EXPECT_EQ(o.transmissive, Color3(Real(0.9), Real(0.8), Real(0.7)));
@@ -258,6 +260,8 @@ TEST(SceneRejects, BadRayTracingKeys) {
   EXPECT_EQ(errorOf(R"({"renderer": "pathtracer"})"),
             "scene.json: /renderer: expected \"raster\", \"whitted\", \"hall\" or \"path\", got \"pathtracer\"");
   EXPECT_NE(errorOf(R"({"max_depth": 17})").find("/max_depth"), std::string::npos);
+  EXPECT_NE(errorOf(R"({"seed": -1})").find("/seed"), std::string::npos);
+  EXPECT_NE(errorOf(R"({"seed": 0.5})").find("/seed"), std::string::npos);
   EXPECT_NE(errorOf(R"({"environment_map": "no-such-sky.hdr"})").find("/environment_map: expected a readable Radiance .hdr"),
             std::string::npos);
   EXPECT_NE(errorOf(R"({"environment": [-1, 0, 0]})").find("/environment"), std::string::npos);

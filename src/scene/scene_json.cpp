@@ -219,6 +219,7 @@ std::string sceneJson(const Scene& s) {
   j["shadows"] = s.rayTracing.shadows;
   j["denoise"] = s.rayTracing.denoise;
   if (s.rayTracing.samples) j["samples"] = *s.rayTracing.samples;
+  if (s.rayTracing.seed != 0) j["seed"] = s.rayTracing.seed;
   if (s.environment.studio)
     j["studio_environment"] = true;
   else if (s.rayTracing.environmentMap)

@@ -311,6 +311,50 @@ TEST(PathTracer, ErrorFallsAsOneOverTheSquareRootOfSamples) {
   }
 }
 
+// Each seed draws the room with noise of its own (RayTracing::seed): the same seed the same
+// bytes, seed 0 the picture of no seed at all, and the mean of four seeds' 16-sample pictures as
+// far from a 4096-sample render as independent noise leaves it, a quarter of one picture's
+// squared error (their noise shares nothing: not the sample points, not the paths).
+TEST(PathTracer, EachSeedDrawsIndependentNoiseAndTheSameSeedTheSameBytes) {
+  Scene s = litRoom(24);
+  s.rayTracing.samples = 4096;
+  FloatImage reference;
+  renderScene(s, nullptr, nullptr, &reference);
+  s.rayTracing.samples = 16;
+  const auto drawn = [&](std::uint32_t seed) {
+    s.rayTracing.seed = seed;
+    FloatImage picture;
+    renderScene(s, nullptr, nullptr, &picture);
+    return picture;
+  };
+  const FloatImage unseeded = drawn(0);
+  EXPECT_EQ(drawn(5).rgba, drawn(5).rgba);
+  std::vector<FloatImage> seeds;
+  for (std::uint32_t seed : {1u, 2u, 3u, 4u}) seeds.push_back(drawn(seed));
+  EXPECT_NE(seeds[0].rgba, unseeded.rgba);
+  FloatImage mean = seeds[0];
+  double single = 0;
+  for (std::size_t i = 0; i < mean.rgba.size(); i += 4)
+    for (std::size_t c = 0; c < 3; ++c) {
+      double sum = 0;
+      for (const FloatImage& p : seeds) {
+        const double e = p.rgba[i + c] - reference.rgba[i + c];
+        single += e * e / double(seeds.size());
+        sum += p.rgba[i + c];
+      }
+      mean.rgba[i + c] = float(sum / double(seeds.size()));
+    }
+  double ofMean = 0;
+  for (std::size_t i = 0; i < mean.rgba.size(); i += 4)
+    for (std::size_t c = 0; c < 3; ++c) {
+      const double e = mean.rgba[i + c] - reference.rgba[i + c];
+      ofMean += e * e;
+    }
+  ASSERT_GT(single, 0);
+  EXPECT_GT(ofMean / single, 0.15);
+  EXPECT_LT(ofMean / single, 0.35) << "the seeds' noise is correlated";
+}
+
 // The relative MSE of a picture's linear RGB against a reference: mean (x − r)²/(r² + 0.01).
 double relativeError(const FloatImage& x, const FloatImage& reference) {
   double sum = 0;

@@ -310,7 +310,8 @@ class TracedFrame {
     // (A sample that overflowed, say under an emitter of absurd strength, counts as nothing.)
     PathFeatures guides;
     const Color4 radiance =
-        pathTracer_->primary(ray, first, cone, counts.rays, {sampleSeed(x, y, s, 3), sampleSeed(x, y, 0, 1), std::uint32_t(s)},
+        pathTracer_->primary(ray, first, cone, counts.rays,
+                             {sampleSeed(x, y, s, seededSalt(3, seed_)), sampleSeed(x, y, 0, seededSalt(1, seed_)), std::uint32_t(s)},
                              denoised_ ? &guides : nullptr);
     if (!std::isfinite(radiance.r + radiance.g + radiance.b + radiance.a)) return;
     pixel.all += radiance;
@@ -405,7 +406,7 @@ class TracedFrame {
 
   // Where sample s of pixel (x, y) goes through the image: the centre, or stratified over the pixel.
   Vec2 pixelPoint(int x, int y, int s) const {
-    const Vec2 offset = samplesPerPixel(scene_) == 1 ? Vec2(Real(0.5)) : pixelSampleOffset(x, y, s);
+    const Vec2 offset = samplesPerPixel(scene_) == 1 ? Vec2(Real(0.5)) : pixelSampleOffset(x, y, s, seed_);
     return {Real(x) + offset.x, Real(y) + offset.y};
   }
 
@@ -418,6 +419,7 @@ class TracedFrame {
   CameraRays camera_;
   WhittedTracer tracer_;
   Real differentialReach_;  // pixels from a sample to the rays of its texture derivatives
+  std::uint32_t seed_ = scene_.rayTracing.seed;  // which picture of the samples (RayTracing::seed)
   std::optional<PathTracer> pathTracer_;
 };
 

@@ -49,6 +49,12 @@ inline std::uint64_t sampleSeed(int x, int y, int sample, std::uint64_t salt) {
                    std::uint64_t(std::uint32_t(sample)) ^ (salt * 0x9E3779B97F4A7C15ull));
 }
 
+// A salt of sampleSeed for the picture of seed `pictureSeed` (RayTracing::seed): another hash
+// for every seed, and for 0 the salt itself, the pictures of every earlier version.
+constexpr std::uint64_t seededSalt(std::uint64_t salt, std::uint32_t pictureSeed) {
+  return salt ^ (std::uint64_t(pictureSeed) << 32);
+}
+
 // The bits of v in reverse order (bit 31 ↔ bit 0).
 constexpr std::uint32_t reversedBits(std::uint32_t v) {
   v = ((v >> 1) & 0x55555555u) | ((v & 0x55555555u) << 1);
@@ -104,8 +110,8 @@ inline std::array<std::uint32_t, 2> sobol2D(std::uint32_t index) {
 // by seeds of the pixel's own. A pixel's samples are stratified, so that an edge's coverage and a
 // texture's footprint come out far less noisy than from independent points (the error of a pixel
 // on an edge falls as N^−3/4 instead of N^−1/2), and no two pixels share a pattern.
-inline Vec2 pixelSampleOffset(int x, int y, int sample) {
-  const std::uint64_t seeds = sampleSeed(x, y, 0, 1);
+inline Vec2 pixelSampleOffset(int x, int y, int sample, std::uint32_t pictureSeed = 0) {
+  const std::uint64_t seeds = sampleSeed(x, y, 0, seededSalt(1, pictureSeed));
   const std::array<std::uint32_t, 2> p = sobol2D(std::uint32_t(sample));
   return {unitFraction(owenScrambled(p[0], std::uint32_t(seeds))), unitFraction(owenScrambled(p[1], std::uint32_t(seeds >> 32)))};
 }
