@@ -5,17 +5,22 @@
 # linear RGB values), and the whole command's time writing the picture as a PNG (the error is read from
 # the same picture drawn again into an EXR, whose float layers take longer to write). References are kept in build/denoise-ref/
 # (delete them after changing the path tracer).
-#   bench/denoise.sh [--size W,H] [--reference N] [INPUT ...]
+# With --seeds K, each input's 16 denoised and 128 raw samples are drawn again with seeds 1..K
+# (illum render --seed) and their error split into bias² and variance (illum_relmse --seeds): a
+# raw picture's is all variance; a filter trades some of it for bias.
+#   bench/denoise.sh [--size W,H] [--reference N] [--seeds K] [INPUT ...]
 # Inputs default to the Cornell box, the built-in scene and a glTF model (2CylinderEngine.glb).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 size=320,240
 reference=4096
+seeds=0
 inputs=()
 while [ $# -gt 0 ]; do
   case "$1" in
     --size) size=$2; shift 2 ;;
     --reference) reference=$2; shift 2 ;;
+    --seeds) seeds=$2; shift 2 ;;
     *) inputs+=("$1"); shift ;;
   esac
 done
@@ -59,4 +64,23 @@ for input in "${inputs[@]}"; do
     row+=("$(printf '%.4f in %ss' "$("$relmse" "$work/pic.exr" "$ref")" "$seconds")")
   done
   printf '| %-22s | %-16s | %-16s | %-16s | %-16s | %-16s |\n' "$(basename "$input")" "${row[@]}"
+done
+[ "$seeds" -gt 1 ] || exit 0
+echo
+echo "# relative MSE over seeds 1..$seeds: error = bias² + variance"
+printf '| %-22s | %-36s | %-36s |\n' input "16 denoised" "128"
+printf '|%s|%s|%s|\n' ------------------------ -------------------------------------- --------------------------------------
+for input in "${inputs[@]}"; do
+  key=$(basename "$input" | tr -c 'A-Za-z0-9.\n' _)_${size/,/x}_$reference
+  row=()
+  for run in "16 --denoise" "128 --no-denoise"; do
+    set -- $run
+    pictures=()
+    for seed in $(seq 1 "$seeds"); do
+      render "s$seed.exr" "$input" "$1" "$2" --seed "$seed" >/dev/null
+      pictures+=("$work/s$seed.exr")
+    done
+    row+=("$("$relmse" --seeds "$out/$key.exr" "${pictures[@]}" | awk '{printf "%.5f = %.5f + %.5f", $2, $4, $6}')")
+  done
+  printf '| %-22s | %-36s | %-36s |\n' "$(basename "$input")" "${row[@]}"
 done

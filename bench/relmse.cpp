@@ -2,8 +2,12 @@
 // mean over pixels and channels of (x − r)² / (r² + 0.01), the measure of denoising papers
 // (Rousselle et al. 2011). For bench/denoise.sh. With --map, also where the error lies: the share
 // of it in the worst 0.1 %, 1 % and 10 % of the pixels, and a grey PNG of each pixel's error
-// against the mean (black: a sixteenth of it or less, white: 16 times or more, log scale).
+// against the mean (black: a sixteenth of it or less, white: 16 times or more, log scale). With
+// --seeds, pictures of the same input drawn with K different seeds (illum render --seed): their
+// mean error, and how it splits into the estimator's bias² and its variance, from the error of
+// the pictures' mean, bias² + variance/K.
 //   illum_relmse PICTURE.exr REFERENCE.exr [--map OUT.png]
+//   illum_relmse --seeds REFERENCE.exr PICTURE.exr PICTURE.exr ...
 #include <illum/error.h>
 #include <illum/image.h>
 
@@ -15,7 +19,55 @@
 #include <functional>
 #include <vector>
 
+namespace {
+
+// The relative squared error of value x against reference value r.
+double relative(double x, double r) { return (x - r) * (x - r) / (r * r + 0.01); }
+
+int seeds(int count, char** files) {
+  const illum::FloatImage r = illum::readExr(files[0]);
+  std::vector<illum::FloatImage> pictures;
+  for (int k = 1; k < count; ++k) {
+    pictures.push_back(illum::readExr(files[k]));
+    if (pictures.back().width != r.width || pictures.back().height != r.height) {
+      std::fprintf(stderr, "illum_relmse: %s is not the reference's size\n", files[k]);
+      return 2;
+    }
+  }
+  const double n = double(pictures.size());
+  double each = 0, ofMean = 0;
+  for (std::size_t i = 0; i < r.rgba.size(); i += 4)
+    for (std::size_t c = 0; c < 3; ++c) {
+      double sum = 0;
+      for (const illum::FloatImage& p : pictures) {
+        each += relative(p.rgba[i + c], r.rgba[i + c]) / n;
+        sum += p.rgba[i + c];
+      }
+      ofMean += relative(sum / n, r.rgba[i + c]);
+    }
+  const double values = double(r.rgba.size() / 4 * 3);
+  each /= values, ofMean /= values;
+  // E = bias² + variance, M = bias² + variance/K.
+  const double variance = (each - ofMean) * n / (n - 1), bias2 = ofMean - variance / n;
+  std::printf("error %.6g bias2 %.6g variance %.6g\n", each, bias2, variance);
+  return 0;
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
+  if (argc >= 2 && std::strcmp(argv[1], "--seeds") == 0) {
+    if (argc < 5) {
+      std::fprintf(stderr, "usage: illum_relmse --seeds REFERENCE.exr PICTURE.exr PICTURE.exr ...\n");
+      return 2;
+    }
+    try {
+      return seeds(argc - 2, argv + 2);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "illum_relmse: %s\n", e.what());
+      return 2;
+    }
+  }
   const bool map = argc == 5 && std::strcmp(argv[3], "--map") == 0;
   if (argc != 3 && !map) {
     std::fprintf(stderr, "usage: illum_relmse PICTURE.exr REFERENCE.exr [--map OUT.png]\n");
@@ -32,8 +84,7 @@ int main(int argc, char** argv) {
     double sum = 0;
     for (std::size_t i = 0; i < x.rgba.size(); i += 4)
       for (std::size_t c = 0; c < 3; ++c) {
-        const double d = double(x.rgba[i + c]) - double(r.rgba[i + c]), ref = r.rgba[i + c];
-        perPixel[i / 4] += d * d / (ref * ref + 0.01);
+        perPixel[i / 4] += relative(x.rgba[i + c], r.rgba[i + c]);
       }
     for (double e : perPixel) sum += e;
     std::printf("%.6g\n", sum / double(x.rgba.size() / 4 * 3));
