@@ -139,7 +139,7 @@ constexpr int kMaxSamples = 16384;  // a path-traced reference takes thousands
 struct RayTracing {
   int maxDepth = 5;      // reflected and refracted rays followed this many bounces deep
   bool shadows = true;   // shadow rays towards every light
-  std::optional<int> samples;  // rays per pixel: 1 through the centre, more jittered (fixed seeds)
+  std::optional<int> samples;  // rays per pixel: 1 through the centre, more jittered (as `seed` says)
   // Which of the equally good pictures the samples give: each seed scrambles every pixel's sample
   // points and paths another way (the same seed, the same bytes); 0 is the picture of every earlier
   // version. Renders of several seeds tell a picture's noise from its bias.
