@@ -311,7 +311,7 @@ class TracedFrame {
     PathFeatures guides;
     const Color4 radiance =
         pathTracer_->primary(ray, first, cone, counts.rays,
-                             {sampleSeed(x, y, s, seededSalt(3, seed_)), sampleSeed(x, y, 0, seededSalt(1, seed_)), std::uint32_t(s)},
+                             {sampleSeed(x, y, s, seededSalt(3, seed_)), pixelSeed(x, y, seed_), std::uint32_t(s)},
                              denoised_ ? &guides : nullptr);
     if (!std::isfinite(radiance.r + radiance.g + radiance.b + radiance.a)) return;
     pixel.all += radiance;

@@ -55,6 +55,12 @@ constexpr std::uint64_t seededSalt(std::uint64_t salt, std::uint32_t pictureSeed
   return salt ^ (std::uint64_t(pictureSeed) << 32);
 }
 
+// The seed of pixel (x, y)'s own scrambling, of its sample points and of its paths' stratified
+// pairs (stratifiedPair) alike.
+inline std::uint64_t pixelSeed(int x, int y, std::uint32_t pictureSeed) {
+  return sampleSeed(x, y, 0, seededSalt(1, pictureSeed));
+}
+
 // The bits of v in reverse order (bit 31 ↔ bit 0).
 constexpr std::uint32_t reversedBits(std::uint32_t v) {
   v = ((v >> 1) & 0x55555555u) | ((v & 0x55555555u) << 1);
@@ -111,7 +117,7 @@ inline std::array<std::uint32_t, 2> sobol2D(std::uint32_t index) {
 // texture's footprint come out far less noisy than from independent points (the error of a pixel
 // on an edge falls as N^−3/4 instead of N^−1/2), and no two pixels share a pattern.
 inline Vec2 pixelSampleOffset(int x, int y, int sample, std::uint32_t pictureSeed = 0) {
-  const std::uint64_t seeds = sampleSeed(x, y, 0, seededSalt(1, pictureSeed));
+  const std::uint64_t seeds = pixelSeed(x, y, pictureSeed);
   const std::array<std::uint32_t, 2> p = sobol2D(std::uint32_t(sample));
   return {unitFraction(owenScrambled(p[0], std::uint32_t(seeds))), unitFraction(owenScrambled(p[1], std::uint32_t(seeds >> 32)))};
 }
