@@ -8,7 +8,9 @@
 # With --seeds K, each input's 16 denoised and 128 raw samples are drawn again with seeds 1..K
 # (illum render --seed) and their error split into bias² and variance (illum_relmse --seeds): a
 # raw picture's is all variance; a filter trades some of it for bias.
-#   bench/denoise.sh [--size W,H] [--reference N] [--seeds K] [INPUT ...]
+# --size native draws each input at the size its command draws by default (a scene file's own,
+# the built-in scene's 960×540, a model's 1000×600); by default every input is 320×240.
+#   bench/denoise.sh [--size W,H|native] [--reference N] [--seeds K] [INPUT ...]
 # Inputs default to the Cornell box, the built-in scene and a glTF model (2CylinderEngine.glb).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -38,15 +40,17 @@ trap 'rm -rf "$work"' EXIT
 render() {
   local name=$1 input=$2 samples=$3
   shift 3
-  local args=(render --renderer path --resolution "$size" --samples "$samples" "$@" -o "$work/$name")
-  [ "$input" = builtin ] || args=(render "$input" --renderer path --resolution "$size" --samples "$samples" "$@" -o "$work/$name")
+  local args=(render)
+  [ "$input" = builtin ] || args+=("$input")
+  args+=(--renderer path --samples "$samples" "$@" -o "$work/$name")
+  [ "$size" = native ] || args+=(--resolution "$size")
   local start end
   start=$(date +%s.%N)
   "$illum" "${args[@]}" >/dev/null
   end=$(date +%s.%N)
   awk -v a="$start" -v b="$end" 'BEGIN { printf "%.2f", b - a }'
 }
-echo "# $(lscpu | sed -n 's/^Model name: *//p'), $(nproc) cores; $size; relative MSE against $reference samples per pixel; seconds for the whole command (PNG)"
+echo "# $(lscpu | sed -n 's/^Model name: *//p'), $(nproc) cores; size $size; relative MSE against $reference samples per pixel; seconds for the whole command (PNG)"
 printf '| %-22s | %-16s | %-16s | %-16s | %-16s | %-16s |\n' input "16" "16 denoised" "64" "64 denoised" "128"
 printf '|%s|%s|%s|%s|%s|%s|\n' ------------------------ ------------------ ------------------ ------------------ ------------------ ------------------
 for input in "${inputs[@]}"; do
