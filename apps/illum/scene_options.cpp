@@ -365,8 +365,8 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& o, std::vector<std::string>* i
                "Path tracer: filter the picture with the feature-guided denoiser [models: on; scenes: their \"denoise\"]");
   cmd.add_flag("--no-denoise", o.noDenoise, "Path tracer: no denoiser, even where the scene file or a preview would use it");
   cmd.add_option("--environment", o.environment,
-                 "Light every renderer by an environment: a latitude-longitude Radiance .hdr map, studio (illum's "
-                 "built-in), or none [models with physically based materials: studio, for those materials alone]");
+                 "Light every renderer by an environment: a latitude-longitude Radiance .hdr or OpenEXR .exr map, "
+                 "studio (illum's built-in), or none [models with physically based materials: studio, for those materials alone]");
   cmd.add_option("--environment-rotation", o.environmentRotation, "Turn the environment about the up axis, degrees [0]")
       ->check(finiteRange(-360, 360));
   cmd.add_option("--environment-intensity", o.environmentIntensity, "Scale the environment's radiance [1]")
