@@ -796,6 +796,13 @@ TEST(CliRender, AnEnvironmentLightsTheSceneAndIsShownBehindIt) {
   const RunResult cut = run("render --environment " + (dir / "cut.exr").string() + " -o " + (dir / "m.png").string());
   EXPECT_EQ(cut.exitCode, 2);
   EXPECT_NE(cut.err.find("cut.exr: not a readable OpenEXR image"), std::string::npos) << cut.err;
+  // Neither format's first bytes (an image of another kind, named .exr): refused as neither.
+  std::filesystem::copy_file(dir / "a.png", dir / "png.exr");
+  const RunResult neither = run("render --environment " + (dir / "png.exr").string() + " -o " + (dir / "m.png").string());
+  EXPECT_EQ(neither.exitCode, 2);
+  EXPECT_NE(neither.err.find("png.exr: neither an OpenEXR image (whose first four bytes are 76 2f 31 01) nor a Radiance .hdr one"),
+            std::string::npos)
+      << neither.err;
 
   const RunResult missing = run("render --environment " + (dir / "none.hdr").string() + " -o " + (dir / "m.png").string());
   EXPECT_EQ(missing.exitCode, 2);

@@ -145,6 +145,11 @@ std::shared_ptr<const float> decodeOpenExr(const std::string& bytes, const std::
 HdrSize checkRadianceHdr(const std::string& bytes, const std::string& name, const Limits& limits) {
   HdrReader in(bytes, name);
   // ---- Header: identifier, variables up to an empty line, then "-Y height +X width" ----
+  // (The format is the content's, whatever the name says: a file that begins as neither is
+  // refused as neither.)
+  if (bytes.compare(0, 2, "#?") != 0)
+    throw InputError(name + ": neither an OpenEXR image (whose first four bytes are 76 2f 31 01) nor a Radiance .hdr one "
+                            "(whose first line is #?RADIANCE or #?RGBE)");
   const std::string magic = in.line();
   if (magic != "#?RADIANCE" && magic != "#?RGBE") in.fail("expected #?RADIANCE or #?RGBE on its first line");
   bool rgbe = false;
