@@ -41,6 +41,23 @@ std::size_t rasterizeSamples(const TriangleSetup& t, const PixelRect& tile, cons
   return passed;
 }
 
+std::size_t rasterizeSamples(const TriangleSetup& t, const PixelRect& tile, const SamplePlanes& planes,
+                             std::uint32_t slot, std::uint32_t* listed, std::size_t& listedCount) {
+  const std::size_t passed = rasterizeSamples(t, tile, planes, slot);
+  // The bounds' pixels that show the slot: those where a sample passed, as their winners hold it.
+  listedCount = 0;
+  const int minX = std::max(t.minX, tile.minX), maxX = std::min(t.maxX, tile.maxX);
+  const int minY = std::max(t.minY, tile.minY), maxY = std::min(t.maxY, tile.maxY);
+  for (int y = minY; y <= maxY; ++y)
+    for (int x = minX; x <= maxX; ++x) {
+      const std::size_t index = std::size_t((y - tile.minY) * kTileSize + (x - tile.minX));
+      bool shows = false;
+      for (int s = 0; s < planes.count; ++s) shows = shows || planes.winners[index * std::size_t(planes.count) + std::size_t(s)] == slot;
+      if (shows) listed[listedCount++] = std::uint32_t(index);
+    }
+  return passed;
+}
+
 }  // namespace illum
 #else
 #undef HWY_TARGET_INCLUDE
@@ -57,6 +74,7 @@ std::size_t rasterizeSamples(const TriangleSetup& t, const PixelRect& tile, cons
 
 #include <algorithm>
 #include <cstddef>
+#include <cstring>
 #include <limits>
 #include <optional>
 #include <type_traits>
@@ -796,6 +814,48 @@ std::size_t RasterizeSamples(const TriangleSetup& t, const PixelRect& tile, cons
   });
 }
 
+std::size_t RasterizeSamplesListed(const TriangleSetup& t, const PixelRect& tile, const SamplePlanes& planes,
+                                   std::uint32_t slot, std::uint32_t* listed, std::size_t& listedCount) {
+  // Each vector's pixels where a sample passed: a vector holds `lanes / samples` whole pixels, whose
+  // samples' pass lanes are folded onto the pixel's first (swapped neighbours, pairs, blocks, as
+  // ResolvePixels sums them) and those first lanes' pixels compressed onto the list's end; or a
+  // pixel spans whole vectors, listed at the first of them that has a sample passing.
+  const int samples = planes.count, shift = __builtin_ctz(unsigned(samples));  // (a power of two)
+  std::uint32_t* const begin = listed;
+  std::uint32_t* end = listed;
+  const std::size_t passed = SamplesPass<true>(t, tile, planes, [&](std::size_t at, auto pass, auto l0, auto, auto) {
+    const hn::DFromV<decltype(l0)> dr;
+    const hn::Rebind<std::uint32_t, decltype(dr)> du;
+    const auto mask = hn::RebindMask(du, pass);
+    hn::BlendedStore(hn::Set(du, slot), mask, du, planes.winners + at);
+    const std::uint32_t pixel = std::uint32_t(at >> shift);
+#if HWY_TARGET != HWY_SCALAR
+    if constexpr (hn::MaxLanes(du) >= 4)
+      if (samples <= int(hn::Lanes(du)) && samples <= 8) {
+        auto any = hn::VecFromMask(du, mask);
+      any = hn::Or(any, hn::Shuffle2301(any));
+      if (samples >= 4) any = hn::Or(any, hn::Shuffle1032(any));
+      if (samples >= 8) any = hn::Or(any, hn::SwapAdjacentBlocks(any));
+      const auto leads = hn::Eq(hn::And(hn::Iota(du, 0), hn::Set(du, std::uint32_t(samples - 1))), hn::Zero(du));
+      const auto keep = hn::And(leads, hn::MaskFromVec(any));
+      const auto pixels = hn::Add(hn::ShiftRightSame(hn::Iota(du, 0), shift), hn::Set(du, pixel));
+      hn::StoreU(hn::Compress(pixels, keep), du, end);
+      end += hn::CountTrue(du, keep);
+      return;
+      }
+#endif
+    if (hn::AllFalse(du, mask)) return;
+    HWY_ALIGN std::uint32_t lane[hn::MaxLanes(du)];
+    hn::Store(hn::VecFromMask(du, mask), du, lane);
+    for (int k = 0; k < int(hn::Lanes(du)); ++k) {
+      const std::uint32_t p = pixel + std::uint32_t(k / samples);
+      if (lane[k] && (end == begin || end[-1] != p)) *end++ = p;
+    }
+  });
+  listedCount = std::size_t(end - begin);
+  return passed;
+}
+
 std::size_t RasterizeSamplesColored(const TriangleSetup& t, const PixelRect& tile, const SamplePlanes& planes,
                                     const Color4* lit, std::uint32_t packed, bool clearWinners) {
   const auto store = [&](std::size_t at, auto pass, auto color) {
@@ -826,11 +886,17 @@ HWY_EXPORT(RasterizeSurface);
 HWY_EXPORT(CoverTiny);
 HWY_EXPORT(CoverTinySurface);
 HWY_EXPORT(RasterizeSamples);
+HWY_EXPORT(RasterizeSamplesListed);
 HWY_EXPORT(RasterizeSamplesColored);
 
 std::size_t rasterizeSamples(const TriangleSetup& t, const PixelRect& tile, const SamplePlanes& planes,
                              std::uint32_t slot) {
   return HWY_DYNAMIC_DISPATCH(RasterizeSamples)(t, tile, planes, slot);
+}
+
+std::size_t rasterizeSamples(const TriangleSetup& t, const PixelRect& tile, const SamplePlanes& planes,
+                             std::uint32_t slot, std::uint32_t* listed, std::size_t& listedCount) {
+  return HWY_DYNAMIC_DISPATCH(RasterizeSamplesListed)(t, tile, planes, slot, listed, listedCount);
 }
 
 std::size_t rasterizeSamplesColored(const TriangleSetup& t, const PixelRect& tile, const SamplePlanes& planes,

@@ -79,6 +79,18 @@ struct SamplePlanes {
 // where a sample passes, its winner set to `slot`. Returns the samples that passed.
 std::size_t rasterizeSamples(const TriangleSetup& t, const PixelRect& tile, const SamplePlanes& planes,
                              std::uint32_t slot);
+// The same, and the pixels (tile indices) where some sample passed appended to `listed`, in row
+// order, each once: how many in `listedCount`. `listed` has room for listedRoom(t, tile) words.
+// (Some of them may show another record by the tile's end: the shade hand-off keeps those that
+// still show this one, keepShown.)
+std::size_t rasterizeSamples(const TriangleSetup& t, const PixelRect& tile, const SamplePlanes& planes,
+                             std::uint32_t slot, std::uint32_t* listed, std::size_t& listedCount);
+// The room rasterizeSamples' list needs: t's bounds' pixels in `tile`, and a vector past them.
+inline std::size_t listedRoom(const TriangleSetup& t, const PixelRect& tile) {
+  const int w = std::min(t.maxX, tile.maxX) - std::max(t.minX, tile.minX) + 1;
+  const int h = std::min(t.maxY, tile.maxY) - std::max(t.minY, tile.minY) + 1;
+  return (w > 0 && h > 0 ? std::size_t(w) * std::size_t(h) : 0) + 16;
+}
 
 #if !ILLUM_USE_DOUBLE
 // The same for flat (`lit` null: the colour `packed`) and Gouraud (the vertex colours `lit`) drawing,

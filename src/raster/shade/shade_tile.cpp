@@ -111,8 +111,8 @@ inline void prefetchRecord(std::span<const DrawRecord* const> records, std::size
 
 // Multisampling in one pass: each record's coverage and depth tested at every sample of its
 // pixels (rasterizeSamples: exactly as a pass at that sample would); Colored records coloured once
-// per pixel at its centre as they are found, Deferred ones kept per sample and each record a pixel
-// shows shaded once afterwards. Tiny triangles' samples, worked out at setup, are depth-tested
+// per pixel at its centre as they are found, Deferred ones kept per sample (and the pixels where
+// one passed listed) and each record a pixel shows shaded once afterwards. Tiny triangles' samples, worked out at setup, are depth-tested
 // where their counts of records put them.
 std::size_t drawMultisampledTile(const DrawTarget& target, std::span<const DrawRecord* const> records,
                                  const TinyPixels& tiny, const PixelRect& rect, TileScratch& scratch,
@@ -123,6 +123,12 @@ std::size_t drawMultisampledTile(const DrawTarget& target, std::span<const DrawR
   std::size_t fragments = 0;
   bool anyWinner = false;
   DepthBounds bounds(tiles.depth, tiles.count, rect);
+  // Each Deferred record's pixels where some sample passed, record by record, as its coverage
+  // finds them: once those a later draw took whole are dropped, the lists shownPairs and
+  // groupByRecord would sort out of the winners (Wuson at 4 and 8 samples 2–4 % faster).
+  ShownLists& lists = scratch.shown;
+  lists.start.resize(records.size() + 1);
+  std::size_t listed = 0;
   const auto writeTiny = [&](std::uint32_t at, const TinyFragment& f) {
     tiles.color[at] = f.color;
     if (anyWinner) winners[at] = kNoWinner;
@@ -134,20 +140,35 @@ std::size_t drawMultisampledTile(const DrawTarget& target, std::span<const DrawR
     fragments += tinyFragments.drawUpTo(i);
     prefetchRecord(records, i + kRecordsAhead);
     const DrawRecord& r = *records[i];
+    lists.start[i] = std::uint32_t(listed);
     if (bounds.hidden(r.setup)) continue;
     std::size_t passed = 0;
 #if !ILLUM_USE_DOUBLE
-    if (target.route[r.object] == Route::Colored)
+    if (target.route[r.object] == Route::Colored) {
       passed = rasterizeSamplesColored(r.setup, rect, planes, vertexColors.of(target, r), packUnorm8(r.flat), anyWinner);
-    else
+    } else
 #endif
-      passed = rasterizeSamples(r.setup, rect, planes, std::uint32_t(i)), anyWinner = true;
+    {
+      const std::size_t room = listed + listedRoom(r.setup, rect);
+      if (lists.pixels.size() < room) lists.pixels.resize(std::max(room, 2 * lists.pixels.size()));
+      std::size_t found = 0;
+      passed = rasterizeSamples(r.setup, rect, planes, std::uint32_t(i), lists.pixels.data() + listed, found);
+      listed += found;
+      anyWinner = true;
+    }
     if (passed != 0) bounds.drawn();
     fragments += passed;
   }
+  lists.start[records.size()] = std::uint32_t(listed);
   fragments += tinyFragments.drawUpTo(records.size());
   if (!anyWinner) return fragments;
-  colorWinners(target, records, rect, scratch, tiles);
+  {
+    // (The lists have room for a vector read past the last pixel.)
+    if (lists.pixels.size() < listed + 16) lists.pixels.resize(listed + 16);
+    const VisibleSamples out{tiles.count, tiles.color, winners};
+    VisibleShader shader(target, records, rect, scratch.visible(), out);
+    shader.shadeListed(lists);
+  }
   std::fill_n(winners, kTileBlock * std::size_t(tiles.count), kNoWinner);
   return fragments;
 }

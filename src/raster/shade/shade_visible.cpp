@@ -509,6 +509,46 @@ void GroupByRecord(const std::uint32_t* pixel, const std::uint32_t* slot, std::s
   start[records] = std::uint32_t(n);
 }
 
+// f(d), d the tag of a vector of exactly one pixel's samples (2, 4, 8 or 16, as far as the
+// target's vectors hold them: a 128-bit compare for 4 samples, not a masked 512-bit one): true;
+// false (f not called) where there is no such tag.
+template <class F>
+HWY_INLINE bool WithPixelSamples(int samples, const F& f) {
+  const auto exactly = [&](auto d) {
+    if (int(hn::Lanes(d)) != samples) return false;
+    f(d);
+    return true;
+  };
+  switch (samples) {
+    case 2: return exactly(hn::CappedTag<std::uint32_t, 2>());
+    case 4: return exactly(hn::CappedTag<std::uint32_t, 4>());
+    case 8: return exactly(hn::CappedTag<std::uint32_t, 8>());
+    case 16: return exactly(hn::CappedTag<std::uint32_t, 16>());
+    default: return false;
+  }
+}
+
+std::size_t KeepShown(const std::uint32_t* winners, int samples, std::uint32_t slot, std::uint32_t* pixels,
+                      std::size_t count) {
+  std::size_t kept = 0;
+  // A pixel's samples compared as one vector (the tile has room for a vector past its last).
+  if (WithPixelSamples(samples, [&](auto du) {
+        const auto wanted = hn::Set(du, slot);
+        for (std::size_t k = 0; k < count; ++k) {
+          const std::uint32_t p = pixels[k];
+          pixels[kept] = p;
+          kept += !hn::AllFalse(du, hn::Eq(hn::LoadU(du, winners + std::size_t(p) * std::size_t(samples)), wanted));
+        }
+      }))
+    return kept;
+  const VisibleSamples shown{samples, nullptr, const_cast<std::uint32_t*>(winners)};
+  for (std::size_t k = 0; k < count; ++k) {
+    pixels[kept] = pixels[k];
+    kept += shown.shows(int(pixels[k]), slot);
+  }
+  return kept;
+}
+
 // Each pair's RGBA8 word to the samples of its pixel that show its record (VisibleSamples::write),
 // a pixel's samples compared and stored as one vector.
 void WriteShown(const VisibleBatch& b, std::uint32_t* color, const std::uint32_t* winners, int samples) {
@@ -516,18 +556,16 @@ void WriteShown(const VisibleBatch& b, std::uint32_t* color, const std::uint32_t
     for (std::size_t k = 0; k < b.count; ++k) color[b.pixel[k]] = b.rgba[k];
     return;
   }
-  const hn::CappedTag<std::uint32_t, 16> du;
-  if (std::size_t(samples) > hn::Lanes(du)) {
-    const VisibleSamples out{samples, color, const_cast<std::uint32_t*>(winners)};
-    for (std::size_t k = 0; k < b.count; ++k) out.write(int(b.pixel[k]), b.slot[k], b.rgba[k]);
+  if (WithPixelSamples(samples, [&](auto du) {
+        for (std::size_t k = 0; k < b.count; ++k) {
+          const std::size_t at = std::size_t(b.pixel[k]) * std::size_t(samples);
+          const auto shows = hn::Eq(hn::LoadU(du, winners + at), hn::Set(du, b.slot[k]));
+          hn::BlendedStore(hn::Set(du, b.rgba[k]), shows, du, color + at);
+        }
+      }))
     return;
-  }
-  const auto mine = hn::FirstN(du, std::size_t(samples));
-  for (std::size_t k = 0; k < b.count; ++k) {
-    const std::size_t at = std::size_t(b.pixel[k]) * std::size_t(samples);
-    const auto shows = hn::And(mine, hn::Eq(hn::LoadU(du, winners + at), hn::Set(du, b.slot[k])));
-    hn::BlendedStore(hn::Set(du, b.rgba[k]), shows, du, color + at);
-  }
+  const VisibleSamples out{samples, color, const_cast<std::uint32_t*>(winners)};
+  for (std::size_t k = 0; k < b.count; ++k) out.write(int(b.pixel[k]), b.slot[k], b.rgba[k]);
 }
 
 void FinishVisible(const VisibleLayout& layout, VisibleBatch& b) {
@@ -566,6 +604,7 @@ HWY_EXPORT(FinishVisible);
 HWY_EXPORT(ShownPairs);
 HWY_EXPORT(WriteShown);
 HWY_EXPORT(GroupByRecord);
+HWY_EXPORT(KeepShown);
 
 void gatherShown(const VisibleLayout& layout, const ShownRecord& record, const PixelRect& rect,
                  const std::uint32_t* pixels, std::size_t count, VisibleBatch& batch) {
@@ -583,6 +622,11 @@ void finishVisible(const VisibleLayout& layout, VisibleBatch& batch) {
 
 std::size_t shownPairs(const std::uint32_t* winners, int samples, std::uint32_t* pixel, std::uint32_t* slot) {
   return HWY_DYNAMIC_DISPATCH(ShownPairs)(winners, samples, pixel, slot);
+}
+
+std::size_t keepShown(const std::uint32_t* winners, int samples, std::uint32_t slot, std::uint32_t* pixels,
+                      std::size_t count) {
+  return HWY_DYNAMIC_DISPATCH(KeepShown)(winners, samples, slot, pixels, count);
 }
 
 void groupByRecord(const std::uint32_t* pixel, const std::uint32_t* slot, std::size_t pairs, std::size_t records,
@@ -636,6 +680,15 @@ void VisibleShader::shadeAll(ShownLists& lists) {
   for (std::size_t r = 0; r < n; ++r)
     if (lists.start[r + 1] > lists.start[r])
       shade(std::uint32_t(r), lists.pixels.data() + lists.start[r], lists.start[r + 1] - lists.start[r]);
+  flush();
+}
+
+void VisibleShader::shadeListed(ShownLists& lists) {
+  for (std::size_t r = 0; r + 1 < lists.start.size(); ++r) {
+    std::uint32_t* pixels = lists.pixels.data() + lists.start[r];
+    const std::size_t kept = keepShown(out_.winners, out_.count, std::uint32_t(r), pixels, lists.start[r + 1] - lists.start[r]);
+    if (kept > 0) shade(std::uint32_t(r), pixels, kept);
+  }
   flush();
 }
 

@@ -156,8 +156,13 @@ std::size_t shownPairs(const std::uint32_t* winners, int samples, std::uint32_t*
 void groupByRecord(const std::uint32_t* pixel, const std::uint32_t* slot, std::size_t pairs, std::size_t records,
                    std::uint32_t* start, std::uint32_t* out);
 
+// Of the `count` pixels `pixels` (tile indices), those some sample of which (`samples` a pixel in
+// `winners`) shows `slot`, kept in order in place: how many.
+std::size_t keepShown(const std::uint32_t* winners, int samples, std::uint32_t slot, std::uint32_t* pixels,
+                      std::size_t count);
 // The pixels each record shows in a tile, record by record (a counting sort of the pixels by the
-// records their samples show), reused from tile to tile.
+// records their samples show, or, multisampled, the pixels each record's coverage listed),
+// reused from tile to tile.
 struct ShownLists {
   std::vector<std::uint32_t> pairPixel, pairSlot;  // the pairs, pixel by pixel
   std::vector<std::uint32_t> start;   // per record slot, its first pixel in `pixels`; then the end
@@ -172,6 +177,9 @@ class VisibleShader {
       : target_(target), records_(records), rect_(rect), b_(batch), out_(out) {}
   // Every record of the tile that some pixel shows, in submission order.
   void shadeAll(ShownLists& lists);
+  // The same from the pixels each record's coverage listed (rasterizeSamples): record r's from
+  // lists.pixels[lists.start[r]] to [lists.start[r + 1]], of which those it still shows are kept.
+  void shadeListed(ShownLists& lists);
   // A translucent record's pixels just found (its slot in their samples' winners), blended over
   // what they hold.
   void blendRecord(std::uint32_t slot, ShownLists& lists);

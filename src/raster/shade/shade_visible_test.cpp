@@ -79,5 +79,33 @@ TEST(GroupByRecord, LaysThePairsOutRecordByRecordInTheirOrderOnEveryTarget) {
     }
 }
 
+TEST(KeepShown, KeepsThePixelsSomeSampleOfWhichShowsTheRecordInOrderOnEveryTarget) {
+  std::uint32_t state = 17;
+  const auto next = [&] { return state = state * 1664525u + 1013904223u; };
+  for (const int samples : {1, 2, 4, 8, 16}) {
+    // Pixels whose samples show record 3 at none, some or all of them, among records 2 and 4.
+    std::vector<std::uint32_t> winners(kTileBlock * std::size_t(samples), kNoWinner);
+    for (std::uint32_t& w : winners) {
+      const std::uint32_t pick = next() >> 29;
+      w = pick < 3 ? 3 : pick < 5 ? 2 : pick < 7 ? 4 : kNoWinner;
+    }
+    std::vector<std::uint32_t> pixels;
+    for (std::uint32_t p = 0; p < std::uint32_t(kTileSize * kTileSize); p += 1 + next() % 3) pixels.push_back(p);
+    std::vector<std::uint32_t> expected;
+    const VisibleSamples shown{samples, nullptr, winners.data()};
+    for (const std::uint32_t p : pixels)
+      if (shown.shows(int(p), 3)) expected.push_back(p);
+    ASSERT_GT(expected.size(), 100u);
+    ASSERT_LT(expected.size(), pixels.size());
+    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+      hwy::SetSupportedTargetsForTest(target);
+      std::vector<std::uint32_t> kept = pixels;
+      kept.resize(keepShown(winners.data(), samples, 3, kept.data(), kept.size()));
+      EXPECT_EQ(kept, expected) << hwy::TargetName(target) << ", " << samples << " samples";
+    }
+    hwy::SetSupportedTargetsForTest(0);
+  }
+}
+
 }  // namespace
 }  // namespace illum
