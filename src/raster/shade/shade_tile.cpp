@@ -109,11 +109,20 @@ inline void prefetchRecord(std::span<const DrawRecord* const> records, std::size
   __builtin_prefetch(bytes + 64);
 }
 
+// Each Deferred record's pixels where some sample passed are listed record by record as its
+// coverage finds them: once those a later draw took whole are dropped, they are the lists
+// shownPairs and groupByRecord would sort out of the winners when the tile is done (at 4 samples,
+// 1 thread: Wuson and the duck 4–7 % faster, the 48k-sphere Phong scenes 1–3 %). A tile of many
+// records (a dense mesh's thin triangles, drawn over each other) lists many pixels that later
+// draws take, and its coverage slows with the lists' stores: there the winners are sorted
+// (2CylinderEngine, 1100 records a tile: 9 % slower listed; ClearCoatTest, 576: 4 %).
+constexpr std::size_t kMostRecordsListed = 384;
+
 // Multisampling in one pass: each record's coverage and depth tested at every sample of its
 // pixels (rasterizeSamples: exactly as a pass at that sample would); Colored records coloured once
-// per pixel at its centre as they are found, Deferred ones kept per sample (and the pixels where
-// one passed listed) and each record a pixel shows shaded once afterwards. Tiny triangles' samples, worked out at setup, are depth-tested
-// where their counts of records put them.
+// per pixel at its centre as they are found, Deferred ones kept per sample (and their pixels
+// listed, kMostRecordsListed) and each record a pixel shows shaded once afterwards. Tiny
+// triangles' samples, worked out at setup, are depth-tested where their counts of records put them.
 std::size_t drawMultisampledTile(const DrawTarget& target, std::span<const DrawRecord* const> records,
                                  const TinyPixels& tiny, const PixelRect& rect, TileScratch& scratch,
                                  const SampleTiles& tiles) {
@@ -123,9 +132,7 @@ std::size_t drawMultisampledTile(const DrawTarget& target, std::span<const DrawR
   std::size_t fragments = 0;
   bool anyWinner = false;
   DepthBounds bounds(tiles.depth, tiles.count, rect);
-  // Each Deferred record's pixels where some sample passed, record by record, as its coverage
-  // finds them: once those a later draw took whole are dropped, the lists shownPairs and
-  // groupByRecord would sort out of the winners (Wuson at 4 and 8 samples 2–4 % faster).
+  const bool listing = records.size() <= kMostRecordsListed;
   ShownLists& lists = scratch.shown;
   lists.start.resize(records.size() + 1);
   std::size_t listed = 0;
@@ -148,7 +155,9 @@ std::size_t drawMultisampledTile(const DrawTarget& target, std::span<const DrawR
       passed = rasterizeSamplesColored(r.setup, rect, planes, vertexColors.of(target, r), packUnorm8(r.flat), anyWinner);
     } else
 #endif
-    {
+    if (!listing) {
+      passed = rasterizeSamples(r.setup, rect, planes, std::uint32_t(i)), anyWinner = true;
+    } else {
       const std::size_t room = listed + listedRoom(r.setup, rect);
       if (lists.pixels.size() < room) lists.pixels.resize(std::max(room, 2 * lists.pixels.size()));
       std::size_t found = 0;
@@ -162,12 +171,14 @@ std::size_t drawMultisampledTile(const DrawTarget& target, std::span<const DrawR
   lists.start[records.size()] = std::uint32_t(listed);
   fragments += tinyFragments.drawUpTo(records.size());
   if (!anyWinner) return fragments;
-  {
+  if (listing) {
     // (The lists have room for a vector read past the last pixel.)
     if (lists.pixels.size() < listed + 16) lists.pixels.resize(listed + 16);
     const VisibleSamples out{tiles.count, tiles.color, winners};
     VisibleShader shader(target, records, rect, scratch.visible(), out);
     shader.shadeListed(lists);
+  } else {
+    colorWinners(target, records, rect, scratch, tiles);
   }
   std::fill_n(winners, kTileBlock * std::size_t(tiles.count), kNoWinner);
   return fragments;

@@ -528,25 +528,33 @@ HWY_INLINE bool WithPixelSamples(int samples, const F& f) {
   }
 }
 
-std::size_t KeepShown(const std::uint32_t* winners, int samples, std::uint32_t slot, std::uint32_t* pixels,
-                      std::size_t count) {
-  std::size_t kept = 0;
+void KeepShown(const std::uint32_t* winners, int samples, const std::uint32_t* start, std::size_t records,
+               std::uint32_t* pixels, std::uint32_t* kept) {
   // A pixel's samples compared as one vector (the tile has room for a vector past its last).
   if (WithPixelSamples(samples, [&](auto du) {
-        const auto wanted = hn::Set(du, slot);
-        for (std::size_t k = 0; k < count; ++k) {
-          const std::uint32_t p = pixels[k];
-          pixels[kept] = p;
-          kept += !hn::AllFalse(du, hn::Eq(hn::LoadU(du, winners + std::size_t(p) * std::size_t(samples)), wanted));
+        for (std::size_t r = 0; r < records; ++r) {
+          const auto wanted = hn::Set(du, std::uint32_t(r));
+          std::uint32_t* list = pixels + start[r];
+          std::uint32_t n = 0;
+          for (std::uint32_t k = 0, count = start[r + 1] - start[r]; k < count; ++k) {
+            const std::uint32_t p = list[k];
+            list[n] = p;
+            n += !hn::AllFalse(du, hn::Eq(hn::LoadU(du, winners + std::size_t(p) * std::size_t(samples)), wanted));
+          }
+          kept[r] = n;
         }
       }))
-    return kept;
+    return;
   const VisibleSamples shown{samples, nullptr, const_cast<std::uint32_t*>(winners)};
-  for (std::size_t k = 0; k < count; ++k) {
-    pixels[kept] = pixels[k];
-    kept += shown.shows(int(pixels[k]), slot);
+  for (std::size_t r = 0; r < records; ++r) {
+    std::uint32_t* list = pixels + start[r];
+    std::uint32_t n = 0;
+    for (std::uint32_t k = 0, count = start[r + 1] - start[r]; k < count; ++k) {
+      list[n] = list[k];
+      n += shown.shows(int(list[k]), std::uint32_t(r));
+    }
+    kept[r] = n;
   }
-  return kept;
 }
 
 // Each pair's RGBA8 word to the samples of its pixel that show its record (VisibleSamples::write),
@@ -624,9 +632,9 @@ std::size_t shownPairs(const std::uint32_t* winners, int samples, std::uint32_t*
   return HWY_DYNAMIC_DISPATCH(ShownPairs)(winners, samples, pixel, slot);
 }
 
-std::size_t keepShown(const std::uint32_t* winners, int samples, std::uint32_t slot, std::uint32_t* pixels,
-                      std::size_t count) {
-  return HWY_DYNAMIC_DISPATCH(KeepShown)(winners, samples, slot, pixels, count);
+void keepShown(const std::uint32_t* winners, int samples, const std::uint32_t* start, std::size_t records,
+               std::uint32_t* pixels, std::uint32_t* kept) {
+  HWY_DYNAMIC_DISPATCH(KeepShown)(winners, samples, start, records, pixels, kept);
 }
 
 void groupByRecord(const std::uint32_t* pixel, const std::uint32_t* slot, std::size_t pairs, std::size_t records,
@@ -684,11 +692,11 @@ void VisibleShader::shadeAll(ShownLists& lists) {
 }
 
 void VisibleShader::shadeListed(ShownLists& lists) {
-  for (std::size_t r = 0; r + 1 < lists.start.size(); ++r) {
-    std::uint32_t* pixels = lists.pixels.data() + lists.start[r];
-    const std::size_t kept = keepShown(out_.winners, out_.count, std::uint32_t(r), pixels, lists.start[r + 1] - lists.start[r]);
-    if (kept > 0) shade(std::uint32_t(r), pixels, kept);
-  }
+  const std::size_t n = lists.start.size() - 1;
+  lists.kept.resize(n);
+  keepShown(out_.winners, out_.count, lists.start.data(), n, lists.pixels.data(), lists.kept.data());
+  for (std::size_t r = 0; r < n; ++r)
+    if (lists.kept[r] > 0) shade(std::uint32_t(r), lists.pixels.data() + lists.start[r], lists.kept[r]);
   flush();
 }
 

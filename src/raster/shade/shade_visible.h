@@ -156,10 +156,11 @@ std::size_t shownPairs(const std::uint32_t* winners, int samples, std::uint32_t*
 void groupByRecord(const std::uint32_t* pixel, const std::uint32_t* slot, std::size_t pairs, std::size_t records,
                    std::uint32_t* start, std::uint32_t* out);
 
-// Of the `count` pixels `pixels` (tile indices), those some sample of which (`samples` a pixel in
-// `winners`) shows `slot`, kept in order in place: how many.
-std::size_t keepShown(const std::uint32_t* winners, int samples, std::uint32_t slot, std::uint32_t* pixels,
-                      std::size_t count);
+// For each record slot r < `records`, of its pixels pixels[start[r]] .. [start[r + 1]] (tile
+// indices), those some sample of which (`samples` a pixel in `winners`) shows r, kept in order in
+// place: kept[r] of them.
+void keepShown(const std::uint32_t* winners, int samples, const std::uint32_t* start, std::size_t records,
+               std::uint32_t* pixels, std::uint32_t* kept);
 // The pixels each record shows in a tile, record by record (a counting sort of the pixels by the
 // records their samples show, or, multisampled, the pixels each record's coverage listed),
 // reused from tile to tile.
@@ -167,6 +168,7 @@ struct ShownLists {
   std::vector<std::uint32_t> pairPixel, pairSlot;  // the pairs, pixel by pixel
   std::vector<std::uint32_t> start;   // per record slot, its first pixel in `pixels`; then the end
   std::vector<std::uint32_t> pixels;  // tile indices
+  std::vector<std::uint32_t> kept;    // listed: per record slot, how many of its pixels it shows
 };
 
 // Colours the pixels the tile's Deferred records show (`out`), object by object in batches.

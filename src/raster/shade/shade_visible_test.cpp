@@ -83,25 +83,35 @@ TEST(KeepShown, KeepsThePixelsSomeSampleOfWhichShowsTheRecordInOrderOnEveryTarge
   std::uint32_t state = 17;
   const auto next = [&] { return state = state * 1664525u + 1013904223u; };
   for (const int samples : {1, 2, 4, 8, 16}) {
-    // Pixels whose samples show record 3 at none, some or all of them, among records 2 and 4.
+    // Pixels whose samples show records 0 to 4 or none, each record's list of pixels where it
+    // might show (some of them where it does not), record 3's empty.
     std::vector<std::uint32_t> winners(kTileBlock * std::size_t(samples), kNoWinner);
     for (std::uint32_t& w : winners) {
-      const std::uint32_t pick = next() >> 29;
-      w = pick < 3 ? 3 : pick < 5 ? 2 : pick < 7 ? 4 : kNoWinner;
+      const std::uint32_t pick = (next() >> 24) % 6;
+      w = pick == 3 || pick == 5 ? kNoWinner : pick;
     }
-    std::vector<std::uint32_t> pixels;
-    for (std::uint32_t p = 0; p < std::uint32_t(kTileSize * kTileSize); p += 1 + next() % 3) pixels.push_back(p);
-    std::vector<std::uint32_t> expected;
+    const std::size_t records = 5;
+    std::vector<std::uint32_t> pixels, start, expected, expectedKept;
     const VisibleSamples shown{samples, nullptr, winners.data()};
-    for (const std::uint32_t p : pixels)
-      if (shown.shows(int(p), 3)) expected.push_back(p);
-    ASSERT_GT(expected.size(), 100u);
-    ASSERT_LT(expected.size(), pixels.size());
+    for (std::uint32_t r = 0; r < records; ++r) {
+      start.push_back(std::uint32_t(pixels.size()));
+      std::uint32_t kept = 0;
+      if (r != 3)
+        for (std::uint32_t p = next() % 5; p < std::uint32_t(kTileSize * kTileSize); p += 1 + next() % 5) pixels.push_back(p);
+      for (std::size_t k = start.back(); k < pixels.size(); ++k)
+        if (shown.shows(int(pixels[k]), r)) expected.push_back(pixels[k]), ++kept;
+      expectedKept.push_back(kept);
+      ASSERT_TRUE(r == 3 || (kept > 100 && kept < pixels.size() - start.back()));
+    }
+    start.push_back(std::uint32_t(pixels.size()));
+    pixels.resize(pixels.size() + 16);
     for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
       hwy::SetSupportedTargetsForTest(target);
-      std::vector<std::uint32_t> kept = pixels;
-      kept.resize(keepShown(winners.data(), samples, 3, kept.data(), kept.size()));
-      EXPECT_EQ(kept, expected) << hwy::TargetName(target) << ", " << samples << " samples";
+      std::vector<std::uint32_t> list = pixels, kept(records, 12345), actual;
+      keepShown(winners.data(), samples, start.data(), records, list.data(), kept.data());
+      for (std::size_t r = 0; r < records; ++r) actual.insert(actual.end(), list.begin() + start[r], list.begin() + start[r] + kept[r]);
+      EXPECT_EQ(kept, expectedKept) << hwy::TargetName(target) << ", " << samples << " samples";
+      EXPECT_EQ(actual, expected) << hwy::TargetName(target) << ", " << samples << " samples";
     }
     hwy::SetSupportedTargetsForTest(0);
   }
