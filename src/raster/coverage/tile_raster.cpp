@@ -830,19 +830,20 @@ std::size_t RasterizeSamplesListed(const TriangleSetup& t, const PixelRect& tile
     hn::BlendedStore(hn::Set(du, slot), mask, du, planes.winners + at);
     const std::uint32_t pixel = std::uint32_t(at >> shift);
 #if HWY_TARGET != HWY_SCALAR
-    if constexpr (hn::MaxLanes(du) >= 4)
+    if constexpr (hn::MaxLanes(du) >= 4) {
       if (samples <= int(hn::Lanes(du)) && samples <= 8) {
         auto any = hn::VecFromMask(du, mask);
-      any = hn::Or(any, hn::Shuffle2301(any));
-      if (samples >= 4) any = hn::Or(any, hn::Shuffle1032(any));
-      if (samples >= 8) any = hn::Or(any, hn::SwapAdjacentBlocks(any));
-      const auto leads = hn::Eq(hn::And(hn::Iota(du, 0), hn::Set(du, std::uint32_t(samples - 1))), hn::Zero(du));
-      const auto keep = hn::And(leads, hn::MaskFromVec(any));
-      const auto pixels = hn::Add(hn::ShiftRightSame(hn::Iota(du, 0), shift), hn::Set(du, pixel));
-      hn::StoreU(hn::Compress(pixels, keep), du, end);
-      end += hn::CountTrue(du, keep);
-      return;
+        any = hn::Or(any, hn::Shuffle2301(any));
+        if (samples >= 4) any = hn::Or(any, hn::Shuffle1032(any));
+        if (samples >= 8) any = hn::Or(any, hn::SwapAdjacentBlocks(any));
+        const auto leads = hn::Eq(hn::And(hn::Iota(du, 0), hn::Set(du, std::uint32_t(samples - 1))), hn::Zero(du));
+        const auto keep = hn::And(leads, hn::MaskFromVec(any));
+        const auto pixels = hn::Add(hn::ShiftRightSame(hn::Iota(du, 0), shift), hn::Set(du, pixel));
+        hn::StoreU(hn::Compress(pixels, keep), du, end);  // (the list has room for a vector past its end)
+        end += hn::CountTrue(du, keep);
+        return;
       }
+    }
 #endif
     if (hn::AllFalse(du, mask)) return;
     HWY_ALIGN std::uint32_t lane[hn::MaxLanes(du)];
