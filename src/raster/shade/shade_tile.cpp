@@ -194,13 +194,22 @@ std::size_t drawBlendedTile(const DrawTarget& target, std::span<const DrawRecord
   const VisibleSamples out{tiles.count, tiles.color, winners};
   VisibleShader shader(target, records, rect, scratch.visible(), out);
   std::size_t fragments = 0;
+  std::vector<std::uint32_t>& pixels = scratch.shown.pixels;
   for (std::size_t i = 0; i < records.size(); ++i) {
     const TriangleSetup& t = records[i]->setup;
-    const std::size_t passed = tiles.count == 1 ? rasterizeDepth(t, rect, tiles.depth, std::uint32_t(i), winners)
-                                                : rasterizeSamples(t, rect, planes, std::uint32_t(i));
-    if (passed == 0) continue;
+    if (tiles.count == 1) {
+      const std::size_t passed = rasterizeDepth(t, rect, tiles.depth, std::uint32_t(i), winners);
+      if (passed == 0) continue;
+      fragments += passed;
+      shader.blendRecord(std::uint32_t(i), scratch.shown);
+      continue;
+    }
+    // Multisampled, the pixels its coverage lists are those it shows (nothing is drawn between).
+    if (pixels.size() < listedRoom(t, rect)) pixels.resize(listedRoom(t, rect));
+    std::size_t found = 0;
+    const std::size_t passed = rasterizeSamples(t, rect, planes, std::uint32_t(i), pixels.data(), found);
     fragments += passed;
-    shader.blendRecord(std::uint32_t(i), scratch.shown);
+    shader.blendPixels(std::uint32_t(i), pixels.data(), found);
   }
   return fragments;
 }

@@ -820,10 +820,14 @@ void VisibleShader::blendRecord(std::uint32_t slot, ShownLists& lists) {
       if (out_.shows(index, slot)) lists.pixels.push_back(std::uint32_t(index));
     }
   const std::size_t count = lists.pixels.size();
-  if (count == 0) return;
   lists.pixels.resize(count + 16);  // room for a vector read past the last
+  blendPixels(slot, lists.pixels.data(), count);
+}
+
+void VisibleShader::blendPixels(std::uint32_t slot, const std::uint32_t* pixels, std::size_t count) {
+  if (count == 0) return;
   blending_ = true;
-  shade(slot, lists.pixels.data(), count);
+  shade(slot, pixels, count);
   flush();
   blending_ = false;
 }

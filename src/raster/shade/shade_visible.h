@@ -52,11 +52,21 @@ struct VisibleSamples {
   }
   // A translucent record's colour over what each sample that shows it holds (blendOver); the
   // samples then show no record.
+  // (Samples that held the same word get the same one: it is blended once.)
   void blend(int index, std::uint32_t slot, const Color4& c) const {
     const std::size_t at = std::size_t(index) * std::size_t(count);
+    bool blended = false;
+    std::uint32_t under = 0, over = 0;
     for (int s = 0; s < count; ++s)
       if (winners[at + std::size_t(s)] == slot) {
-        blendOver(reinterpret_cast<std::uint8_t*>(color + at + std::size_t(s)), c);
+        std::uint32_t& word = color[at + std::size_t(s)];
+        if (!blended || word != under) {
+          under = word;
+          blendOver(reinterpret_cast<std::uint8_t*>(&word), c);
+          over = word, blended = true;
+        } else {
+          word = over;
+        }
         winners[at + std::size_t(s)] = kNoWinner;
       }
   }
@@ -185,6 +195,9 @@ class VisibleShader {
   // A translucent record's pixels just found (its slot in their samples' winners), blended over
   // what they hold.
   void blendRecord(std::uint32_t slot, ShownLists& lists);
+  // The same for the record's `count` pixels `pixels` (as rasterizeSamples lists them, with room
+  // for a vector past the last).
+  void blendPixels(std::uint32_t slot, const std::uint32_t* pixels, std::size_t count);
 
  private:
   void shade(std::uint32_t slot, const std::uint32_t* pixels, std::size_t count);
