@@ -1,5 +1,5 @@
 // The pixels the multisampled depth pass lists for the shade hand-off: on every SIMD target and
-// sample count, triangles of all sizes and depths drawn one after another over a tile, each
+// sample count (4, 8, 16), triangles of all sizes and depths drawn one after another over a tile, each
 // lists exactly the pixels where some sample of it passed the depth test, in row order, once
 // each; and its passes, depths and winners are those of the pass that lists nothing.
 #include "raster/coverage/tile_raster.h"
@@ -38,9 +38,10 @@ struct Planes {
 };
 
 TEST(ListedSamples, AreThePixelsWhereASamplePassedInRowOrderOnEveryTarget) {
-  for (const int samples : {2, 4, 8, 16}) {
+  for (const int samples : {4, 8, 16}) {
     FrameContext frame;
     frame.setSamples(multisamplePattern(samples));
+    ASSERT_EQ(frame.samples.size(), std::size_t(samples));  // (the sample counts with a pattern)
     std::mt19937 random{std::uint32_t(samples)};
     std::uniform_real_distribution<double> atX(40, 128), atY(104, 192), size(0.3, 50), depth(0.2, 0.8);
     std::vector<TriangleSetup> triangles;
