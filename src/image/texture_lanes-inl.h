@@ -248,7 +248,11 @@ template <class D, class V = hn::VFromD<D>>
 HWY_INLINE void SampleTextureLanes(D d, const Texture& texture, V u, V v, V texelsPerPixel, V (&out)[4]) {
   const hn::RebindToSigned<D> di;
   const V one = hn::Set(d, Real(1));
-  const V clamped = hn::Min(MipLevelLanes(d, texelsPerPixel), hn::Set(d, Real(texture.levelCount() - 1)));
+  // Magnified everywhere (no footprint over a texel, or a NaN one): level 0 exactly, as MipLevelLanes
+  // gives it, without its polynomial.
+  const bool magnified = hn::AllFalse(d, texelsPerPixel > one);
+  const V clamped = magnified ? hn::Zero(d)
+                              : hn::Min(MipLevelLanes(d, texelsPerPixel), hn::Set(d, Real(texture.levelCount() - 1)));
   const V floorLevel = hn::Floor(clamped);
   const V t = clamped - floorLevel;
   const auto level = hn::ConvertTo(di, floorLevel);

@@ -201,27 +201,39 @@ HWY_INLINE UvLanes<V> UvAt(const VisibleLayout& layout, const R& rec, const V (&
   return u;
 }
 
-// A texture's texel at each lane's point, trilinearly filtered for its footprint there (sampleAt).
+// How many base texels of `texture` a pixel spans at each lane's point (texturePoint's footprint):
+// the longer of uv's steps one pixel right and one up, in texels.
 template <class D, class V = hn::VFromD<D>>
-HWY_INLINE void TexelLanes(D d, const Texture& texture, const UvLanes<V>& at, V (&texel)[4]) {
+HWY_INLINE V FootprintLanes(D d, const Texture& texture, const UvLanes<V>& at) {
   const V width = hn::Set(d, Real(texture.width())), height = hn::Set(d, Real(texture.height()));
   const V x0 = at.dx[0] * width, y0 = at.dx[1] * height, x1 = at.dy[0] * width, y1 = at.dy[1] * height;
   // std::max of the two lengths (fragment.cpp) with one square root: it is monotonic and correctly
   // rounded, so the root of the larger square is the larger root, bit for bit, and a NaN square
   // is passed over or kept as std::max passes over or keeps its root.
   const V right2 = x0 * x0 + y0 * y0, up2 = x1 * x1 + y1 * y1;
-  const V footprint = hn::Sqrt(hn::IfThenElse(right2 < up2, up2, right2));
+  return hn::Sqrt(hn::IfThenElse(right2 < up2, up2, right2));
+}
+
+// A texture's texel at each lane's (u, v), trilinearly filtered for its footprint there (sampleAt).
+template <class D, class V = hn::VFromD<D>>
+HWY_INLINE void SampleLanes(D d, const Texture& texture, V u, V v, V footprint, V (&texel)[4]) {
 #if !ILLUM_USE_DOUBLE
-  SampleTextureLanes(d, texture, at.uv[0], at.uv[1], footprint, texel);
+  SampleTextureLanes(d, texture, u, v, footprint, texel);
 #else
-  HWY_ALIGN Real u[hn::MaxLanes(d)], v[hn::MaxLanes(d)], f[hn::MaxLanes(d)], out[4][hn::MaxLanes(d)];
-  hn::Store(at.uv[0], d, u), hn::Store(at.uv[1], d, v), hn::Store(footprint, d, f);
+  HWY_ALIGN Real us[hn::MaxLanes(d)], vs[hn::MaxLanes(d)], f[hn::MaxLanes(d)], out[4][hn::MaxLanes(d)];
+  hn::Store(u, d, us), hn::Store(v, d, vs), hn::Store(footprint, d, f);
   for (std::size_t k = 0; k < hn::Lanes(d); ++k) {
-    const Vec4 t = texture.sample(Vec2(u[k], v[k]), f[k]);
+    const Vec4 t = texture.sample(Vec2(us[k], vs[k]), f[k]);
     for (int c = 0; c < 4; ++c) out[c][k] = t[c];
   }
   for (int c = 0; c < 4; ++c) texel[c] = hn::Load(d, out[c]);
 #endif
+}
+
+// The texel of a texture at each lane's point, for the pixel's footprint there.
+template <class D, class V = hn::VFromD<D>>
+HWY_INLINE void TexelLanes(D d, const Texture& texture, const UvLanes<V>& at, V (&texel)[4]) {
+  SampleLanes(d, texture, at.uv[0], at.uv[1], FootprintLanes(d, texture, at), texel);
 }
 
 // normalFromMap over lanes: the tangent-space normal of the map's texel in the frame of the unit
@@ -298,13 +310,12 @@ HWY_INLINE void GatherLanes(const VisibleLayout& layout, R& rec, const std::uint
     UvLanes<VR> uv;
     if (layout.uv >= 0) uv = UvAt(layout, rec, l, invW, p);
     if (layout.texture) {
-      VR texel[4];
-      TexelLanes(dr, *layout.texture, uv, texel);
-      for (int c = 0; c < 4; ++c) keep(texel[c], b.texel[c]);
-      // A base colour texture tints the material's (or the vertex's) colour before lighting.
-      if (layout.baseTexel)
-        for (int c = 0; c < 4; ++c)
-          color[c] = (layout.color >= 0 ? color[c] : hn::Set(dr, layout.baseColor[c])) * texel[c];
+      // Sampled for the whole batch afterwards (SampleBatchTexels), in a loop of its own.
+      for (int c = 0; c < 2; ++c) keep(uv.uv[c], b.uv[c]);
+      keep(FootprintLanes(dr, *layout.texture, uv), b.footprint);
+      // A base colour texture tints the material's (or the vertex's) colour: that colour now.
+      if (layout.baseTexel && layout.color < 0)
+        for (int c = 0; c < 4; ++c) color[c] = hn::Set(dr, layout.baseColor[c]);
     }
     // glTF's maps (withMapTexels, normalFromMap): the material and the normal at each pixel.
     if (const MaterialMaps* maps = layout.maps) {
@@ -576,6 +587,26 @@ void WriteShown(const VisibleBatch& b, std::uint32_t* color, const std::uint32_t
   for (std::size_t k = 0; k < b.count; ++k) out.write(int(b.pixel[k]), b.slot[k], b.rgba[k]);
 }
 
+// The batch's texels of the layout's texture, at the points GatherLanes kept, and a base colour
+// texture's tint of the colour before lighting. Apart from the gathering, whose many values would
+// crowd the registers the sampler's texel reads and decode tables use.
+void SampleBatchTexels(const VisibleLayout& layout, VisibleBatch& b) {
+  const hn::ScalableTag<Real> d;
+  using V = hn::VFromD<decltype(d)>;
+  const std::size_t lanes = hn::Lanes(d);
+  for (std::size_t i = 0; i < b.count; i += lanes) {
+    // Lanes past the last pixel sample (0, 0): the batch's room past it holds no points.
+    const auto inside = hn::FirstN(d, b.count - i);
+    V texel[4];
+    SampleLanes(d, *layout.texture, hn::IfThenElseZero(inside, hn::Load(d, b.uv[0] + i)),
+                hn::IfThenElseZero(inside, hn::Load(d, b.uv[1] + i)),
+                hn::IfThenElseZero(inside, hn::Load(d, b.footprint + i)), texel);
+    for (int c = 0; c < 4; ++c) hn::Store(texel[c], d, b.texel[c] + i);
+    if (layout.baseTexel)
+      for (int c = 0; c < 4; ++c) hn::Store(hn::Load(d, b.color[c] + i) * texel[c], d, b.color[c] + i);
+  }
+}
+
 void FinishVisible(const VisibleLayout& layout, VisibleBatch& b) {
   const hn::ScalableTag<Real> d;
   using V = hn::VFromD<decltype(d)>;
@@ -608,6 +639,7 @@ namespace illum {
 
 HWY_EXPORT(GatherShown);
 HWY_EXPORT(GatherShownGroup);
+HWY_EXPORT(SampleBatchTexels);
 HWY_EXPORT(FinishVisible);
 HWY_EXPORT(ShownPairs);
 HWY_EXPORT(WriteShown);
@@ -622,6 +654,10 @@ void gatherShown(const VisibleLayout& layout, const ShownRecord& record, const P
 void gatherShownGroup(const VisibleLayout& layout, const PendingRecords& group, const PixelRect& rect,
                       VisibleBatch& batch) {
   HWY_DYNAMIC_DISPATCH(GatherShownGroup)(layout, group, rect, batch);
+}
+
+void sampleBatchTexels(const VisibleLayout& layout, VisibleBatch& batch) {
+  HWY_DYNAMIC_DISPATCH(SampleBatchTexels)(layout, batch);
 }
 
 void finishVisible(const VisibleLayout& layout, VisibleBatch& batch) {
@@ -764,6 +800,7 @@ void VisibleShader::gatherPending() {
 void VisibleShader::flush() {
   gatherPending();
   if (b_.count == 0) return;
+  if (layout_.texture) sampleBatchTexels(layout_, b_);
   const Object& object = target_.scene.objects[object_];
   if (layout_.shading == Shading::Phong) {
     const ShadeSetup setup{target_.frame.lights, target_.frame.lightModel, modelOf(object.material, target_.frame.model),

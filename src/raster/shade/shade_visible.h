@@ -128,6 +128,8 @@ struct VisibleBatch {
   alignas(64) Real normal[3][kRoom];
   alignas(64) Real color[4][kRoom];
   alignas(64) Real texel[4][kRoom];
+  alignas(64) Real uv[2][kRoom];      // textured: where the texel is read, and
+  alignas(64) Real footprint[kRoom];  // how many base texels the pixel spans there
   alignas(64) Real lit[4][kRoom];
   // glTF's maps' values (the layout's): metallic, roughness and the emission.
   alignas(64) Real metallic[kRoom];
@@ -143,13 +145,15 @@ struct VisibleBatch {
 
 // The lanes' part (SIMD, dispatched). gatherShown appends the record's pixels `pixels` (tile
 // indices, `count` of them) of the tile `rect`: their centres' barycentrics exactly as the
-// rasterizer's, the perspective-correct weights, the layout's colour or surface and texel.
-// finishVisible: after lighting, GL_MODULATE and RGBA8.
+// rasterizer's, the perspective-correct weights, the layout's colour or surface, and where its
+// texture is read. sampleBatchTexels, before lighting: the texels there, and a base colour
+// texture's tint. finishVisible: after lighting, GL_MODULATE and RGBA8.
 void gatherShown(const VisibleLayout& layout, const ShownRecord& record, const PixelRect& rect,
                  const std::uint32_t* pixels, std::size_t count, VisibleBatch& batch);
 // The same for each of `group`'s records, the batch having room for all their pixels.
 void gatherShownGroup(const VisibleLayout& layout, const PendingRecords& group, const PixelRect& rect,
                       VisibleBatch& batch);
+void sampleBatchTexels(const VisibleLayout& layout, VisibleBatch& batch);
 void finishVisible(const VisibleLayout& layout, VisibleBatch& batch);
 
 // The (pixel, record) pairs of a tile's winners (`samples` a pixel, kTileSize² pixels), pixel by
