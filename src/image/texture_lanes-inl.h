@@ -20,7 +20,9 @@
 #include "image/texel_lookup.h"
 #include "math/gather_pairs-inl.h"
 
+#include <cstddef>
 #include <cstdint>
+#include <type_traits>
 
 HWY_BEFORE_NAMESPACE();
 namespace illum::HWY_NAMESPACE {
@@ -48,32 +50,36 @@ struct TableRegisters {
   }
 };
 
-// The three colour channels of `count` vectors of 16 RGBA8 words, each channel's byte looked up in
-// a 256-entry float table held as four planes of bytes (Texture::colorTableBytes) with AVX-512
+// The three colour channels of a vector of 16 RGBA8 words, each channel's byte looked up in a
+// 256-entry float table held as four planes of bytes (Texture::colorTableBytes) with AVX-512
 // VBMI's byte permutes: each plane's byte for all 64 bytes of a vector at once (two 128-entry
 // permutes and a blend on the byte's top bit), then each channel's four bytes brought together
 // into its lanes' floats (two permutes and a blend), 22 instructions a vector where float
-// permutes take 54. Out of line, compiled for VBMI, and called only where the CPU has it
-// (texelByteLookups): out[3v + c] is channel c of vector v.
-inline HWY_NOINLINE __attribute__((target(HWY_TARGET_STR ",avx512vbmi"))) void LookUpColorBytes(
-    const std::uint8_t* planes, const __m512i* words, int count, __m512* out) {
+// permutes take 54. Compiled for VBMI, and used only where the CPU has it (texelByteLookups):
+// by a caller compiled for it too (ILLUM_VBMI), which keeps the planes in registers across its
+// texels, or through LookUpColorBytes.
+#define ILLUM_VBMI __attribute__((target(HWY_TARGET_STR ",avx512vbmi")))
+struct ColorBytePlanes {
   __m512i table[16];  // plane k's entries 64q .. 64q + 63 in table[4k + q]
-  for (int i = 0; i < 16; ++i) table[i] = _mm512_load_si512(planes + 64 * i);
-  // Byte 4l + j of channel c's index: byte 4l + c of the first (j even) or the second (j odd) plane
-  // of a pair, so that bytes 0, 1 of each lane come from planes 0, 1 and bytes 2, 3 from planes 2, 3.
-  struct Indices {
-    alignas(64) std::uint8_t channel[3][64];
-  };
-  static constexpr Indices kIndices = [] {
-    Indices out{};
-    for (int c = 0; c < 3; ++c)
-      for (int b = 0; b < 64; ++b) out.channel[c][b] = std::uint8_t((b & 1 ? 64 : 0) + (b & ~3) + c);
-    return out;
-  }();
-  const __mmask64 upperHalf = 0xCCCCCCCCCCCCCCCCull;  // bytes 2 and 3 of each lane
-  for (int v = 0; v < count; ++v) {
-    const __m512i w = words[v];
-    const __mmask64 high = _mm512_movepi8_mask(w);  // bytes 128 .. 255
+  ILLUM_VBMI explicit ColorBytePlanes(const std::uint8_t* planes) {
+    for (int i = 0; i < 16; ++i) table[i] = _mm512_load_si512(planes + 64 * i);
+  }
+  // out[c]: channel c of the words' texels.
+  ILLUM_VBMI inline void operator()(__m512i w, __m512* out) const {
+    // Byte 4l + j of channel c's index: byte 4l + c of the first (j even) or the second (j odd)
+    // plane of a pair, so that bytes 0, 1 of each lane come from planes 0, 1 and bytes 2, 3 from
+    // planes 2, 3.
+    struct Indices {
+      alignas(64) std::uint8_t channel[3][64];
+    };
+    static constexpr Indices kIndices = [] {
+      Indices out{};
+      for (int c = 0; c < 3; ++c)
+        for (int b = 0; b < 64; ++b) out.channel[c][b] = std::uint8_t((b & 1 ? 64 : 0) + (b & ~3) + c);
+      return out;
+    }();
+    const __mmask64 upperHalf = 0xCCCCCCCCCCCCCCCCull;  // bytes 2 and 3 of each lane
+    const __mmask64 high = _mm512_movepi8_mask(w);     // bytes 128 .. 255
     __m512i plane[4];
     for (int k = 0; k < 4; ++k)
       plane[k] = _mm512_mask_blend_epi8(high, _mm512_permutex2var_epi8(table[4 * k], w, table[4 * k + 1]),
@@ -82,9 +88,17 @@ inline HWY_NOINLINE __attribute__((target(HWY_TARGET_STR ",avx512vbmi"))) void L
       const __m512i index = _mm512_load_si512(kIndices.channel[c]);
       const __m512i bytes01 = _mm512_permutex2var_epi8(plane[0], index, plane[1]);
       const __m512i bytes23 = _mm512_permutex2var_epi8(plane[2], index, plane[3]);
-      out[3 * v + c] = _mm512_castsi512_ps(_mm512_mask_blend_epi8(upperHalf, bytes01, bytes23));
+      out[c] = _mm512_castsi512_ps(_mm512_mask_blend_epi8(upperHalf, bytes01, bytes23));
     }
   }
+};
+
+// ColorBytePlanes out of line, for a caller not compiled for VBMI: out[3v + c] is channel c of
+// vector v.
+inline HWY_NOINLINE ILLUM_VBMI void LookUpColorBytes(const std::uint8_t* planes, const __m512i* words, int count,
+                                                     __m512* out) {
+  const ColorBytePlanes lookUp(planes);
+  for (int v = 0; v < count; ++v) lookUp(words[v], out + 3 * v);
 }
 #define ILLUM_TEXELS_AVX512 1
 #endif
@@ -178,8 +192,10 @@ HWY_INLINE void DecodeTexelLanes(D d, VI word, bool linear, bool opaque, const L
 
 // Texture::sampleLevel of one level in the lanes of `active` (the others read a valid texel and
 // are left to the caller).
-template <class D, class V = hn::VFromD<D>, class M>
-HWY_INLINE void SampleLevelLanes(D d, const Texture& texture, int levelIndex, V u, V v, M active, V (&out)[4]) {
+// With `planes` (a caller compiled for VBMI: ColorBytePlanes), colour bytes are looked up in them.
+template <class D, class V = hn::VFromD<D>, class M, class Planes = std::nullptr_t>
+HWY_INLINE void SampleLevelLanes(D d, const Texture& texture, int levelIndex, V u, V v, M active, V (&out)[4],
+                                 [[maybe_unused]] const Planes* planes = nullptr) {
   const hn::RebindToSigned<D> di;
   const hn::RebindToUnsigned<D> du;
   const Image& level = texture.level(levelIndex);
@@ -216,11 +232,15 @@ HWY_INLINE void SampleLevelLanes(D d, const Texture& texture, int levelIndex, V 
     w00 = fetch(x0, r0), w10 = fetch(x1, r0), w01 = fetch(x0, r1), w11 = fetch(x1, r1);
   }
 #if defined(ILLUM_TEXELS_AVX512)
-  if (texelByteLookups()) {
+  if (!std::is_same_v<Planes, std::nullptr_t> || texelByteLookups()) {
     const decltype(w00) words[4] = {w00, w10, w01, w11};
     const __m512i raw[4] = {w00.raw, w10.raw, w01.raw, w11.raw};
     __m512 colors[12];
-    LookUpColorBytes(texture.colorTableBytes(), raw, 4, colors);
+    if constexpr (!std::is_same_v<Planes, std::nullptr_t>) {
+      for (int k = 0; k < 4; ++k) (*planes)(raw[k], colors + 3 * k);
+    } else {
+      LookUpColorBytes(texture.colorTableBytes(), raw, 4, colors);
+    }
     V(*texels[4])[4] = {&t00, &t10, &t01, &t11};
     for (int k = 0; k < 4; ++k) {
       for (int c = 0; c < 3; ++c) (*texels[k])[c] = V{colors[3 * k + c]};
@@ -244,8 +264,9 @@ HWY_INLINE void SampleLevelLanes(D d, const Texture& texture, int levelIndex, V 
 }
 
 // Texture::sample: each lane's texel at (u, v) for a footprint of `texelsPerPixel` base texels.
-template <class D, class V = hn::VFromD<D>>
-HWY_INLINE void SampleTextureLanes(D d, const Texture& texture, V u, V v, V texelsPerPixel, V (&out)[4]) {
+template <class D, class V = hn::VFromD<D>, class Planes = std::nullptr_t>
+HWY_INLINE void SampleTextureLanes(D d, const Texture& texture, V u, V v, V texelsPerPixel, V (&out)[4],
+                                   [[maybe_unused]] const Planes* planes = nullptr) {
   const hn::RebindToSigned<D> di;
   const V one = hn::Set(d, Real(1));
   // Magnified everywhere (no footprint over a texel, or a NaN one): level 0 exactly, as MipLevelLanes
@@ -266,14 +287,14 @@ HWY_INLINE void SampleTextureLanes(D d, const Texture& texture, V u, V v, V texe
     const auto these = hn::And(pending, hn::RebindMask(d, level == hn::Set(di, l0)));
     pending = hn::AndNot(these, pending);
     V s0[4], s1[4];
-    SampleLevelLanes(d, texture, l0, u, v, these, s0);
+    SampleLevelLanes(d, texture, l0, u, v, these, s0, planes);
     // Lanes at a level exactly (t = 0: magnified, or at the last level) need no second one.
     const auto exact = t == hn::Zero(d);
     if (hn::AllTrue(d, hn::Or(exact, hn::Not(these)))) {
       for (int c = 0; c < 4; ++c) out[c] = hn::IfThenElse(these, s0[c], out[c]);
       continue;
     }
-    SampleLevelLanes(d, texture, std::min(l0 + 1, texture.levelCount() - 1), u, v, these, s1);
+    SampleLevelLanes(d, texture, std::min(l0 + 1, texture.levelCount() - 1), u, v, these, s1, planes);
     for (int c = 0; c < 4; ++c)
       out[c] = hn::IfThenElse(these, hn::IfThenElse(exact, s0[c], (one - t) * s0[c] + t * s1[c]), out[c]);
   }
@@ -283,5 +304,6 @@ HWY_INLINE void SampleTextureLanes(D d, const Texture& texture, V u, V v, V texe
 HWY_AFTER_NAMESPACE();
 
 #undef ILLUM_TEXELS_AVX512
+#undef ILLUM_VBMI
 
 #endif  // ILLUM_IMAGE_TEXTURE_LANES_INL_H_

@@ -215,10 +215,12 @@ HWY_INLINE V FootprintLanes(D d, const Texture& texture, const UvLanes<V>& at) {
 }
 
 // A texture's texel at each lane's (u, v), trilinearly filtered for its footprint there (sampleAt).
-template <class D, class V = hn::VFromD<D>>
-HWY_INLINE void SampleLanes(D d, const Texture& texture, V u, V v, V footprint, V (&texel)[4]) {
+// With `planes`, colour bytes are looked up in them (SampleTextureLanes).
+template <class D, class V = hn::VFromD<D>, class Planes = std::nullptr_t>
+HWY_INLINE void SampleLanes(D d, const Texture& texture, V u, V v, V footprint, V (&texel)[4],
+                            [[maybe_unused]] const Planes* planes = nullptr) {
 #if !ILLUM_USE_DOUBLE
-  SampleTextureLanes(d, texture, u, v, footprint, texel);
+  SampleTextureLanes(d, texture, u, v, footprint, texel, planes);
 #else
   HWY_ALIGN Real us[hn::MaxLanes(d)], vs[hn::MaxLanes(d)], f[hn::MaxLanes(d)], out[4][hn::MaxLanes(d)];
   hn::Store(u, d, us), hn::Store(v, d, vs), hn::Store(footprint, d, f);
@@ -590,7 +592,8 @@ void WriteShown(const VisibleBatch& b, std::uint32_t* color, const std::uint32_t
 // The batch's texels of the layout's texture, at the points GatherLanes kept, and a base colour
 // texture's tint of the colour before lighting. Apart from the gathering, whose many values would
 // crowd the registers the sampler's texel reads and decode tables use.
-void SampleBatchTexels(const VisibleLayout& layout, VisibleBatch& b) {
+template <class Planes = std::nullptr_t>
+HWY_INLINE void SampleBatchTexelsWith(const VisibleLayout& layout, VisibleBatch& b, const Planes* planes = nullptr) {
   const hn::ScalableTag<Real> d;
   using V = hn::VFromD<decltype(d)>;
   const std::size_t lanes = hn::Lanes(d);
@@ -600,11 +603,28 @@ void SampleBatchTexels(const VisibleLayout& layout, VisibleBatch& b) {
     V texel[4];
     SampleLanes(d, *layout.texture, hn::IfThenElseZero(inside, hn::Load(d, b.uv[0] + i)),
                 hn::IfThenElseZero(inside, hn::Load(d, b.uv[1] + i)),
-                hn::IfThenElseZero(inside, hn::Load(d, b.footprint + i)), texel);
+                hn::IfThenElseZero(inside, hn::Load(d, b.footprint + i)), texel, planes);
     for (int c = 0; c < 4; ++c) hn::Store(texel[c], d, b.texel[c] + i);
     if (layout.baseTexel)
       for (int c = 0; c < 4; ++c) hn::Store(hn::Load(d, b.color[c] + i) * texel[c], d, b.color[c] + i);
   }
+}
+
+#if (HWY_TARGET == HWY_AVX3 || HWY_TARGET == HWY_AVX3_DL) && !ILLUM_USE_DOUBLE
+// Compiled for VBMI, with the colour decode's byte planes loaded once for the batch and their
+// lookups inlined (flatten: a function compiled for VBMI can be inlined only into another such).
+__attribute__((target(HWY_TARGET_STR ",avx512vbmi"), flatten)) void SampleBatchTexelsVbmi(const VisibleLayout& layout,
+                                                                                          VisibleBatch& b) {
+  const ColorBytePlanes planes(layout.texture->colorTableBytes());
+  SampleBatchTexelsWith(layout, b, &planes);
+}
+#endif
+
+void SampleBatchTexels(const VisibleLayout& layout, VisibleBatch& b) {
+#if (HWY_TARGET == HWY_AVX3 || HWY_TARGET == HWY_AVX3_DL) && !ILLUM_USE_DOUBLE
+  if (texelByteLookups()) return SampleBatchTexelsVbmi(layout, b);
+#endif
+  SampleBatchTexelsWith(layout, b);
 }
 
 void FinishVisible(const VisibleLayout& layout, VisibleBatch& b) {
