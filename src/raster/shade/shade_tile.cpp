@@ -211,6 +211,7 @@ std::size_t drawBlendedTile(const DrawTarget& target, std::span<const DrawRecord
     fragments += passed;
     shader.blendPixels(std::uint32_t(i), pixels.data(), found);
   }
+  shader.finishBlending();
   return fragments;
 }
 

@@ -854,7 +854,7 @@ void VisibleShader::flush() {
     const bool modulate = layout_.texture && !layout_.baseTexel;
     for (std::size_t k = 0; k < b_.count; ++k) {
       const Color4 lit(b_.lit[0][k], b_.lit[1][k], b_.lit[2][k], b_.lit[3][k]);
-      out_.blend(int(b_.pixel[k]), b_.slot[k],
+      out_.blend(int(b_.pixel[k]), b_.blendMask[k],
                  modulate ? lit * Vec4(b_.texel[0][k], b_.texel[1][k], b_.texel[2][k], b_.texel[3][k]) : lit);
     }
   } else {
@@ -884,7 +884,20 @@ void VisibleShader::blendRecord(std::uint32_t slot, ShownLists& lists) {
 void VisibleShader::blendPixels(std::uint32_t slot, const std::uint32_t* pixels, std::size_t count) {
   if (count == 0) return;
   blending_ = true;
-  shade(slot, pixels, count);
+  // In pieces that fit in the batch, each gathered at once (`pixels` is the caller's, reused for
+  // the next record), its samples beside its pixels.
+  for (std::size_t done = 0; done < count;) {
+    if (b_.count == VisibleBatch::kSize) flush();
+    const std::size_t piece = std::min(count - done, VisibleBatch::kSize - b_.count);
+    shade(slot, pixels + done, piece);
+    gatherPending();
+    std::uint32_t* mask = b_.blendMask + (b_.count - piece);
+    for (std::size_t k = 0; k < piece; ++k) mask[k] = out_.takeShown(int(pixels[done + k]), slot);
+    done += piece;
+  }
+}
+
+void VisibleShader::finishBlending() {
   flush();
   blending_ = false;
 }

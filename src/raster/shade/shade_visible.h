@@ -50,15 +50,22 @@ struct VisibleSamples {
     for (int s = 0; s < count; ++s)
       if (winners[at + std::size_t(s)] == slot) color[at + std::size_t(s)] = rgba;
   }
-  // A translucent record's colour over what each sample that shows it holds (blendOver); the
-  // samples then show no record.
+  // The samples of pixel `index` that show `slot` (bit s: sample s), which then show no record.
+  std::uint32_t takeShown(int index, std::uint32_t slot) const {
+    const std::size_t at = std::size_t(index) * std::size_t(count);
+    std::uint32_t mask = 0;
+    for (int s = 0; s < count; ++s)
+      if (winners[at + std::size_t(s)] == slot) mask |= 1u << s, winners[at + std::size_t(s)] = kNoWinner;
+    return mask;
+  }
+  // A translucent record's colour over what each sample of `mask` holds (blendOver).
   // (Samples that held the same word get the same one: it is blended once.)
-  void blend(int index, std::uint32_t slot, const Color4& c) const {
+  void blend(int index, std::uint32_t mask, const Color4& c) const {
     const std::size_t at = std::size_t(index) * std::size_t(count);
     bool blended = false;
     std::uint32_t under = 0, over = 0;
     for (int s = 0; s < count; ++s)
-      if (winners[at + std::size_t(s)] == slot) {
+      if (mask & (1u << s)) {
         std::uint32_t& word = color[at + std::size_t(s)];
         if (!blended || word != under) {
           under = word;
@@ -67,7 +74,6 @@ struct VisibleSamples {
         } else {
           word = over;
         }
-        winners[at + std::size_t(s)] = kNoWinner;
       }
   }
   bool shows(int index, std::uint32_t slot) const {
@@ -138,6 +144,7 @@ struct VisibleBatch {
   alignas(64) std::uint32_t rgba[kRoom];
   alignas(64) std::uint32_t pixel[kRoom];  // index in the tile
   std::uint32_t slot[kRoom];
+  std::uint32_t blendMask[kRoom];  // blending: the samples the pixel's colour is blended over
   // Ambient occlusion: each pixel's seed and its ambient's open share.
   std::uint64_t seed[kRoom];
   Real open[kRoom];
@@ -196,12 +203,16 @@ class VisibleShader {
   // The same from the pixels each record's coverage listed (rasterizeSamples): record r's from
   // lists.pixels[lists.start[r]] to [lists.start[r + 1]], of which those it still shows are kept.
   void shadeListed(ShownLists& lists);
-  // A translucent record's pixels just found (its slot in their samples' winners), blended over
-  // what they hold.
+  // A translucent record's pixels just found (its slot in their samples' winners), to be blended
+  // over what they hold. The samples are taken now (they then show no record), the colours
+  // blended in order when the batch is lit (when full, at another object, or at finishBlending):
+  // later records' coverage may draw over the winners meanwhile, not over the colours.
   void blendRecord(std::uint32_t slot, ShownLists& lists);
   // The same for the record's `count` pixels `pixels` (as rasterizeSamples lists them, with room
   // for a vector past the last).
   void blendPixels(std::uint32_t slot, const std::uint32_t* pixels, std::size_t count);
+  // The blends still in the batch, done.
+  void finishBlending();
 
  private:
   void shade(std::uint32_t slot, const std::uint32_t* pixels, std::size_t count);
