@@ -232,12 +232,6 @@ HWY_INLINE void SampleLanes(D d, const Texture& texture, V u, V v, V footprint, 
 #endif
 }
 
-// The texel of a texture at each lane's point, for the pixel's footprint there.
-template <class D, class V = hn::VFromD<D>>
-HWY_INLINE void TexelLanes(D d, const Texture& texture, const UvLanes<V>& at, V (&texel)[4]) {
-  SampleLanes(d, texture, at.uv[0], at.uv[1], FootprintLanes(d, texture, at), texel);
-}
-
 // normalFromMap over lanes: the tangent-space normal of the map's texel in the frame of the unit
 // (front) normal N, the record's ∂P/∂u made orthogonal to it, and the bitangent N × T on the side
 // ∂P/∂v points to; N where that frame or the normal is degenerate.
@@ -300,50 +294,33 @@ HWY_INLINE void GatherLanes(const VisibleLayout& layout, R& rec, const std::uint
     } else if (layout.shading == Shading::Gouraud) {
       for (int c = 0; c < 4; ++c) color[c] = blend(p, layout.lit + c);
     } else {
-      VR n[3], unit[3];
+      VR n[3], front[3];
       for (int c = 0; c < 3; ++c) {
         keep(blend(p, layout.position + c), b.position[c]);
         n[c] = blend(p, layout.normal + c);
       }
-      UnitNormal(n, rec.negate(), unit);
-      for (int c = 0; c < 3; ++c) keep(unit[c], b.normal[c]);
+      UnitNormal(n, hn::FirstN(dr, 0), front);
+      // Two-sided lighting's back faces take the normal's opposite: now, or once a normal map has
+      // bent it (SampleBatchTexels), which then needs the triangle's tangent frame.
+      const auto negate = rec.negate();
+      const bool bent = layout.maps && layout.maps->normal;
+      for (int c = 0; c < 3; ++c) keep(bent ? front[c] : hn::IfThenElse(negate, hn::Neg(front[c]), front[c]), b.normal[c]);
+      if (bent) {
+        keep(hn::IfThenElseZero(negate, one), b.flip);
+        const Vec3L<VR> dPdu = rec.dPdu(), dPdv = rec.dPdv();
+        const VR u[3] = {dPdu.x, dPdu.y, dPdu.z}, v[3] = {dPdv.x, dPdv.y, dPdv.z};
+        for (int c = 0; c < 3; ++c) keep(u[c], b.dPdu[c]), keep(v[c], b.dPdv[c]);
+      }
       for (int c = 0; c < 4; ++c) color[c] = layout.color >= 0 ? blend(p, layout.color + c) : one;
     }
-    UvLanes<VR> uv;
-    if (layout.uv >= 0) uv = UvAt(layout, rec, l, invW, p);
-    if (layout.texture) {
-      // Sampled for the whole batch afterwards (SampleBatchTexels), in a loop of its own.
-      for (int c = 0; c < 2; ++c) keep(uv.uv[c], b.uv[c]);
-      keep(FootprintLanes(dr, *layout.texture, uv), b.footprint);
-      // A base colour texture tints the material's (or the vertex's) colour: that colour now.
-      if (layout.baseTexel && layout.color < 0)
-        for (int c = 0; c < 4; ++c) color[c] = hn::Set(dr, layout.baseColor[c]);
+    // Where the textures are read, sampled for the whole batch afterwards (SampleBatchTexels).
+    if (layout.uv >= 0) {
+      const UvLanes<VR> uv = UvAt(layout, rec, l, invW, p);
+      for (int c = 0; c < 2; ++c) keep(uv.uv[c], b.uv[c]), keep(uv.dx[c], b.uvDx[c]), keep(uv.dy[c], b.uvDy[c]);
     }
-    // glTF's maps (withMapTexels, normalFromMap): the material and the normal at each pixel.
-    if (const MaterialMaps* maps = layout.maps) {
-      VR texel[4];
-      if (maps->metallicRoughness && layout.physical) {
-        TexelLanes(dr, *maps->metallicRoughness, uv, texel);
-        keep(hn::Set(dr, layout.metallic) * texel[2], b.metallic);
-        keep(hn::Set(dr, layout.roughness) * texel[1], b.roughness);
-      }
-      if (maps->emissive) {
-        TexelLanes(dr, *maps->emissive, uv, texel);
-        for (int c = 0; c < 3; ++c) keep(hn::Set(dr, layout.emission[c]) * texel[c], b.emission[c]);
-      }
-      if (maps->normal) {
-        TexelLanes(dr, *maps->normal, uv, texel);
-        // The map bends the front side's normal; two-sided lighting's back faces take its opposite.
-        VR n[3], front[3];
-        for (int c = 0; c < 3; ++c) n[c] = blend(p, layout.normal + c);
-        UnitNormal(n, hn::FirstN(dr, 0), front);
-        const Vec3L<VR> bent = NormalFromMapLanes(dr, Vec3L<VR>{front[0], front[1], front[2]}, rec.dPdu(), rec.dPdv(),
-                                                  texel, maps->normalScale);
-        const VR out[3] = {bent.x, bent.y, bent.z};
-        const auto negate = rec.negate();
-        for (int c = 0; c < 3; ++c) keep(hn::IfThenElse(negate, hn::Neg(out[c]), out[c]), b.normal[c]);
-      }
-    }
+    // A base colour texture tints the material's (or the vertex's) colour: that colour now.
+    if (layout.texture && layout.baseTexel && layout.color < 0)
+      for (int c = 0; c < 4; ++c) color[c] = hn::Set(dr, layout.baseColor[c]);
     for (int c = 0; c < 4; ++c) keep(color[c], b.color[c]);
     hn::StoreU(index, du, b.pixel + at);
     const std::size_t n = std::min(lanes, count - i);
@@ -589,42 +566,85 @@ void WriteShown(const VisibleBatch& b, std::uint32_t* color, const std::uint32_t
   for (std::size_t k = 0; k < b.count; ++k) out.write(int(b.pixel[k]), b.slot[k], b.rgba[k]);
 }
 
-// The batch's texels of the layout's texture, at the points GatherLanes kept, and a base colour
-// texture's tint of the colour before lighting. Apart from the gathering, whose many values would
-// crowd the registers the sampler's texel reads and decode tables use.
-template <class Planes = std::nullptr_t>
-HWY_INLINE void SampleBatchTexelsWith(const VisibleLayout& layout, VisibleBatch& b, const Planes* planes = nullptr) {
+// What a texture of the layout does with its texels at the batch's pixels (withMapTexels,
+// normalFromMap): the base colour's tints the colour before lighting, or modulates it after
+// (GL_MODULATE: kept); glTF's maps scale the material's metallic and roughness, and emission, and
+// bend the front side's normal (two-sided lighting's back faces take its opposite).
+enum class TexelUse { kBaseColor, kMetallicRoughness, kEmissive, kNormal };
+
+// One texture's texels at the points GatherLanes kept, a texture at a time over the whole batch:
+// apart from the gathering, whose many values would crowd the registers the sampler's texel reads
+// and decode tables use.
+template <TexelUse kUse, class Planes = std::nullptr_t>
+HWY_INLINE void SampleBatchTexture(const VisibleLayout& layout, const Texture& texture, VisibleBatch& b,
+                                   const Planes* planes = nullptr) {
   const hn::ScalableTag<Real> d;
   using V = hn::VFromD<decltype(d)>;
   const std::size_t lanes = hn::Lanes(d);
   for (std::size_t i = 0; i < b.count; i += lanes) {
     // Lanes past the last pixel sample (0, 0): the batch's room past it holds no points.
     const auto inside = hn::FirstN(d, b.count - i);
+    UvLanes<V> at;
+    for (int c = 0; c < 2; ++c) {
+      at.uv[c] = hn::IfThenElseZero(inside, hn::Load(d, b.uv[c] + i));
+      at.dx[c] = hn::IfThenElseZero(inside, hn::Load(d, b.uvDx[c] + i));
+      at.dy[c] = hn::IfThenElseZero(inside, hn::Load(d, b.uvDy[c] + i));
+    }
     V texel[4];
-    SampleLanes(d, *layout.texture, hn::IfThenElseZero(inside, hn::Load(d, b.uv[0] + i)),
-                hn::IfThenElseZero(inside, hn::Load(d, b.uv[1] + i)),
-                hn::IfThenElseZero(inside, hn::Load(d, b.footprint + i)), texel, planes);
-    for (int c = 0; c < 4; ++c) hn::Store(texel[c], d, b.texel[c] + i);
-    if (layout.baseTexel)
-      for (int c = 0; c < 4; ++c) hn::Store(hn::Load(d, b.color[c] + i) * texel[c], d, b.color[c] + i);
+    SampleLanes(d, texture, at.uv[0], at.uv[1], FootprintLanes(d, texture, at), texel, planes);
+    if constexpr (kUse == TexelUse::kBaseColor) {
+      for (int c = 0; c < 4; ++c) hn::Store(texel[c], d, b.texel[c] + i);
+      if (layout.baseTexel)
+        for (int c = 0; c < 4; ++c) hn::Store(hn::Load(d, b.color[c] + i) * texel[c], d, b.color[c] + i);
+    } else if constexpr (kUse == TexelUse::kMetallicRoughness) {
+      hn::Store(hn::Set(d, layout.metallic) * texel[2], d, b.metallic + i);
+      hn::Store(hn::Set(d, layout.roughness) * texel[1], d, b.roughness + i);
+    } else if constexpr (kUse == TexelUse::kEmissive) {
+      for (int c = 0; c < 3; ++c) hn::Store(hn::Set(d, layout.emission[c]) * texel[c], d, b.emission[c] + i);
+    } else {
+      const auto load3 = [&](const Real* const (&plane)[3]) {
+        return Vec3L<V>{hn::Load(d, plane[0] + i), hn::Load(d, plane[1] + i), hn::Load(d, plane[2] + i)};
+      };
+      const Real* const normal[3] = {b.normal[0], b.normal[1], b.normal[2]};
+      const Real* const dPdu[3] = {b.dPdu[0], b.dPdu[1], b.dPdu[2]};
+      const Real* const dPdv[3] = {b.dPdv[0], b.dPdv[1], b.dPdv[2]};
+      const Vec3L<V> bent =
+          NormalFromMapLanes(d, load3(normal), load3(dPdu), load3(dPdv), texel, layout.maps->normalScale);
+      const V out[3] = {bent.x, bent.y, bent.z};
+      const auto negate = hn::Load(d, b.flip + i) != hn::Zero(d);
+      for (int c = 0; c < 3; ++c) hn::Store(hn::IfThenElse(negate, hn::Neg(out[c]), out[c]), d, b.normal[c] + i);
+    }
   }
 }
 
 #if (HWY_TARGET == HWY_AVX3 || HWY_TARGET == HWY_AVX3_DL) && !ILLUM_USE_DOUBLE
-// Compiled for VBMI, with the colour decode's byte planes loaded once for the batch and their
+// Compiled for VBMI, with the texture's decode byte planes loaded once for the batch and their
 // lookups inlined (flatten: a function compiled for VBMI can be inlined only into another such).
-__attribute__((target(HWY_TARGET_STR ",avx512vbmi"), flatten)) void SampleBatchTexelsVbmi(const VisibleLayout& layout,
-                                                                                          VisibleBatch& b) {
-  const ColorBytePlanes planes(layout.texture->colorTableBytes());
-  SampleBatchTexelsWith(layout, b, &planes);
+template <TexelUse kUse>
+__attribute__((target(HWY_TARGET_STR ",avx512vbmi"), flatten)) void SampleBatchTextureVbmi(
+    const VisibleLayout& layout, const Texture& texture, VisibleBatch& b) {
+  const ColorBytePlanes planes(texture.colorTableBytes());
+  SampleBatchTexture<kUse>(layout, texture, b, &planes);
 }
 #endif
 
-void SampleBatchTexels(const VisibleLayout& layout, VisibleBatch& b) {
+template <TexelUse kUse>
+void SampleBatchTextureOnCpu(const VisibleLayout& layout, const Texture& texture, VisibleBatch& b) {
 #if (HWY_TARGET == HWY_AVX3 || HWY_TARGET == HWY_AVX3_DL) && !ILLUM_USE_DOUBLE
-  if (texelByteLookups()) return SampleBatchTexelsVbmi(layout, b);
+  if (texelByteLookups()) return SampleBatchTextureVbmi<kUse>(layout, texture, b);
 #endif
-  SampleBatchTexelsWith(layout, b);
+  SampleBatchTexture<kUse>(layout, texture, b);
+}
+
+void SampleBatchTexels(const VisibleLayout& layout, VisibleBatch& b) {
+  if (layout.texture) SampleBatchTextureOnCpu<TexelUse::kBaseColor>(layout, *layout.texture, b);
+  if (const MaterialMaps* maps = layout.maps) {
+    if (maps->metallicRoughness && layout.physical)
+      SampleBatchTextureOnCpu<TexelUse::kMetallicRoughness>(layout, *maps->metallicRoughness, b);
+    if (maps->emissive) SampleBatchTextureOnCpu<TexelUse::kEmissive>(layout, *maps->emissive, b);
+    if (maps->normal && layout.shading == Shading::Phong)  // (maps are drawn lit per pixel: Phong keeps normals)
+      SampleBatchTextureOnCpu<TexelUse::kNormal>(layout, *maps->normal, b);
+  }
 }
 
 void FinishVisible(const VisibleLayout& layout, VisibleBatch& b) {
@@ -820,7 +840,7 @@ void VisibleShader::gatherPending() {
 void VisibleShader::flush() {
   gatherPending();
   if (b_.count == 0) return;
-  if (layout_.texture) sampleBatchTexels(layout_, b_);
+  if (layout_.texture || layout_.maps) sampleBatchTexels(layout_, b_);
   const Object& object = target_.scene.objects[object_];
   if (layout_.shading == Shading::Phong) {
     const ShadeSetup setup{target_.frame.lights, target_.frame.lightModel, modelOf(object.material, target_.frame.model),

@@ -134,8 +134,14 @@ struct VisibleBatch {
   alignas(64) Real normal[3][kRoom];
   alignas(64) Real color[4][kRoom];
   alignas(64) Real texel[4][kRoom];
-  alignas(64) Real uv[2][kRoom];      // textured: where the texel is read, and
-  alignas(64) Real footprint[kRoom];  // how many base texels the pixel spans there
+  // Textured or mapped: where the textures are read, and how uv changes one pixel right and up.
+  alignas(64) Real uv[2][kRoom];
+  alignas(64) Real uvDx[2][kRoom];
+  alignas(64) Real uvDy[2][kRoom];
+  // A normal map's: the triangle's tangent frame, and whether the bent normal is negated (1).
+  alignas(64) Real dPdu[3][kRoom];
+  alignas(64) Real dPdv[3][kRoom];
+  alignas(64) Real flip[kRoom];
   alignas(64) Real lit[4][kRoom];
   // glTF's maps' values (the layout's): metallic, roughness and the emission.
   alignas(64) Real metallic[kRoom];
@@ -153,8 +159,9 @@ struct VisibleBatch {
 // The lanes' part (SIMD, dispatched). gatherShown appends the record's pixels `pixels` (tile
 // indices, `count` of them) of the tile `rect`: their centres' barycentrics exactly as the
 // rasterizer's, the perspective-correct weights, the layout's colour or surface, and where its
-// texture is read. sampleBatchTexels, before lighting: the texels there, and a base colour
-// texture's tint. finishVisible: after lighting, GL_MODULATE and RGBA8.
+// textures are read. sampleBatchTexels, before lighting: the texels there, a texture at a time,
+// and what they do (the base colour's tint, glTF's maps). finishVisible: after lighting,
+// GL_MODULATE and RGBA8.
 void gatherShown(const VisibleLayout& layout, const ShownRecord& record, const PixelRect& rect,
                  const std::uint32_t* pixels, std::size_t count, VisibleBatch& batch);
 // The same for each of `group`'s records, the batch having room for all their pixels.
