@@ -602,14 +602,11 @@ HWY_INLINE void SampleBatchTexture(const VisibleLayout& layout, const Texture& t
     } else if constexpr (kUse == TexelUse::kEmissive) {
       for (int c = 0; c < 3; ++c) hn::Store(hn::Set(d, layout.emission[c]) * texel[c], d, b.emission[c] + i);
     } else {
-      const auto load3 = [&](const Real* const (&plane)[3]) {
+      const auto load3 = [&](const Real (&plane)[3][VisibleBatch::kRoom]) {
         return Vec3L<V>{hn::Load(d, plane[0] + i), hn::Load(d, plane[1] + i), hn::Load(d, plane[2] + i)};
       };
-      const Real* const normal[3] = {b.normal[0], b.normal[1], b.normal[2]};
-      const Real* const dPdu[3] = {b.dPdu[0], b.dPdu[1], b.dPdu[2]};
-      const Real* const dPdv[3] = {b.dPdv[0], b.dPdv[1], b.dPdv[2]};
       const Vec3L<V> bent =
-          NormalFromMapLanes(d, load3(normal), load3(dPdu), load3(dPdv), texel, layout.maps->normalScale);
+          NormalFromMapLanes(d, load3(b.normal), load3(b.dPdu), load3(b.dPdv), texel, layout.maps->normalScale);
       const V out[3] = {bent.x, bent.y, bent.z};
       const auto negate = hn::Load(d, b.flip + i) != hn::Zero(d);
       for (int c = 0; c < 3; ++c) hn::Store(hn::IfThenElse(negate, hn::Neg(out[c]), out[c]), d, b.normal[c] + i);
