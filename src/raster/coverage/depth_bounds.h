@@ -11,7 +11,7 @@
 
 #include <illum/real.h>
 
-#include "raster/setup/setup.h"
+#include "raster/coverage/triangle.h"
 #include "raster/coverage/rasterize.h"
 #include "raster/tile/framebuffer.h"
 

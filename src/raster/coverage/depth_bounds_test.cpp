@@ -5,7 +5,7 @@
 
 #include "raster/coverage/tile_raster.h"
 #include "raster/frame_context.h"
-#include "raster/setup/vertex.h"
+#include "raster/setup/setup.h"
 #include "raster/tile/multisample.h"
 
 #include <gtest/gtest.h>

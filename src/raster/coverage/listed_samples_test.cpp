@@ -4,7 +4,7 @@
 // each; and its passes, depths and winners are those of the pass that lists nothing.
 #include "raster/coverage/tile_raster.h"
 #include "raster/frame_context.h"
-#include "raster/setup/vertex.h"
+#include "raster/setup/setup.h"
 #include "raster/tile/multisample.h"
 
 #include <gtest/gtest.h>

@@ -4,7 +4,7 @@
 // the same way whichever rectangle it is visited from.
 #pragma once
 
-#include "raster/setup/setup.h"
+#include "raster/coverage/triangle.h"
 
 #include <algorithm>
 

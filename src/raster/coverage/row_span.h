@@ -3,7 +3,7 @@
 // triangle's bounds.
 #pragma once
 
-#include "raster/setup/setup.h"
+#include "raster/coverage/triangle.h"
 
 #include <algorithm>
 #include <cmath>
