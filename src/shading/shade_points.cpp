@@ -6,6 +6,7 @@
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 
 #include "math/unorm8-inl.h"
+#include "math/iota-inl.h"
 #include "shading/gl_lighting-inl.h"
 #include "shading/shade_points.h"
 
@@ -159,7 +160,7 @@ class EdgeLanes {
     for (int c = 0; c < 6; ++c) hn::StoreU(hn::Compress(planes[c], mine), d, plane_[c] + count_);
     if (colored_[o])
       for (int c = 0; c < 4; ++c) hn::StoreU(hn::Compress(hn::LoadU(d, p.color[c] + i), mine), d, plane_[6 + c] + count_);
-    hn::StoreU(hn::Compress(hn::Iota(du, std::uint32_t(i)), hn::RebindMask(du, mine)), du, pixel_ + count_);
+    hn::StoreU(hn::Compress(IotaFrom(du, std::uint32_t(i)), hn::RebindMask(du, mine)), du, pixel_ + count_);
     count_ += hn::CountTrue(d, mine);
     const std::size_t lanes = hn::Lanes(d);
     if (count_ < lanes) return;

@@ -67,6 +67,7 @@ std::size_t rasterizeSamples(const TriangleSetup& t, const PixelRect& tile, cons
 #include <hwy/highway.h>
 
 #include "raster/coverage/interpolate-inl.h"
+#include "math/iota-inl.h"
 
 #include "raster/tile/framebuffer.h"
 #include "raster/coverage/row_span.h"
@@ -105,7 +106,7 @@ HWY_INLINE std::size_t DepthPass(const TriangleSetup& t, const PixelRect& tile, 
   // Rows start at the triangle's first column: a vector may run past the tile's row into the next
   // row or the tile's padding (framebuffer.h), never into another tile; those lanes are masked.
   const int startX = minX;
-  const auto xIota = hn::Iota(dr, Real(startX - tile.minX));
+  const auto xIota = IotaFrom(dr, Real(startX - tile.minX));
   const auto hi = hn::Set(dr, Real(maxX - tile.minX));
   const auto invArea = hn::Set(dr, t.invArea);
   const auto z0 = hn::Set(dr, t.z[0]), z1 = hn::Set(dr, t.z[1]), z2 = hn::Set(dr, t.z[2]);
@@ -639,7 +640,7 @@ HWY_INLINE std::size_t SamplesPassIn(D d, const TriangleSetup& t, const PixelRec
     };
     const auto sixteen = hn::Set(d, T(16));
     for (int k = 0; k < group; k += lanes) {
-      const auto pixel = hn::ShiftRightSame(hn::Iota(di, k), shift);
+      const auto pixel = hn::ShiftRightSame(IotaFrom(di, k), shift);
       const auto x = hn::LoadU(di, planes.laneX + k), y = hn::LoadU(di, planes.laneY + k);
       hn::Store(hn::ConvertTo(dr, pixel), dr, pixelOf + k);
       hn::Store(hn::BitCast(hn::Rebind<std::uint32_t, D>(), pixel), hn::Rebind<std::uint32_t, D>(), pixelIndex + k);
@@ -752,7 +753,7 @@ HWY_INLINE std::size_t SamplesPassIn(D d, const TriangleSetup& t, const PixelRec
           if (from != shadedFrom) {
             // Each pixel's exact edge values (the same integers centreAt sums, so the same bits).
             shadedFrom = from;
-            const V dx = hn::Iota(d, T(from - minX));
+            const V dx = IotaFrom(d, T(from - minX));
             const auto at = [&](int i) {
               if constexpr (kSplit) return toReal((rowHigh[i] + dx * stepX[i]) + Elow[i]) * invArea;
               else return toReal(rowHigh[i] + dx * stepX[i]) * invArea;

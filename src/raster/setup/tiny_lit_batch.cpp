@@ -10,6 +10,7 @@
 #include <hwy/highway.h>
 
 #include "raster/coverage/interpolate-inl.h"
+#include "math/iota-inl.h"
 #include "raster/setup/tiny_batch.h"
 #include "raster/setup/tiny_cover-inl.h"
 
@@ -87,7 +88,7 @@ std::size_t CoverTinyLitBatch(const TinyBatchLanes& b, std::uint32_t members, co
   const VU spare = hn::Set(du, LitScratch::kSpareKey);
   hn::StoreU(spare, du, s.key + n);
   const auto indexOf = [&](VU key) { return hn::BitCast(di, key); };
-  const auto countUp = [&](std::size_t from) { return hn::Iota(du, std::uint32_t(from)); };
+  const auto countUp = [&](std::size_t from) { return IotaFrom(du, std::uint32_t(from)); };
   // Each key names one of its samples (any: they share a surface)...
   for (std::size_t f = 0; f < n; f += lanes)
     hn::ScatterIndex(countUp(f), du, s.of, indexOf(hn::LoadU(du, s.key + f)));

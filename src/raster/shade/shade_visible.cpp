@@ -7,6 +7,7 @@
 #include <hwy/highway.h>
 
 #include "image/texture_lanes-inl.h"
+#include "math/iota-inl.h"
 #include "raster/coverage/interpolate-inl.h"
 #include "shading/lane_math-inl.h"
 #include "raster/shade/shade_visible.h"
@@ -419,7 +420,7 @@ std::size_t ShownPairs(const std::uint32_t* winners, int samples, std::uint32_t*
       const auto w = hn::LoadU(du, winners + i);
       const auto some = hn::Ne(w, none);
       if (hn::AllFalse(du, some)) continue;
-      hn::StoreU(hn::Compress(hn::Iota(du, std::uint32_t(i)), some), du, pixel + n);
+      hn::StoreU(hn::Compress(IotaFrom(du, std::uint32_t(i)), some), du, pixel + n);
       hn::StoreU(hn::Compress(w, some), du, slot + n);
       n += hn::CountTrue(du, some);
     }
