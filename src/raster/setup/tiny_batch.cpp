@@ -203,6 +203,9 @@ void SetupTinyGroup(const TinyGroupSource& src, int count, TinyBatchLanes& b, in
   const VD reachSpanY = hn::Set(dd, double(2 * (src.reach.maxY - src.reach.minY)));
   HWY_ALIGN std::int32_t tile[kN], width[kN], pixels[kN], pixel[kN], crosses[kN];
   const int samples = src.samples > 1 ? src.samples : 0;  // multisampled: each sample's box
+  // Multisampled: the bounds (pixels) and the triangle's box (sub-pixel units), as integers, for
+  // the samples' boxes (below). (The lanes past `count` stay 0, as if empty.)
+  HWY_ALIGN std::int32_t boundsX[2][kN] = {}, boundsY[2][kN] = {}, boxX[2][kN] = {}, boxY[2][kN] = {};
 
   std::uint32_t fast = 0, empty = 0, clockwiseBits = 0, backBits = 0;
   for (int j0 = 0; j0 < count; j0 += lanes) {
@@ -261,22 +264,46 @@ void SetupTinyGroup(const TinyGroupSource& src, int count, TinyBatchLanes& b, in
     hn::Store(hn::DemoteTo(di, (minY - tileY * tileSize) * tileSize + (minX - tileX * tileSize)), di, pixel + j0);
     hn::Store(hn::DemoteTo(di, hn::IfThenElseZero(isFast, w)), di, width + j0);
     hn::Store(hn::DemoteTo(di, hn::IfThenElseZero(isFast, w * h)), di, pixels + j0);
-    // Multisampled: each sample's box, the pixels whose sample lies in the triangle's box, as a
-    // pass at that sample bounds them (inside the bounds, which take them all in).
+    if (samples) {
+      const VD box[2][2] = {{minX, maxX}, {minY, maxY}}, extent[2][2] = {{minFx, maxFx}, {minFy, maxFy}};
+      for (int e = 0; e < 2; ++e) {
+        hn::Store(hn::DemoteTo(di, box[0][e]), di, boundsX[e] + j0);
+        hn::Store(hn::DemoteTo(di, box[1][e]), di, boundsY[e] + j0);
+        hn::Store(hn::DemoteTo(di, extent[0][e]), di, boxX[e] + j0);
+        hn::Store(hn::DemoteTo(di, extent[1][e]), di, boxY[e] + j0);
+      }
+    }
+  }
+  // Multisampled: each sample's box, the pixels whose sample lies in the triangle's box, as a
+  // pass at that sample bounds them (inside the bounds, which take them all in): the pixel centres
+  // ⌈(f − o − ½)/1⌉ to ⌊(f − o − ½)/1⌋ as above, in sub-pixel integers (a window coordinate is at
+  // most 2^23), where the arithmetic shift is the floor, a whole row of triangles at a time.
+  const hn::ScalableTag<std::int32_t> dw;
+  for (int j0 = 0; samples && j0 < count; j0 += int(hn::Lanes(dw))) {
+    using VW = hn::VFromD<decltype(dw)>;
+    const auto isFast = hn::RebindMask(dw, MaskFromBits(hn::RebindToUnsigned<decltype(dw)>(), fast >> j0));
+    const VW minX = hn::Load(dw, boundsX[0] + j0), maxX = hn::Load(dw, boundsX[1] + j0);
+    const VW minY = hn::Load(dw, boundsY[0] + j0), maxY = hn::Load(dw, boundsY[1] + j0);
+    const VW minFx = hn::Load(dw, boxX[0] + j0), maxFx = hn::Load(dw, boxX[1] + j0);
+    const VW minFy = hn::Load(dw, boxY[0] + j0), maxFy = hn::Load(dw, boxY[1] + j0);
+    const VW firstBias = hn::Set(dw, std::int32_t(kSubpixelOne - 1 - kSubpixelOne / 2));
+    const VW lastBias = hn::Set(dw, std::int32_t(kSubpixelOne / 2));
+    const auto firstCentre = [&](VW f) { return hn::ShiftRight<kSubpixelBits>(hn::Add(f, firstBias)); };
+    const auto lastCentre = [&](VW f) { return hn::ShiftRight<kSubpixelBits>(hn::Sub(f, lastBias)); };
+    const VW one = hn::Set(dw, 1);
     for (int smp = 0; smp < samples; ++smp) {
       const SubpixelOffset o = src.sampleOffsets[smp];
-      const VD ox = hn::Set(dd, double(o.x)), oy = hn::Set(dd, double(o.y));
-      const VD x0 = hn::Max(minX, firstCentre(minFx - ox)), x1 = hn::Min(maxX, lastCentre(maxFx - ox));
-      const VD y0 = hn::Max(minY, firstCentre(minFy - oy)), y1 = hn::Min(maxY, lastCentre(maxFy - oy));
-      const MD some = hn::And(hn::And(isFast, x0 <= x1), y0 <= y1);
-      const VD sw = hn::IfThenElseZero(some, x1 - x0 + one);
-      const VD base = (x0 - minX) * hn::Set(dd, 16.0) +
-                      (y0 - minY) * hn::Set(dd, 16.0 * double(1 << TinySampleSlot::kRowShift)) +
-                      hn::Set(dd, double(TinySampleSlot::of(0, 0, o, smp)));
-      hn::Store(hn::DemoteTo(di, hn::IfThenElseZero(some, base)), di,
-                reinterpret_cast<std::int32_t*>(b.sampleBase[smp]) + j0);
-      hn::Store(hn::DemoteTo(di, sw), di, b.sampleWidth[smp] + j0);
-      hn::Store(hn::DemoteTo(di, sw * hn::IfThenElseZero(some, y1 - y0 + one)), di, b.sampleCount[smp] + j0);
+      const VW ox = hn::Set(dw, std::int32_t(o.x)), oy = hn::Set(dw, std::int32_t(o.y));
+      const VW x0 = hn::Max(minX, firstCentre(hn::Sub(minFx, ox))), x1 = hn::Min(maxX, lastCentre(hn::Sub(maxFx, ox)));
+      const VW y0 = hn::Max(minY, firstCentre(hn::Sub(minFy, oy))), y1 = hn::Min(maxY, lastCentre(hn::Sub(maxFy, oy)));
+      const auto some = hn::AndNot(hn::Or(hn::Gt(x0, x1), hn::Gt(y0, y1)), isFast);  // (no integer ≤ in Highway 1.0)
+      const VW sw = hn::IfThenElseZero(some, hn::Add(hn::Sub(x1, x0), one));
+      const VW base = hn::Add(hn::Add(hn::ShiftLeft<4>(hn::Sub(x0, minX)),
+                                      hn::ShiftLeft<4 + TinySampleSlot::kRowShift>(hn::Sub(y0, minY))),
+                              hn::Set(dw, std::int32_t(TinySampleSlot::of(0, 0, o, smp))));
+      hn::Store(hn::IfThenElseZero(some, base), dw, reinterpret_cast<std::int32_t*>(b.sampleBase[smp]) + j0);
+      hn::Store(sw, dw, b.sampleWidth[smp] + j0);
+      hn::Store(hn::Mul(sw, hn::IfThenElseZero(some, hn::Add(hn::Sub(y1, y0), one))), dw, b.sampleCount[smp] + j0);
     }
   }
   // Depth, 1/w and the colours of the vertices in counter-clockwise order, the colours of the lit
