@@ -815,12 +815,39 @@ std::size_t RasterizeSamples(const TriangleSetup& t, const PixelRect& tile, cons
   });
 }
 
+// The places of the set bits of each 4-bit mask, in order (the rest 0).
+struct SetBitPlaces {
+  alignas(16) std::uint32_t of[16][4];
+};
+constexpr SetBitPlaces makeSetBitPlaces() {
+  SetBitPlaces p{};
+  for (unsigned m = 0; m < 16; ++m)
+    for (unsigned k = 0, n = 0; k < 4; ++k)
+      if (m >> k & 1) p.of[m][n++] = k;
+  return p;
+}
+alignas(16) inline constexpr SetBitPlaces kSetBitPlaces = makeSetBitPlaces();
+
+// Bit k of the result: bit k·samples of `bits` (a pixel's first sample), for the `pixels` pixels.
+HWY_INLINE std::uint32_t FirstSampleBits(std::uint64_t bits, int samples, int pixels) {
+#if HWY_TARGET == HWY_AVX2 || HWY_TARGET == HWY_AVX3 || HWY_TARGET == HWY_AVX3_DL
+  std::uint64_t firsts = 0;  // (BMI2, part of these targets: one instruction)
+  for (int k = 0; k < pixels; ++k) firsts |= std::uint64_t(1) << (k * samples);
+  return std::uint32_t(_pext_u64(bits, firsts));
+#else
+  std::uint32_t out = 0;
+  for (int k = 0; k < pixels; ++k) out |= std::uint32_t(bits >> (k * samples) & 1) << k;
+  return out;
+#endif
+}
+
 std::size_t RasterizeSamplesListed(const TriangleSetup& t, const PixelRect& tile, const SamplePlanes& planes,
                                    std::uint32_t slot, std::uint32_t* listed, std::size_t& listedCount) {
   // Each vector's pixels where a sample passed: a vector holds `lanes / samples` whole pixels, whose
-  // samples' pass lanes are folded onto the pixel's first (swapped neighbours, pairs, blocks, as
-  // ResolvePixels sums them) and those first lanes' pixels compressed onto the list's end; or a
-  // pixel spans whole vectors, listed at the first of them that has a sample passing.
+  // samples' pass bits are folded onto the pixel's first, in a general register (a chain of vector
+  // shuffles and a compress was a fifth of this pass), and those pixels listed four at a time from
+  // a table of the places of a 4-bit mask's set bits; or a pixel spans whole vectors, listed at the
+  // first of them that has a sample passing.
   const int samples = planes.count, shift = __builtin_ctz(unsigned(samples));  // (a power of two)
   std::uint32_t* const begin = listed;
   std::uint32_t* end = listed;
@@ -832,16 +859,23 @@ std::size_t RasterizeSamplesListed(const TriangleSetup& t, const PixelRect& tile
     const std::uint32_t pixel = std::uint32_t(at >> shift);
 #if HWY_TARGET != HWY_SCALAR
     if constexpr (hn::MaxLanes(du) >= 4) {
-      if (samples <= int(hn::Lanes(du)) && samples <= 8) {
-        auto any = hn::VecFromMask(du, mask);
-        any = hn::Or(any, hn::Shuffle2301(any));
-        if (samples >= 4) any = hn::Or(any, hn::Shuffle1032(any));
-        if (samples >= 8) any = hn::Or(any, hn::SwapAdjacentBlocks(any));
-        const auto leads = hn::Eq(hn::And(hn::Iota(du, 0), hn::Set(du, std::uint32_t(samples - 1))), hn::Zero(du));
-        const auto keep = hn::And(leads, hn::MaskFromVec(any));
-        const auto pixels = hn::Add(hn::ShiftRightSame(hn::Iota(du, 0), shift), hn::Set(du, pixel));
-        hn::StoreU(hn::Compress(pixels, keep), du, end);  // (the list has room for a vector past its end)
-        end += hn::CountTrue(du, keep);
+      const int lanes = int(hn::Lanes(du));
+      if (samples <= lanes && samples <= 8 && lanes <= 64) {
+        std::uint8_t bytes[8] = {};
+        hn::StoreMaskBits(du, mask, bytes);
+        std::uint64_t bits = 0;
+        std::memcpy(&bits, bytes, sizeof bits);
+        bits |= bits >> 1;
+        if (samples >= 4) bits |= bits >> 2;
+        if (samples >= 8) bits |= bits >> 4;
+        const int pixels = lanes / samples;
+        const std::uint32_t any = FirstSampleBits(bits, samples, pixels);
+        const hn::CappedTag<std::uint32_t, 4> d4;  // (the list has room for a vector past its end)
+        for (int k = 0; k < pixels; k += 4) {
+          const unsigned four = (any >> k) & 15u;
+          hn::StoreU(hn::Add(hn::Load(d4, kSetBitPlaces.of[four]), hn::Set(d4, pixel + std::uint32_t(k))), d4, end);
+          end += __builtin_popcount(four);
+        }
         return;
       }
     }
