@@ -120,6 +120,14 @@ std::size_t ResolvePixels(const std::uint32_t* src, int samples, int srcRowPixel
   // (ConcatEven keeps the even lanes of two vectors), and stored as one. False (nothing written)
   // where some pixel is neither.
   const auto wholeVector = [&](const std::uint32_t* from, std::uint8_t* to) {
+    // Nothing drawn there, as in much of a model's tiles: the background, tested at once.
+    auto drawn = hn::Zero(du);
+    for (int k = 0; k < samples; ++k)
+      drawn = hn::Or(drawn, hn::Xor(hn::LoadU(du, from + std::size_t(k) * std::size_t(lanes)), backgroundWord));
+    if (hn::AllTrue(du, hn::Eq(drawn, hn::Zero(du)))) {
+      hn::StoreU(backgroundWord, du, reinterpret_cast<std::uint32_t*>(to));
+      return true;
+    }
     hn::Vec<decltype(du)> v[kSamplesMax];
     for (int k = 0; k < samples; ++k) {
       const auto w = hn::LoadU(du, from + std::size_t(k) * std::size_t(lanes));
