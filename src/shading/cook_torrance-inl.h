@@ -58,9 +58,9 @@ HWY_INLINE PhysicalL<V> LanePhysical(D d, const PhysicalMaterial& m, V metallic,
 
 // One light's terms for a physically based material; `base` and its ambient stand-in per lane
 // (vertex colours replace the base colour). N and V are unit vectors on the lit side.
-template <bool kRecord, class D, class V = hn::VFromD<D>>
+template <bool kRecord, class D, class L, class V = hn::VFromD<D>>
 HWY_INLINE void AccumulateCookTorrance(D d, Vec3L<V>& ambientOut, Vec3L<V>& diffuseOut, Vec3L<V>& specularOut,
-                                       const EyeLight& light, const PhysicalL<V>& m, const Vec3L<V>& base,
+                                       const L& light, const PhysicalL<V>& m, const Vec3L<V>& base,
                                        const Vec3L<V>& P, const Vec3L<V>& N, const Vec3L<V>& toViewer,
                                        LightDetail* record) {
   // Where is the light.

@@ -148,8 +148,8 @@ HWY_INLINE void AddImageLight(D d, TermsL<V>& terms, const EyeImageLight& env, L
 //     inverse of the distance d from a positional light, with no angle (a directional light: d_cm·d_cli);
 //   bouknight (Bouknight 1970): d_cm·d_cli·max(N·L, 0), Lambert's law from a light at infinity
 //     (no attenuation, no spot, no light ambient); the ambient term is the light model's.
-template <bool kRecord, class D, class V = hn::VFromD<D>>
-HWY_INLINE void AccumulateEarlyLight(D d, LightSumsL<V>& sums, const EyeLight& light, const MaterialColorsL<V>& colors,
+template <bool kRecord, class D, class L, class V = hn::VFromD<D>>
+HWY_INLINE void AccumulateEarlyLight(D d, LightSumsL<V>& sums, const L& light, const MaterialColorsL<V>& colors,
                                      LightingModel model, const SurfaceL<V>& s, LightDetail* record) {
   const LightSample<V> ls = SampleLight(d, light, s.P, s.N);
   const V NoL = Dot(s.N, ls.L);
@@ -174,8 +174,8 @@ HWY_INLINE void AccumulateEarlyLight(D d, LightSumsL<V>& sums, const EyeLight& l
 // One light's bracket without the material's colours, attenuation and spot applied, added to
 // `sums`; the recorder's terms are the light's share with the material's colours (`colors`). A
 // note's `convention` changes the bracket as lighting.h says.
-template <bool kRecord, class D, class V = hn::VFromD<D>>
-HWY_INLINE void AccumulateGlLight(D d, LightSumsL<V>& sums, const EyeLight& light, const Material& material,
+template <bool kRecord, class D, class L, class V = hn::VFromD<D>>
+HWY_INLINE void AccumulateGlLight(D d, LightSumsL<V>& sums, const L& light, const Material& material,
                                   const MaterialColorsL<V>& colors, LightingModel model, Convention convention,
                                   const SurfaceL<V>& s, LightDetail* record) {
   // Where is the light.
@@ -243,8 +243,8 @@ HWY_INLINE void AccumulateGlLight(D d, LightSumsL<V>& sums, const EyeLight& ligh
 // material's colours), or a physically based one's, whose colours vary with the light (Fresnel's
 // F), added to `terms` as it is (`physical` is physicalOf(material) over the lanes, made once by
 // the caller).
-template <bool kRecord, class D, class V = hn::VFromD<D>>
-HWY_INLINE void AccumulateLight(D d, TermsL<V>& terms, LightSumsL<V>& sums, const EyeLight& light,
+template <bool kRecord, class D, class L, class V = hn::VFromD<D>>
+HWY_INLINE void AccumulateLight(D d, TermsL<V>& terms, LightSumsL<V>& sums, const L& light,
                                 const Material& material, const PhysicalL<V>& physical,
                                 const MaterialColorsL<V>& colors, LightingModel model, Convention convention,
                                 const SurfaceL<V>& s, LightDetail* record) {
@@ -277,9 +277,9 @@ struct MappedL {
 };
 
 // The whole equation at each lane: emission, global ambient, then every light in order
-// (`physicalMaterial` is physicalFor(material, model)).
-template <class D, class V = hn::VFromD<D>>
-HWY_INLINE TermsL<V> ShadeEquation(D d, std::span<const EyeLight> lights, const LightModel& lightModel,
+// (`physicalMaterial` is physicalFor(material, model); the lights EyeLights or PreparedLights).
+template <class D, class L, class V = hn::VFromD<D>>
+HWY_INLINE TermsL<V> ShadeEquation(D d, std::span<const L> lights, const LightModel& lightModel,
                                    const Material& material, const PhysicalMaterial& physicalMaterial,
                                    const MaterialColorsL<V>& colors, LightingModel model, const SurfaceL<V>& s,
                                    const MappedL<V>& mapped = {}) {
@@ -291,7 +291,7 @@ HWY_INLINE TermsL<V> ShadeEquation(D d, std::span<const EyeLight> lights, const 
   if (lightModel.environment && !noteShader)
     AddImageLight(d, terms, *lightModel.environment, model, colors, physical, s);
   LightSumsL<V> sums = NoLight(d);
-  for (const EyeLight& light : lights)
+  for (const L& light : lights)
     AccumulateLight<false>(d, terms, sums, light, material, physical, colors, model, lightModel.convention, s,
                            nullptr);
   if (!lights.empty()) AddLightSums(d, terms, sums, material, colors, model);

@@ -12,6 +12,9 @@
 #include <illum/lighting.h>
 
 #include "shading/brdf-inl.h"
+#include "shading/prepared_light.h"
+
+#include <type_traits>
 
 HWY_BEFORE_NAMESPACE();
 namespace illum::HWY_NAMESPACE {
@@ -37,9 +40,9 @@ HWY_INLINE hn::VFromD<D> SpotFactor(D d, hn::VFromD<D> minusLoS, Real cosCutoff,
   return hn::IfThenZeroElse(minusLoS < hn::Set(d, cosCutoff), PowLobe(d, minusLoS, exponent));
 }
 
-// The light as seen from points P with unit normals N.
-template <class D, class V = hn::VFromD<D>>
-HWY_INLINE LightSample<V> SampleLight(D d, const EyeLight& light, const Vec3L<V>& P, const Vec3L<V>& N) {
+// The light (an EyeLight, or a PreparedLight) as seen from points P with unit normals N.
+template <class D, class L, class V = hn::VFromD<D>>
+HWY_INLINE LightSample<V> SampleLight(D d, const L& light, const Vec3L<V>& P, const Vec3L<V>& N) {
   LightSample<V> s;
   s.distance = hn::Zero(d);
   s.attenuation = hn::Set(d, Real(1));
@@ -52,9 +55,8 @@ HWY_INLINE LightSample<V> SampleLight(D d, const EyeLight& light, const Vec3L<V>
     s.L = Select(away, inverse * toLight, N);
     s.attenuation = DistanceAttenuation(d, light.attenuation, s.distance);
   } else {
-    const Vec3 towards(light.position);
-    const Real len = glm::length(towards);
-    s.L = Broadcast(d, len > 0 ? towards / len : Vec3(0, 0, 1));
+    if constexpr (std::is_same_v<L, PreparedLight>) s.L = Broadcast(d, light.towards);
+    else s.L = Broadcast(d, unitTowards(light));
   }
   // The spot factor applies to directional lights too, as GL specifies.
   s.spot = light.isSpot() ? SpotFactor(d, hn::Neg(Dot(s.L, Broadcast(d, light.spotDirection))), light.spotCosCutoff,

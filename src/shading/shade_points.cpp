@@ -9,6 +9,10 @@
 #include "math/iota-inl.h"
 #include "shading/gl_lighting-inl.h"
 #include "shading/shade_points.h"
+#include "shading/prepared_light.h"
+
+#include <span>
+#include <vector>
 
 HWY_BEFORE_NAMESPACE();
 namespace illum::HWY_NAMESPACE {
@@ -37,9 +41,10 @@ HWY_INLINE void LoadMaps(D d, const SurfacePoints& p, std::size_t i, MapLanes<V>
 
 // (`physical` is physicalFor(setup.material, setup.model): asked for once per batch or owner, not
 // once a vector, where deriving it from a GL material had cost a twelfth of a frame.)
-template <class D, class V = hn::VFromD<D>>
-HWY_INLINE void LitColor(D d, const ShadeSetup& setup, const PhysicalMaterial& physical, SurfaceL<V>& s,
-                         const Real* const* color, const Real* open, V& r, V& g, V& b, V& a,
+// The lights are setup.lights, or the same prepared (PreparedLight).
+template <class D, class L, class V = hn::VFromD<D>>
+HWY_INLINE void LitColor(D d, const ShadeSetup& setup, std::span<const L> lights, const PhysicalMaterial& physical,
+                         SurfaceL<V>& s, const Real* const* color, const Real* open, V& r, V& g, V& b, V& a,
                          const MappedL<V>& mapped = {}) {
   s.toViewer = ToViewer(d, s.P, viewerIsLocal(setup.lightModel));
   MaterialColorsL<V> colors = UniformColors(d, setup.material, physical, setup.model);
@@ -48,14 +53,15 @@ HWY_INLINE void LitColor(D d, const ShadeSetup& setup, const PhysicalMaterial& p
     colors = {c, c, hn::LoadU(d, color[3])};
   }
   TermsL<V> terms =
-      ShadeEquation(d, setup.lights, setup.lightModel, setup.material, physical, colors, setup.model, s, mapped);
+      ShadeEquation(d, lights, setup.lightModel, setup.material, physical, colors, setup.model, s, mapped);
   if (open) terms.ambient = hn::LoadU(d, open) * terms.ambient;
   ClampedColor(d, terms, colors.alpha, setup.lightModel.toneMap, r, g, b, a);
 }
 
 // Points [first, first + lanes) of `p`, read from and written to arrays offset by `first`.
 template <class D>
-HWY_INLINE void ShadeLanes(D d, const ShadeSetup& setup, const PhysicalMaterial& physical, const Real* const position[3],
+HWY_INLINE void ShadeLanes(D d, const ShadeSetup& setup, std::span<const PreparedLight> lights,
+                           const PhysicalMaterial& physical, const Real* const position[3],
                            const Real* const normal[3], const Real* const color[4], const Real* open,
                            Real* const out[4], const MappedL<hn::VFromD<D>>& mapped = {}) {
   using V = hn::VFromD<D>;
@@ -63,7 +69,7 @@ HWY_INLINE void ShadeLanes(D d, const ShadeSetup& setup, const PhysicalMaterial&
   s.P = {hn::LoadU(d, position[0]), hn::LoadU(d, position[1]), hn::LoadU(d, position[2])};
   s.N = {hn::LoadU(d, normal[0]), hn::LoadU(d, normal[1]), hn::LoadU(d, normal[2])};
   V r, g, b, a;
-  LitColor(d, setup, physical, s, color[0] ? color : nullptr, open, r, g, b, a, mapped);
+  LitColor(d, setup, lights, physical, s, color[0] ? color : nullptr, open, r, g, b, a, mapped);
   hn::StoreU(r, d, out[0]);
   hn::StoreU(g, d, out[1]);
   hn::StoreU(b, d, out[2]);
@@ -75,6 +81,8 @@ void ShadePoints(const ShadeSetup& setup, const SurfacePoints& p, Real* const ou
   const std::size_t lanes = hn::Lanes(d);
   const bool colored = p.color[0] != nullptr;
   const PhysicalMaterial physical = physicalFor(setup.material, setup.model);
+  const std::vector<PreparedLight> prepared(setup.lights.begin(), setup.lights.end());
+  const std::span<const PreparedLight> lights(prepared);
   std::size_t i = 0;
   for (; i + lanes <= p.count; i += lanes) {
     const Real* position[3] = {p.position[0] + i, p.position[1] + i, p.position[2] + i};
@@ -84,7 +92,8 @@ void ShadePoints(const ShadeSetup& setup, const SurfacePoints& p, Real* const ou
     Real* const dst[4] = {out[0] + i, out[1] + i, out[2] + i, out[3] + i};
     MapLanes<hn::VFromD<decltype(d)>> maps;
     LoadMaps(d, p, i, maps);
-    ShadeLanes(d, setup, physical, position, normal, color, p.ambientOpen ? p.ambientOpen + i : nullptr, dst, maps.mapped);
+    ShadeLanes(d, setup, lights, physical, position, normal, color, p.ambientOpen ? p.ambientOpen + i : nullptr, dst,
+               maps.mapped);
   }
   if (i == p.count) return;
   // The last few points: copied into full vectors, the spare lanes repeating the last point.
@@ -110,7 +119,7 @@ void ShadePoints(const ShadeSetup& setup, const SurfacePoints& p, Real* const ou
   const Real* color[4] = {};
   if (colored) color[0] = in[6], color[1] = in[7], color[2] = in[8], color[3] = in[9];
   Real* const dst[4] = {result[0], result[1], result[2], result[3]};
-  ShadeLanes(d, setup, physical, position, normal, color, p.ambientOpen ? in[10] : nullptr, dst, maps.mapped);
+  ShadeLanes(d, setup, lights, physical, position, normal, color, p.ambientOpen ? in[10] : nullptr, dst, maps.mapped);
   for (std::size_t k = 0; i + k < p.count; ++k)
     for (int c = 0; c < 4; ++c) out[c][i + k] = result[c][k];
 }
@@ -188,7 +197,8 @@ class EdgeLanes {
     s.N = {hn::Load(d, plane_[3]), hn::Load(d, plane_[4]), hn::Load(d, plane_[5])};
     const Real* color[4] = {plane_[6], plane_[7], plane_[8], plane_[9]};
     V r, g, b, a;
-    LitColor(d, setups_[owner_], physical_(owner_), s, colored_[owner_] ? color : nullptr, nullptr, r, g, b, a);
+    LitColor(d, setups_[owner_], setups_[owner_].lights, physical_(owner_), s, colored_[owner_] ? color : nullptr,
+             nullptr, r, g, b, a);
     HWY_ALIGN std::uint32_t packed[hn::MaxLanes(du)];
     hn::Store(PackUnorm8(d, r, g, b, a), du, packed);
     for (std::size_t k = 0; k < n; ++k) rgba_[pixel_[k]] = packed[k];
@@ -227,7 +237,8 @@ void ShadeOwnedPoints(std::span<const ShadeSetup> setups, std::span<const std::u
     if (hn::AllTrue(du, owners == hn::Set(du, first))) {  // a whole vector of one owner: lit as it is
       const Real* color[4] = {p.color[0] + i, p.color[1] + i, p.color[2] + i, p.color[3] + i};
       V r, g, b, a;
-      LitColor(d, setups[first], physical(first), s, colored[first] ? color : nullptr, nullptr, r, g, b, a);
+      LitColor(d, setups[first], setups[first].lights, physical(first), s, colored[first] ? color : nullptr, nullptr, r,
+               g, b, a);
       hn::StoreU(PackUnorm8(d, r, g, b, a), du, rgba + i);
       continue;
     }
