@@ -6,11 +6,10 @@
 
 #include <hwy/highway.h>
 
-#include "image/texture_lanes-inl.h"
-#include "math/iota-inl.h"
 #include "raster/coverage/interpolate-inl.h"
 #include "shading/lane_math-inl.h"
 #include "raster/shade/shade_visible.h"
+#include "raster/shade/visible_lanes.h"
 
 #include <algorithm>
 #include <cstring>
@@ -176,12 +175,8 @@ struct RecordGroup {
 };
 #endif
 
-// Where each lane's pixel falls on the textures (texturePoint): its uv, and how uv changes one
-// pixel right (dx) and one up (dy), from the barycentrics moved by the record's steps.
-template <class V>
-struct UvLanes {
-  V uv[2], dx[2], dy[2];
-};
+// Where each lane's pixel falls on the textures (UvLanes, visible_lanes.h): its uv at the pixel, and
+// at the pixel moved one right and one up by the record's steps.
 template <class R, class V>
 HWY_INLINE UvLanes<V> UvAt(const VisibleLayout& layout, const R& rec, const V (&l)[3], const V (&invW)[3],
                            const V (&p)[3]) {
@@ -200,58 +195,6 @@ HWY_INLINE UvLanes<V> UvAt(const VisibleLayout& layout, const R& rec, const V (&
     for (int c = 0; c < 2; ++c) delta[c] = moved[c] - u.uv[c];
   }
   return u;
-}
-
-// How many base texels of `texture` a pixel spans at each lane's point (texturePoint's footprint):
-// the longer of uv's steps one pixel right and one up, in texels.
-template <class D, class V = hn::VFromD<D>>
-HWY_INLINE V FootprintLanes(D d, const Texture& texture, const UvLanes<V>& at) {
-  const V width = hn::Set(d, Real(texture.width())), height = hn::Set(d, Real(texture.height()));
-  const V x0 = at.dx[0] * width, y0 = at.dx[1] * height, x1 = at.dy[0] * width, y1 = at.dy[1] * height;
-  // std::max of the two lengths (fragment.cpp) with one square root: it is monotonic and correctly
-  // rounded, so the root of the larger square is the larger root, bit for bit, and a NaN square
-  // is passed over or kept as std::max passes over or keeps its root.
-  const V right2 = x0 * x0 + y0 * y0, up2 = x1 * x1 + y1 * y1;
-  return hn::Sqrt(hn::IfThenElse(right2 < up2, up2, right2));
-}
-
-// A texture's texel at each lane's (u, v), trilinearly filtered for its footprint there (sampleAt).
-// With `planes`, colour bytes are looked up in them (SampleTextureLanes).
-template <class D, class V = hn::VFromD<D>, class Planes = std::nullptr_t>
-HWY_INLINE void SampleLanes(D d, const Texture& texture, V u, V v, V footprint, V (&texel)[4],
-                            [[maybe_unused]] const Planes* planes = nullptr) {
-#if !ILLUM_USE_DOUBLE
-  SampleTextureLanes(d, texture, u, v, footprint, texel, planes);
-#else
-  HWY_ALIGN Real us[hn::MaxLanes(d)], vs[hn::MaxLanes(d)], f[hn::MaxLanes(d)], out[4][hn::MaxLanes(d)];
-  hn::Store(u, d, us), hn::Store(v, d, vs), hn::Store(footprint, d, f);
-  for (std::size_t k = 0; k < hn::Lanes(d); ++k) {
-    const Vec4 t = texture.sample(Vec2(us[k], vs[k]), f[k]);
-    for (int c = 0; c < 4; ++c) out[c][k] = t[c];
-  }
-  for (int c = 0; c < 4; ++c) texel[c] = hn::Load(d, out[c]);
-#endif
-}
-
-// normalFromMap over lanes: the tangent-space normal of the map's texel in the frame of the unit
-// (front) normal N, the record's ∂P/∂u made orthogonal to it, and the bitangent N × T on the side
-// ∂P/∂v points to; N where that frame or the normal is degenerate.
-template <class D, class V = hn::VFromD<D>>
-HWY_INLINE Vec3L<V> NormalFromMapLanes(D d, const Vec3L<V>& N, const Vec3L<V>& dPdu, const Vec3L<V>& dPdv,
-                                       const V (&texel)[4], Real scale) {
-  const Vec3L<V> t = dPdu - Dot(dPdu, N) * N;
-  const V tLen = Length(t);
-  const auto framed = tLen > hn::Zero(d);
-  const Vec3L<V> T = t / hn::IfThenElse(framed, tLen, hn::Set(d, Real(1)));
-  const Vec3L<V> c{N.y * T.z - T.y * N.z, N.z * T.x - T.z * N.x, N.x * T.y - T.x * N.y};  // glm::cross(N, T)
-  const Vec3L<V> B = Select(Dot(c, dPdv) < hn::Zero(d), -c, c);
-  const V two = hn::Set(d, Real(2)), one = hn::Set(d, Real(1)), s = hn::Set(d, scale);
-  const V nx = (two * texel[0] - one) * s, ny = (two * texel[1] - one) * s, nz = two * texel[2] - one;
-  const Vec3L<V> perturbed = (nx * T + ny * B) + nz * N;
-  const V len = Length(perturbed);
-  const auto unit = len > hn::Zero(d);
-  const Vec3L<V> mapped = perturbed / hn::IfThenElse(unit, len, one);
-  return Select(hn::And(framed, unit), mapped, N);
 }
 
 // gatherShown's lanes, `count` pixels (tile indices) in the widest Real lanes, appended to the
@@ -405,267 +348,6 @@ void GatherShownGroup(const VisibleLayout& layout, const PendingRecords& group, 
 #endif
 }
 
-// The (pixel, record) pairs of a tile, pixel by pixel, each record a pixel's samples show once (in
-// sample order, as VisibleSamples::forEachShown gives them): whole vectors of winners at a time,
-// the empty ones passed over and a pixel whose samples agree taken at once. Returns how many.
-std::size_t ShownPairs(const std::uint32_t* winners, int samples, std::uint32_t* pixel, std::uint32_t* slot) {
-  const hn::ScalableTag<std::uint32_t> du;
-  const int lanes = int(hn::Lanes(du)), words = kTileSize * kTileSize * samples;
-  const auto none = hn::Set(du, kNoWinner);
-  std::size_t n = 0;
-  const VisibleSamples shown{samples, nullptr, const_cast<std::uint32_t*>(winners)};
-  const auto one = [&](int index, std::uint32_t s) { pixel[n] = std::uint32_t(index), slot[n] = s, ++n; };
-  if (samples == 1) {
-    for (int i = 0; i < words; i += lanes) {
-      const auto w = hn::LoadU(du, winners + i);
-      const auto some = hn::Ne(w, none);
-      if (hn::AllFalse(du, some)) continue;
-      hn::StoreU(hn::Compress(IotaFrom(du, std::uint32_t(i)), some), du, pixel + n);
-      hn::StoreU(hn::Compress(w, some), du, slot + n);
-      n += hn::CountTrue(du, some);
-    }
-    return n;
-  }
-  if (samples > lanes || lanes > 64) {
-    for (int i = 0; i < kTileSize * kTileSize; ++i) shown.forEachShown(i, one);
-    return n;
-  }
-  // Lane k compared with its pixel's first sample.
-  HWY_ALIGN std::uint32_t firstOf[hn::MaxLanes(du)];
-  for (int k = 0; k < lanes; ++k) firstOf[k] = std::uint32_t(k & ~(samples - 1));
-  const auto first = hn::SetTableIndices(du, firstOf);
-  // Each lane's pixel (from the vector's first), and the lanes that are a pixel's first sample.
-  const int shift = __builtin_ctz(unsigned(samples));
-  const auto lanePixel = hn::ShiftRightSame(hn::Iota(du, 0), shift);
-  const auto sampleOf = hn::And(hn::Iota(du, 0), hn::Set(du, std::uint32_t(samples - 1)));
-  const auto leads = hn::Eq(sampleOf, hn::Zero(du));
-  // Row k − 1: each lane's sample k back in its pixel (itself where there is none).
-  HWY_ALIGN std::uint32_t back[(kSamplesMax - 1) * hn::MaxLanes(du)];
-  for (int k = 1; k < samples; ++k)
-    for (int lane = 0; lane < lanes; ++lane)
-      back[(k - 1) * lanes + lane] = std::uint32_t((lane & (samples - 1)) >= k ? lane - k : lane);
-  for (int i = 0; i < words; i += lanes) {
-    const auto w = hn::LoadU(du, winners + i);
-    if (hn::AllTrue(du, hn::Eq(w, none))) continue;
-    const auto agree = hn::Eq(w, hn::TableLookupLanes(w, first));
-    if (hn::AllTrue(du, agree)) {  // every pixel's samples show one record (or none): its first's
-      const auto some = hn::And(leads, hn::Ne(w, none));
-      hn::StoreU(hn::Compress(lanePixel + hn::Set(du, std::uint32_t(i >> shift)), some), du, pixel + n);
-      hn::StoreU(hn::Compress(w, some), du, slot + n);
-      n += hn::CountTrue(du, some);
-      continue;
-    }
-    // Some pixel's samples differ: a lane shows a record of its own when it has one and none of
-    // its pixel's earlier samples (k lanes back, k = 1 .. samples − 1) shows the same. The lanes
-    // kept are in pixel order, then sample order, as forEachShown gives them.
-    auto fresh = hn::Ne(w, none);
-    for (int k = 1; k < samples; ++k) {
-      const auto earlier = hn::TableLookupLanes(w, hn::SetTableIndices(du, back + (k - 1) * lanes));
-      const auto firstFew = hn::Lt(sampleOf, hn::Set(du, std::uint32_t(k)));  // no sample k back
-      fresh = hn::And(fresh, hn::Or(firstFew, hn::Ne(w, earlier)));
-    }
-    hn::StoreU(hn::Compress(lanePixel + hn::Set(du, std::uint32_t(i >> shift)), fresh), du, pixel + n);
-    hn::StoreU(hn::Compress(w, fresh), du, slot + n);
-    n += hn::CountTrue(du, fresh);
-  }
-  return n;
-}
-
-void GroupByRecord(const std::uint32_t* pixel, const std::uint32_t* slot, std::size_t pairs, std::size_t records,
-                   std::uint32_t* start, std::uint32_t* out) {
-  // (Each pass over the pairs costs a sixteenth of a scattered store per pair on AVX-512: it pays
-  // up to about eight records.)
-  constexpr std::size_t kFewRecords = 8;
-  if (records > kFewRecords) {
-    std::fill_n(start, records + 1, 0u);
-    for (std::size_t k = 0; k < pairs; ++k) ++start[slot[k] + 1];
-    for (std::size_t r = 0; r < records; ++r) start[r + 1] += start[r];
-    for (std::size_t k = 0; k < pairs; ++k) out[start[slot[k]]++] = pixel[k];  // moved to each record's end,
-    for (std::size_t r = records; r > 0; --r) start[r] = start[r - 1];          // then back
-    start[0] = 0;
-    return;
-  }
-  const hn::ScalableTag<std::uint32_t> du;
-  const std::size_t lanes = hn::Lanes(du);
-  std::size_t n = 0;
-  for (std::size_t r = 0; r < records; ++r) {
-    start[r] = std::uint32_t(n);
-    const auto mine = hn::Set(du, std::uint32_t(r));
-    for (std::size_t i = 0; i < pairs; i += lanes) {  // (both lists have room for a vector past their ends)
-      const auto picked = hn::And(hn::FirstN(du, pairs - i), hn::Eq(hn::LoadU(du, slot + i), mine));
-      hn::StoreU(hn::Compress(hn::LoadU(du, pixel + i), picked), du, out + n);
-      n += hn::CountTrue(du, picked);
-    }
-  }
-  start[records] = std::uint32_t(n);
-}
-
-// f(d), d the tag of a vector of exactly one pixel's samples (2, 4, 8 or 16, as far as the
-// target's vectors hold them: a 128-bit compare for 4 samples, not a masked 512-bit one): true;
-// false (f not called) where there is no such tag.
-template <class F>
-HWY_INLINE bool WithPixelSamples(int samples, const F& f) {
-  const auto exactly = [&](auto d) {
-    if (int(hn::Lanes(d)) != samples) return false;
-    f(d);
-    return true;
-  };
-  switch (samples) {
-    case 2: return exactly(hn::CappedTag<std::uint32_t, 2>());
-    case 4: return exactly(hn::CappedTag<std::uint32_t, 4>());
-    case 8: return exactly(hn::CappedTag<std::uint32_t, 8>());
-    case 16: return exactly(hn::CappedTag<std::uint32_t, 16>());
-    default: return false;
-  }
-}
-
-void KeepShown(const std::uint32_t* winners, int samples, const std::uint32_t* start, std::size_t records,
-               std::uint32_t* pixels, std::uint32_t* kept) {
-  // A pixel's samples compared as one vector (the tile has room for a vector past its last).
-  if (WithPixelSamples(samples, [&](auto du) {
-        for (std::size_t r = 0; r < records; ++r) {
-          const auto wanted = hn::Set(du, std::uint32_t(r));
-          std::uint32_t* list = pixels + start[r];
-          std::uint32_t n = 0;
-          for (std::uint32_t k = 0, count = start[r + 1] - start[r]; k < count; ++k) {
-            const std::uint32_t p = list[k];
-            list[n] = p;
-            n += !hn::AllFalse(du, hn::Eq(hn::LoadU(du, winners + std::size_t(p) * std::size_t(samples)), wanted));
-          }
-          kept[r] = n;
-        }
-      }))
-    return;
-  const VisibleSamples shown{samples, nullptr, const_cast<std::uint32_t*>(winners)};
-  for (std::size_t r = 0; r < records; ++r) {
-    std::uint32_t* list = pixels + start[r];
-    std::uint32_t n = 0;
-    for (std::uint32_t k = 0, count = start[r + 1] - start[r]; k < count; ++k) {
-      list[n] = list[k];
-      n += shown.shows(int(list[k]), std::uint32_t(r));
-    }
-    kept[r] = n;
-  }
-}
-
-// Each pair's RGBA8 word to the samples of its pixel that show its record (VisibleSamples::write),
-// a pixel's samples compared and stored as one vector.
-void WriteShown(const VisibleBatch& b, std::uint32_t* color, const std::uint32_t* winners, int samples) {
-  if (samples == 1) {
-    for (std::size_t k = 0; k < b.count; ++k) color[b.pixel[k]] = b.rgba[k];
-    return;
-  }
-  if (WithPixelSamples(samples, [&](auto du) {
-        for (std::size_t k = 0; k < b.count; ++k) {
-          const std::size_t at = std::size_t(b.pixel[k]) * std::size_t(samples);
-          const auto shows = hn::Eq(hn::LoadU(du, winners + at), hn::Set(du, b.slot[k]));
-          hn::BlendedStore(hn::Set(du, b.rgba[k]), shows, du, color + at);
-        }
-      }))
-    return;
-  const VisibleSamples out{samples, color, const_cast<std::uint32_t*>(winners)};
-  for (std::size_t k = 0; k < b.count; ++k) out.write(int(b.pixel[k]), b.slot[k], b.rgba[k]);
-}
-
-// What a texture of the layout does with its texels at the batch's pixels (withMapTexels,
-// normalFromMap): the base colour's tints the colour before lighting, or modulates it after
-// (GL_MODULATE: kept); glTF's maps scale the material's metallic and roughness, and emission, and
-// bend the front side's normal (two-sided lighting's back faces take its opposite).
-enum class TexelUse { kBaseColor, kMetallicRoughness, kEmissive, kNormal };
-
-// One texture's texels at the points GatherLanes kept, a texture at a time over the whole batch:
-// apart from the gathering, whose many values would crowd the registers the sampler's texel reads
-// and decode tables use.
-template <TexelUse kUse, class Planes = std::nullptr_t>
-HWY_INLINE void SampleBatchTexture(const VisibleLayout& layout, const Texture& texture, VisibleBatch& b,
-                                   const Planes* planes = nullptr) {
-  const hn::ScalableTag<Real> d;
-  using V = hn::VFromD<decltype(d)>;
-  const std::size_t lanes = hn::Lanes(d);
-  for (std::size_t i = 0; i < b.count; i += lanes) {
-    // Lanes past the last pixel sample (0, 0): the batch's room past it holds no points.
-    const auto inside = hn::FirstN(d, b.count - i);
-    UvLanes<V> at;
-    for (int c = 0; c < 2; ++c) {
-      at.uv[c] = hn::IfThenElseZero(inside, hn::Load(d, b.uv[c] + i));
-      at.dx[c] = hn::IfThenElseZero(inside, hn::Load(d, b.uvDx[c] + i));
-      at.dy[c] = hn::IfThenElseZero(inside, hn::Load(d, b.uvDy[c] + i));
-    }
-    V texel[4];
-    SampleLanes(d, texture, at.uv[0], at.uv[1], FootprintLanes(d, texture, at), texel, planes);
-    if constexpr (kUse == TexelUse::kBaseColor) {
-      for (int c = 0; c < 4; ++c) hn::Store(texel[c], d, b.texel[c] + i);
-      if (layout.baseTexel)
-        for (int c = 0; c < 4; ++c) hn::Store(hn::Load(d, b.color[c] + i) * texel[c], d, b.color[c] + i);
-    } else if constexpr (kUse == TexelUse::kMetallicRoughness) {
-      hn::Store(hn::Set(d, layout.metallic) * texel[2], d, b.metallic + i);
-      hn::Store(hn::Set(d, layout.roughness) * texel[1], d, b.roughness + i);
-    } else if constexpr (kUse == TexelUse::kEmissive) {
-      for (int c = 0; c < 3; ++c) hn::Store(hn::Set(d, layout.emission[c]) * texel[c], d, b.emission[c] + i);
-    } else {
-      const auto load3 = [&](const Real (&plane)[3][VisibleBatch::kRoom]) {
-        return Vec3L<V>{hn::Load(d, plane[0] + i), hn::Load(d, plane[1] + i), hn::Load(d, plane[2] + i)};
-      };
-      const Vec3L<V> bent =
-          NormalFromMapLanes(d, load3(b.normal), load3(b.dPdu), load3(b.dPdv), texel, layout.maps->normalScale);
-      const V out[3] = {bent.x, bent.y, bent.z};
-      const auto negate = hn::Load(d, b.flip + i) != hn::Zero(d);
-      for (int c = 0; c < 3; ++c) hn::Store(hn::IfThenElse(negate, hn::Neg(out[c]), out[c]), d, b.normal[c] + i);
-    }
-  }
-}
-
-#if (HWY_TARGET == HWY_AVX3 || HWY_TARGET == HWY_AVX3_DL) && !ILLUM_USE_DOUBLE
-// Compiled for VBMI, with the texture's decode byte planes loaded once for the batch and their
-// lookups inlined (flatten: a function compiled for VBMI can be inlined only into another such).
-template <TexelUse kUse>
-__attribute__((target(HWY_TARGET_STR ",avx512vbmi"), flatten)) void SampleBatchTextureVbmi(
-    const VisibleLayout& layout, const Texture& texture, VisibleBatch& b) {
-  const ColorBytePlanes planes(texture.colorTableBytes());
-  SampleBatchTexture<kUse>(layout, texture, b, &planes);
-}
-#endif
-
-template <TexelUse kUse>
-void SampleBatchTextureOnCpu(const VisibleLayout& layout, const Texture& texture, VisibleBatch& b) {
-#if (HWY_TARGET == HWY_AVX3 || HWY_TARGET == HWY_AVX3_DL) && !ILLUM_USE_DOUBLE
-  if (texelByteLookups()) return SampleBatchTextureVbmi<kUse>(layout, texture, b);
-#endif
-  SampleBatchTexture<kUse>(layout, texture, b);
-}
-
-void SampleBatchTexels(const VisibleLayout& layout, VisibleBatch& b) {
-  if (layout.texture) SampleBatchTextureOnCpu<TexelUse::kBaseColor>(layout, *layout.texture, b);
-  if (const MaterialMaps* maps = layout.maps) {
-    if (maps->metallicRoughness && layout.physical)
-      SampleBatchTextureOnCpu<TexelUse::kMetallicRoughness>(layout, *maps->metallicRoughness, b);
-    if (maps->emissive) SampleBatchTextureOnCpu<TexelUse::kEmissive>(layout, *maps->emissive, b);
-    if (maps->normal && layout.shading == Shading::Phong)  // (maps are drawn lit per pixel: Phong keeps normals)
-      SampleBatchTextureOnCpu<TexelUse::kNormal>(layout, *maps->normal, b);
-  }
-}
-
-void FinishVisible(const VisibleLayout& layout, VisibleBatch& b) {
-  const hn::ScalableTag<Real> d;
-  using V = hn::VFromD<decltype(d)>;
-  const bool modulate = layout.texture && !layout.baseTexel;
-  for (std::size_t i = 0; i < b.count; i += hn::Lanes(d)) {
-    V c[4];
-    for (int k = 0; k < 4; ++k) {
-      c[k] = hn::Load(d, b.lit[k] + i);
-      if (modulate) c[k] = c[k] * hn::Load(d, b.texel[k] + i);  // GL_MODULATE
-    }
-#if !ILLUM_USE_DOUBLE
-    hn::Store(PackUnorm8(d, c[0], c[1], c[2], c[3]), hn::Rebind<std::uint32_t, decltype(d)>(), b.rgba + i);
-#else
-    HWY_ALIGN Real out[4][hn::MaxLanes(d)];
-    for (int k = 0; k < 4; ++k) hn::Store(c[k], d, out[k]);
-    for (std::size_t k = 0; k < hn::Lanes(d) && i + k < b.count; ++k)
-      b.rgba[i + k] = packUnorm8(Color4(out[0][k], out[1][k], out[2][k], out[3][k]));
-#endif
-  }
-}
-
 }  // namespace illum::HWY_NAMESPACE
 HWY_AFTER_NAMESPACE();
 
@@ -677,12 +359,6 @@ namespace illum {
 
 HWY_EXPORT(GatherShown);
 HWY_EXPORT(GatherShownGroup);
-HWY_EXPORT(SampleBatchTexels);
-HWY_EXPORT(FinishVisible);
-HWY_EXPORT(ShownPairs);
-HWY_EXPORT(WriteShown);
-HWY_EXPORT(GroupByRecord);
-HWY_EXPORT(KeepShown);
 
 void gatherShown(const VisibleLayout& layout, const ShownRecord& record, const PixelRect& rect,
                  const std::uint32_t* pixels, std::size_t count, VisibleBatch& batch) {
@@ -692,28 +368,6 @@ void gatherShown(const VisibleLayout& layout, const ShownRecord& record, const P
 void gatherShownGroup(const VisibleLayout& layout, const PendingRecords& group, const PixelRect& rect,
                       VisibleBatch& batch) {
   HWY_DYNAMIC_DISPATCH(GatherShownGroup)(layout, group, rect, batch);
-}
-
-void sampleBatchTexels(const VisibleLayout& layout, VisibleBatch& batch) {
-  HWY_DYNAMIC_DISPATCH(SampleBatchTexels)(layout, batch);
-}
-
-void finishVisible(const VisibleLayout& layout, VisibleBatch& batch) {
-  HWY_DYNAMIC_DISPATCH(FinishVisible)(layout, batch);
-}
-
-std::size_t shownPairs(const std::uint32_t* winners, int samples, std::uint32_t* pixel, std::uint32_t* slot) {
-  return HWY_DYNAMIC_DISPATCH(ShownPairs)(winners, samples, pixel, slot);
-}
-
-void keepShown(const std::uint32_t* winners, int samples, const std::uint32_t* start, std::size_t records,
-               std::uint32_t* pixels, std::uint32_t* kept) {
-  HWY_DYNAMIC_DISPATCH(KeepShown)(winners, samples, start, records, pixels, kept);
-}
-
-void groupByRecord(const std::uint32_t* pixel, const std::uint32_t* slot, std::size_t pairs, std::size_t records,
-                   std::uint32_t* start, std::uint32_t* out) {
-  HWY_DYNAMIC_DISPATCH(GroupByRecord)(pixel, slot, pairs, records, start, out);
 }
 
 namespace {
@@ -877,7 +531,7 @@ void VisibleShader::flush() {
     }
   } else {
     finishVisible(layout_, b_);
-    HWY_DYNAMIC_DISPATCH(WriteShown)(b_, out_.color, out_.winners, out_.count);
+    writeShown(b_, out_.color, out_.winners, out_.count);
   }
   b_.count = 0;
 }

@@ -189,6 +189,9 @@ void groupByRecord(const std::uint32_t* pixel, const std::uint32_t* slot, std::s
 // place: kept[r] of them.
 void keepShown(const std::uint32_t* winners, int samples, const std::uint32_t* start, std::size_t records,
                std::uint32_t* pixels, std::uint32_t* kept);
+// Each pair's RGBA8 word of `batch` to the samples of its pixel that show its record
+// (VisibleSamples::write; `samples` a pixel in `color` and `winners`).
+void writeShown(const VisibleBatch& batch, std::uint32_t* color, const std::uint32_t* winners, int samples);
 // The pixels each record shows in a tile, record by record (a counting sort of the pixels by the
 // records their samples show, or, multisampled, the pixels each record's coverage listed),
 // reused from tile to tile.
