@@ -278,6 +278,9 @@ HWY_INLINE void GatherLanes(const VisibleLayout& layout, R& rec, const std::uint
 bool SplitFits(const ShownRecord& rec, const PixelRect& rect) {
 #if HWY_TARGET != HWY_SCALAR && !ILLUM_USE_DOUBLE
   const TriangleSetup& t = *rec.setup;
+  // A float-exact triangle's (most of a dense mesh's) every edge value and step across its
+  // bounds is at most 2^24 (setup.h), far inside.
+  if (t.floatExact) return true;
   const int minX = std::max(t.minX, rect.minX), maxX = std::min(t.maxX, rect.maxX);
   const int minY = std::max(t.minY, rect.minY), maxY = std::min(t.maxY, rect.maxY);
   const std::int64_t half = kSubpixelOne / 2, limit = (std::int64_t(1) << 31) - 4 * kSubpixelOne;
