@@ -828,12 +828,18 @@ constexpr SetBitPlaces makeSetBitPlaces() {
 }
 alignas(16) inline constexpr SetBitPlaces kSetBitPlaces = makeSetBitPlaces();
 
-// Bit k of the result: bit k·samples of `bits` (a pixel's first sample), for the `pixels` pixels.
-HWY_INLINE std::uint32_t FirstSampleBits(std::uint64_t bits, int samples, int pixels) {
+// Bit k of the result: bit k·samples of `bits` (a pixel's first sample), for the `pixels` pixels;
+// `firsts` has those bits set (FirstSamples).
+HWY_INLINE std::uint64_t FirstSamples(int samples) {
+  std::uint64_t firsts = 0;
+  for (int k = 0; k < 64; k += samples) firsts |= std::uint64_t(1) << k;
+  return firsts;
+}
+HWY_INLINE std::uint32_t FirstSampleBits(std::uint64_t bits, [[maybe_unused]] std::uint64_t firsts, int samples,
+                                         int pixels) {
 #if HWY_TARGET == HWY_AVX2 || HWY_TARGET == HWY_AVX3 || HWY_TARGET == HWY_AVX3_DL
-  std::uint64_t firsts = 0;  // (BMI2, part of these targets: one instruction)
-  for (int k = 0; k < pixels; ++k) firsts |= std::uint64_t(1) << (k * samples);
-  return std::uint32_t(_pext_u64(bits, firsts));
+  (void)samples, (void)pixels;
+  return std::uint32_t(_pext_u64(bits, firsts));  // (BMI2, part of these targets: one instruction)
 #else
   std::uint32_t out = 0;
   for (int k = 0; k < pixels; ++k) out |= std::uint32_t(bits >> (k * samples) & 1) << k;
@@ -851,6 +857,8 @@ std::size_t RasterizeSamplesListed(const TriangleSetup& t, const PixelRect& tile
   const int samples = planes.count, shift = __builtin_ctz(unsigned(samples));  // (a power of two)
   std::uint32_t* const begin = listed;
   std::uint32_t* end = listed;
+  // (Every 64 bits' pixel firsts: a vector's mask has no bits past its lanes.)
+  [[maybe_unused]] const std::uint64_t firsts = FirstSamples(samples);
   const std::size_t passed = SamplesPass<true>(t, tile, planes, [&](std::size_t at, auto pass, auto l0, auto, auto) {
     const hn::DFromV<decltype(l0)> dr;
     const hn::Rebind<std::uint32_t, decltype(dr)> du;
@@ -869,7 +877,7 @@ std::size_t RasterizeSamplesListed(const TriangleSetup& t, const PixelRect& tile
         if (samples >= 4) bits |= bits >> 2;
         if (samples >= 8) bits |= bits >> 4;
         const int pixels = lanes / samples;
-        const std::uint32_t any = FirstSampleBits(bits, samples, pixels);
+        const std::uint32_t any = FirstSampleBits(bits, firsts, samples, pixels);
         const hn::CappedTag<std::uint32_t, 4> d4;  // (the list has room for a vector past its end)
         for (int k = 0; k < pixels; k += 4) {
           const unsigned four = (any >> k) & 15u;
