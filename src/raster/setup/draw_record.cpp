@@ -181,6 +181,15 @@ std::size_t setupTriangles(const FrameContext& frame, const Object& object, std:
     const std::size_t group = std::size_t(tinyGroupCapacity());
     const auto recordsIn = [&](int tile) { return binning->bins.recordsIn(tile); };
     constexpr int kMostOneByOne = 5;  // at most 2^5 − 1 groups one by one between tries
+    // A dense mesh's vertex array is far larger than the caches (and the tiny triangles' fragments,
+    // written meanwhile, push it out): each group's setup gathers its vertices' first lines
+    // (ShadedVertex) at once and waits for every miss. The lines of the group kGroupsAhead on
+    // are asked for now. Measured, spheres_1m_8lights_gouraud at 1 thread: 4 samples 97 → 86 ms,
+    // 8 samples 144 → 132 ms, 1 sample 50 → 50 ms.
+    constexpr std::size_t kGroupsAhead = 2;
+    const auto prefetchVertices = [&](std::size_t from, std::size_t to) {
+      for (std::size_t k = 3 * from; k < 3 * to; ++k) __builtin_prefetch(vertices.data() + indices[k]);
+    };
     int oneByOneGroups = 0, fewInARow = 0;
     for (std::size_t t0 = first; t0 < last; t0 += group) {
       const int count = int(std::min(group, last - t0));
@@ -192,6 +201,7 @@ std::size_t setupTriangles(const FrameContext& frame, const Object& object, std:
         continue;
       }
       grouping = true;
+      prefetchVertices(t0 + kGroupsAhead * group, std::min(last, t0 + (kGroupsAhead + 1) * group));
       TinyGroupSource at = source;
       at.indices = indices.data() + 3 * t0;
       std::uint32_t fast = 0, empty = 0;
