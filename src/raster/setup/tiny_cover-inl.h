@@ -78,6 +78,7 @@ std::size_t CoverGroups(const TinyBatchLanes& b, std::uint32_t members, std::uin
   constexpr std::uint32_t kOffsetMask = (1u << kOffsetBits) - 1;
   static_assert(kTileSize == 1 << kTileShift && (kTinyPixels - 1) * (kTileSize + 1) < 1 << 12);
   const int sampleShift = __builtin_ctz(unsigned(b.samples));
+  constexpr int kFewSlots = 16;
   const VF zero = hn::Zero(df);
   std::size_t n = 0;
   for (int g = 0; g < TinyBatchLanes::kCapacity; g += group) {
@@ -96,15 +97,22 @@ std::size_t CoverGroups(const TinyBatchLanes& b, std::uint32_t members, std::uin
         for (int s = 0; s < b.samples; ++s) {
           const std::uint32_t base = std::uint32_t(j) << kOffsetBits | b.sampleBase[s][g + j];
           const std::uint32_t* offsets = kTinySampleRows.offset[b.sampleWidth[s][g + j]];
-          for (int k = 0; k < kTinyPixels; ++k) slot[slots + k] = base + offsets[k];
-          slots += b.sampleCount[s][g + j];
+          const int count = b.sampleCount[s][g + j];
+          // A sample's box is mostly a few pixels: the rest of the row only where it has more.
+          for (int k = 0; k < kFewSlots; ++k) slot[slots + k] = base + offsets[k];
+          if (count > kFewSlots)
+            for (int k = kFewSlots; k < kTinyPixels; ++k) slot[slots + k] = base + offsets[k];
+          slots += count;
         }
         slotsOf[j] = slots - before;
       } else {
         const std::uint32_t* offsets = kTinyLanes.offset[b.width[g + j]];
-        for (int k = 0; k < kTinyPixels; ++k)  // a whole row of the table: no branch per pixel
-          slot[slots + k] = std::uint32_t(j) << kOffsetBits | offsets[k];
-        slots += b.count[g + j];
+        const int count = b.count[g + j];
+        // Whole rows of the table, no branch per pixel (the rest only where the bounds have more).
+        for (int k = 0; k < kFewSlots; ++k) slot[slots + k] = std::uint32_t(j) << kOffsetBits | offsets[k];
+        if (count > kFewSlots)
+          for (int k = kFewSlots; k < kTinyPixels; ++k) slot[slots + k] = std::uint32_t(j) << kOffsetBits | offsets[k];
+        slots += count;
       }
     }
     for (int k = slots; k < slots + group; ++k) slot[k] = 0;  // the rest
