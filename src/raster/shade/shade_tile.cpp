@@ -136,10 +136,13 @@ std::size_t drawMultisampledTile(const DrawTarget& target, std::span<const DrawR
   ShownLists& lists = scratch.shown;
   lists.start.resize(records.size() + 1);
   std::size_t listed = 0;
+  // (The depth bounds follow the tiny pixels only while a record may still ask them: a dense
+  // mesh's tiles draw most of theirs after the last record.)
+  bool recordsAfter = !records.empty();
   const auto writeTiny = [&](std::uint32_t at, const TinyFragment& f) {
     tiles.color[at] = f.color;
     if (anyWinner) winners[at] = kNoWinner;
-    bounds.drawnAt(at);
+    if (recordsAfter) bounds.drawnAt(at);
   };
   TinyDrawer<TinyFragment, decltype(writeTiny)> tinyFragments(tiny.fragments, tiles.depth, writeTiny);
   [[maybe_unused]] VertexColors vertexColors;  // (the double build has no Colored route)
@@ -169,6 +172,7 @@ std::size_t drawMultisampledTile(const DrawTarget& target, std::span<const DrawR
     fragments += passed;
   }
   lists.start[records.size()] = std::uint32_t(listed);
+  recordsAfter = false;
   fragments += tinyFragments.drawUpTo(records.size());
   if (!anyWinner) return fragments;
   if (listing) {
