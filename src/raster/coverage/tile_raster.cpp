@@ -751,14 +751,34 @@ HWY_INLINE std::size_t SamplesPassIn(D d, const TriangleSetup& t, const PixelRec
           const hn::Rebind<std::uint32_t, D> du;
           const int from = first + (x - first) / lanes * lanes;  // (x − first is a multiple of pixels)
           if (from != shadedFrom) {
-            // Each pixel's exact edge values (the same integers centreAt sums, so the same bits).
+            // Each pixel's exact edge values (the same integers centreAt sums, so the same bits),
+            // in half the lanes where the row's pixels from `from` on fit them (a small
+            // triangle's rows: half the work, each lane's colour the same bits).
             shadedFrom = from;
-            const V dx = IotaFrom(d, T(from - minX));
-            const auto at = [&](int i) {
-              if constexpr (kSplit) return toReal((rowHigh[i] + dx * stepX[i]) + Elow[i]) * invArea;
-              else return toReal(rowHigh[i] + dx * stepX[i]) * invArea;
+            const auto shadeIn = [&](auto dn) {
+              const hn::Rebind<Real, decltype(dn)> drn;
+              const auto dx = IotaFrom(dn, T(from - minX));
+              const auto narrow = [&](V v) {  // (a broadcast: its lower half is the same value)
+                if constexpr (std::is_same_v<decltype(dn), D>) return v;
+                else return hn::LowerHalf(dn, v);
+              };
+              const auto invAreaN = hn::Set(drn, t.invArea);
+              const auto at = [&](int i) {
+                const auto E = narrow(rowHigh[i]) + dx * narrow(stepX[i]);
+                if constexpr (kSplit) return (E + narrow(Elow[i])) * invAreaN;
+                else return hn::DemoteTo(drn, E) * invAreaN;
+              };
+              return shade(at(0), at(1), at(2));
             };
-            shaded = shade(at(0), at(1), at(2));
+#if HWY_TARGET != HWY_SCALAR
+            if constexpr (hn::MaxLanes(D()) >= 8) {
+              if (last - from < lanes / 2) shaded = hn::ZeroExtendVector(du, shadeIn(hn::Half<D>()));
+              else shaded = shadeIn(d);
+            } else
+#endif
+            {
+              shaded = shadeIn(d);
+            }
           }
           const auto lanesPixel = hn::Add(hn::Set(du, std::uint32_t(x - from)), hn::Load(du, pixelIndex + k));
           write(at, pass, hn::TableLookupLanes(shaded, hn::IndicesFromVec(du, lanesPixel)));
