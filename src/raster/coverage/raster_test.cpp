@@ -12,6 +12,7 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <vector>
 
 namespace illum {
 namespace {
@@ -294,9 +295,12 @@ TEST(RowSpans, KeepEveryPixelWithACoveredSampleAndNarrowTheRest) {
       TriangleSetup t;
       if (!setupTriangle(atWindow(x0, y0), atWindow(x1, y1), atWindow(x2, y2), kW, kH, t)) continue;
       const RowSpans spans(t, pattern, t.minX, t.minY);
+      const int rows = t.maxY - t.minY + 1;
+      std::vector<std::int32_t> firsts(std::size_t(rows + kRowSpansRoom)), lasts(firsts.size());
+      narrowRows(spans, t, rows, t.maxX, firsts.data(), lasts.data());
       for (int y = t.minY; y <= t.maxY; ++y) {
-        int first = t.minX, last = t.maxX;
-        const bool any = spans.narrow(t, y, first, last);
+        const int first = firsts[std::size_t(y - t.minY)], last = lasts[std::size_t(y - t.minY)];
+        const bool any = first <= last;
         for (int x = t.minX; x <= t.maxX; ++x) {
           const std::int64_t fx = std::int64_t(x) * kSubpixelOne + kSubpixelOne / 2;
           const std::int64_t fy = std::int64_t(y) * kSubpixelOne + kSubpixelOne / 2;

@@ -20,6 +20,10 @@ namespace illum {
 // bound is widened by a thousandth of a pixel, far more than double's error on quotients below
 // 2^32 in magnitude, so a pixel is at worst tested needlessly (exactly, by the coverage kernel),
 // never left out.
+//
+// The bounds of all the rows a triangle's bounds hold are worked out at once (narrowRows, a vector
+// of rows at a time): row by row, each edge's three branches and scalar rounding cost more than
+// the row's own tests at 4 samples.
 struct RowSpans {
   int minX, minY;        // the bounds' first pixel, where the quotients are taken
   std::int64_t need[3];  // −(reach + bias) − E at (minX, minY): what A·dx + B·dy must reach
@@ -42,25 +46,13 @@ struct RowSpans {
       rising[i] = e.a > 0;
     }
   }
-  // Narrows [first, last] (pixels of row y, first = minX); false when no pixel is left.
-  bool narrow(const TriangleSetup& t, int y, int& first, int& last) const {
-    constexpr double kSlack = 1e-3, kFar = 32768;  // a thousandth of a pixel; beyond any tile
-    const int dy = y - minY;
-    for (int i = 0; i < 3; ++i) {
-      if (t.edge[i].a == 0) {  // E is the same along the row: all of it or none
-        if (need[i] - B[i] * dy > 0) return false;
-        continue;
-      }
-      const double q = q0[i] + dq[i] * double(dy);  // the bound, in pixels from minX
-      if (!(q > -kFar && q < kFar)) {               // the whole row, or none of it
-        if (rising[i] ? q >= kFar : q <= -kFar) return false;
-        continue;
-      }
-      if (rising[i]) first = std::max(first, minX + int(std::ceil(q - kSlack)));
-      else last = std::min(last, minX + int(std::floor(q + kSlack)));
-    }
-    return first <= last;
-  }
 };
+
+// Narrows [minX, maxX] for each of `count` rows from the spans' first (minY): row r's pixels
+// first[r] .. last[r], first[r] > last[r] where none is left. first and last have room for
+// kRowSpansRoom words past `count` (a vector's rows are stored whole). (tile_raster.cpp, SIMD.)
+constexpr int kRowSpansRoom = 16;
+void narrowRows(const RowSpans& spans, const TriangleSetup& t, int count, int maxX, std::int32_t* first,
+                std::int32_t* last);
 
 }  // namespace illum

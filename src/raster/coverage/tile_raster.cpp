@@ -77,7 +77,6 @@ std::size_t rasterizeSamples(const TriangleSetup& t, const PixelRect& tile, cons
 #include <cstddef>
 #include <cstring>
 #include <limits>
-#include <optional>
 #include <type_traits>
 
 HWY_BEFORE_NAMESPACE();
@@ -595,6 +594,36 @@ std::size_t RasterizeSurface(const TriangleSetup& t, const PixelRect& tile, Real
 
 // ---- Multisampling in one pass ----
 
+// narrowRows (row_span.h), a vector of rows at a time in double lanes. Each edge's bound is the
+// quotient clamped to ±kFar pixels (beyond any tile), so that a row the edge leaves whole or empty
+// takes a bound that keeps all of it or none, as the quotient's own side of the row does.
+HWY_INLINE void NarrowRows(const RowSpans& s, const TriangleSetup& t, int count, int maxX, std::int32_t* first,
+                           std::int32_t* last) {
+  const hn::ScalableTag<double> dd;
+  const hn::Rebind<std::int32_t, decltype(dd)> di;
+  constexpr double kSlack = 1e-3, kFar = 32768;  // a thousandth of a pixel
+  static_assert(hn::MaxLanes(dd) <= kRowSpansRoom);
+  const auto far = hn::Set(dd, kFar), near = hn::Set(dd, -kFar), slack = hn::Set(dd, kSlack);
+  const auto left = hn::Set(dd, double(s.minX)), right = hn::Set(dd, double(maxX)), none = hn::Set(dd, double(maxX + 1));
+  for (int r = 0; r < count; r += int(hn::Lanes(dd))) {
+    const auto dy = hn::PromoteTo(dd, IotaFrom(di, r));
+    auto lo = left, hi = right;
+    for (int i = 0; i < 3; ++i) {
+      if (t.edge[i].a == 0) {  // E is the same along the row: all of it or none
+        const auto out = hn::Set(dd, double(s.need[i])) - hn::Set(dd, double(s.B[i])) * dy > hn::Zero(dd);
+        lo = hn::IfThenElse(out, none, lo);  // (exact: integers below 2^53)
+        continue;
+      }
+      const auto q = hn::Min(hn::Max(hn::MulAdd(hn::Set(dd, s.dq[i]), dy, hn::Set(dd, s.q0[i])), near), far);
+      if (s.rising[i]) lo = hn::Max(lo, left + hn::Ceil(q - slack));
+      else hi = hn::Min(hi, left + hn::Floor(q + slack));
+    }
+    hn::StoreU(hn::DemoteTo(di, lo), di, first + r);
+    hn::StoreU(hn::DemoteTo(di, hi), di, last + r);
+  }
+}
+
+
 // The depth pass at every sample of the triangle's pixels in `tile`. A vector's lanes are a row's
 // samples in the tile's order (SamplePlanes: pixel by pixel, each pixel's samples side by side),
 // so whole vectors load and store; each row only over the pixels that may have a sample inside
@@ -679,8 +708,10 @@ HWY_INLINE std::size_t SamplesPassIn(D d, const TriangleSetup& t, const PixelRec
   // worked out only for such wide bounds (their six divisions were a tenth of a small triangle's
   // pass).
   const bool narrowed = maxX - minX + 1 > 2 * pixels;
-  std::optional<RowSpans> spans;
-  if (narrowed) spans.emplace(t, std::span(planes.offsets, std::size_t(samples)), minX, minY);
+  std::int32_t rowFirst[kTileSize + kRowSpansRoom], rowLast[kTileSize + kRowSpansRoom];
+  if (narrowed)
+    NarrowRows(RowSpans(t, std::span(planes.offsets, std::size_t(samples)), minX, minY), t, maxY - minY + 1, maxX,
+               rowFirst, rowLast);
   // Every pixel centre's edge value differs from the bounds' first one by a multiple of 256
   // (a·256·dx + b·256·dy), so the rest r of that first value is every centre's, and the multiples of
   // 256 step exactly (multiples of 256 below 2^32 in float lanes; integers in double ones): a row's
@@ -706,7 +737,10 @@ HWY_INLINE std::size_t SamplesPassIn(D d, const TriangleSetup& t, const PixelRec
     if (y != minY)
       for (int i = 0; i < 3; ++i) rowHigh[i] = rowHigh[i] + stepY[i];
     int first = minX, last = maxX;
-    if (narrowed && !spans->narrow(t, y, first, last)) continue;
+    if (narrowed) {
+      first = rowFirst[y - minY], last = rowLast[y - minY];
+      if (first > last) continue;
+    }
     const int row = (y - tile.minY) * kTileSize - tile.minX;  // tile-local index of (0, y)
     // The edge values at the row's first pixel (each group of pixels on adds a·256·pixels to the
     // multiples of 256), and each vector's.
@@ -952,6 +986,12 @@ HWY_EXPORT(CoverTinySurface);
 HWY_EXPORT(RasterizeSamples);
 HWY_EXPORT(RasterizeSamplesListed);
 HWY_EXPORT(RasterizeSamplesColored);
+HWY_EXPORT(NarrowRows);
+
+void narrowRows(const RowSpans& spans, const TriangleSetup& t, int count, int maxX, std::int32_t* first,
+                std::int32_t* last) {
+  HWY_DYNAMIC_DISPATCH(NarrowRows)(spans, t, count, maxX, first, last);
+}
 
 std::size_t rasterizeSamples(const TriangleSetup& t, const PixelRect& tile, const SamplePlanes& planes,
                              std::uint32_t slot) {
