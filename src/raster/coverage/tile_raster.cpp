@@ -631,40 +631,41 @@ HWY_INLINE void NarrowRows(const RowSpans& s, const TriangleSetup& t, int count,
 // vector's first sample in the tile, each lane's mask and its pixel centre's barycentrics. A
 // sample's edge value is its pixel centre's plus a·ox + b·oy, an integer as exact as the
 // centre's, so coverage, barycentrics and depth come out as a whole pass at that sample finds them
-// (DepthPass of atSample). The edge values are kept in double lanes, or (kSplit) in float lanes as
-// a multiple of 256 plus a remainder, each exact while the values stay below 2^32 (as
-// DepthPassTwoRows keeps them): their sum rounds as the integer's conversion does, and its sign is
-// the integer's. kEveryVector: write is called for every vector, also under an empty mask, where
+// (DepthPass of atSample). The edge values are kept in double lanes, or in int32 lanes where every
+// one of them (and every part it is summed from) stays below 2^31 (SamplesIntExact): the lanes'
+// conversion to Real rounds as the integer's does, and the test is the integer's. kEveryVector: write is called for every vector, also under an empty mask, where
 // it must change nothing (no branch on whether a sample passed).
 // With `shade` (not null), write(at, pass, color) instead: color the lanes' pixels' RGBA8 words,
 // shade(l0, l1, l2) of their centres' barycentrics worked out for as many pixels of a row as a
 // vector has lanes at once (the first time one of them has a sample passing), not for each vector
 // of samples, which holds a few pixels (or part of one) each.
-template <bool kSplit, bool kEveryVector, class D, class Write, class Shade = std::nullptr_t>
+template <bool kEveryVector, class D, class Write, class Shade = std::nullptr_t>
 HWY_INLINE std::size_t SamplesPassIn(D d, const TriangleSetup& t, const PixelRect& tile, const SamplePlanes& planes,
                                      const Write& write, const Shade& shade = nullptr) {
   constexpr bool kShade = !std::is_same_v<Shade, std::nullptr_t>;
   const int minX = std::max(t.minX, tile.minX), maxX = std::min(t.maxX, tile.maxX);
   const int minY = std::max(t.minY, tile.minY), maxY = std::min(t.maxY, tile.maxY);
-  using T = hn::TFromD<D>;  // the edge values' lanes: float (split) or double
+  using T = hn::TFromD<D>;  // the edge values' lanes: int32 or double
+  constexpr bool kInt = std::is_integral_v<T>;
   const hn::Rebind<Real, D> dr;
   const int samples = planes.count, lanes = int(hn::Lanes(d));
   // A vector holds whole pixels (lanes ≥ samples) or a pixel spans whole vectors: the tables of
   // lane offsets cover one such group, `pixels` pixels in `vectors` vectors.
   const int group = std::max(lanes, samples), pixels = std::max(1, lanes / samples), vectors = group / lanes;
   // The tables of a group's lanes (lane k: sample k mod samples of pixel k / samples): each edge
-  // value's offset from the pixel's first, k/samples·256a + a·ox + b·oy, split (kSplit) into a
-  // multiple of 256 and the rest. The samples lie on sixteenths of a pixel (ox = 16·x'), so
-  // t = a·x' + b·y' is an int32 (|a|, |b| < 2^24) and a·ox + b·oy = 16t, whose rest is 16·(t mod 16):
-  // whole vectors of integers, converted exactly.
-  HWY_ALIGN T high[3][2 * kSamplesMax], low[3][2 * kSamplesMax], centre[3][2 * kSamplesMax];
+  // value's offset from the pixel's first, k/samples·256a + a·ox + b·oy, and from the pixel's
+  // centre, k/samples·256a. The samples lie on sixteenths of a pixel (ox = 16·x'), so
+  // t = a·x' + b·y' is an int32 (|a|, |b| < 2^24) and a·ox + b·oy = 16t. (Int32 lanes wrap as
+  // integers modulo 2^32 do: a sum or product whose value fits comes out exact, whatever its parts
+  // did.)
+  HWY_ALIGN T high[3][2 * kSamplesMax], centre[3][2 * kSamplesMax];
   HWY_ALIGN Real pixelOf[2 * kSamplesMax];
   HWY_ALIGN std::uint32_t pixelIndex[2 * kSamplesMax];  // pixelOf as an index
   {
     const hn::Rebind<std::int32_t, D> di;
     const int shift = __builtin_ctz(unsigned(samples));  // samples is a power of two
     const auto toT = [&](auto i) {
-      if constexpr (sizeof(T) == 4) return hn::ConvertTo(d, i);
+      if constexpr (kInt) return i;
       else return hn::PromoteTo(d, i);
     };
     const auto sixteen = hn::Set(d, T(16));
@@ -678,28 +679,32 @@ HWY_INLINE std::size_t SamplesPassIn(D d, const TriangleSetup& t, const PixelRec
         const auto s = x * hn::Set(di, t.edge[i].a) + y * hn::Set(di, t.edge[i].b);
         const auto along = pixelT * hn::Set(d, T(std::int64_t(t.edge[i].a) * kSubpixelOne));
         hn::Store(along, d, centre[i] + k);
-        if constexpr (kSplit) {
-          hn::Store(toT(hn::And(s, hn::Set(di, ~15))) * sixteen + along, d, high[i] + k);
-          hn::Store(toT(hn::And(s, hn::Set(di, 15))) * sixteen, d, low[i] + k);
-        } else {
-          hn::Store(toT(s) * sixteen + along, d, high[i] + k);
-          hn::Store(hn::Zero(d), d, low[i] + k);
-        }
+        hn::Store(toT(s) * sixteen + along, d, high[i] + k);
       }
     }
   }
   using V = hn::VFromD<D>;
   // At most kSamplesMax samples a pixel: the vectors a group of pixels takes.
   constexpr int kRowVectors = std::max(1, kSamplesMax / int(hn::MaxLanes(D())));
-  V bias[3];
-  for (int i = 0; i < 3; ++i) bias[i] = hn::Set(d, T(t.edge[i].bias));
-  const auto toReal = [&](V v) {
-    if constexpr (sizeof(T) == sizeof(Real)) return v;
-    else return hn::DemoteTo(dr, v);  // rounds as int64 → float does (exact below 2^53 in double)
+  // E + bias ≥ 0 as E > −bias − 1 (integers, exact either way).
+  V below[3];
+  for (int i = 0; i < 3; ++i) below[i] = hn::Set(d, T(-std::int64_t(t.edge[i].bias) - 1));
+  // Each to Real as the integer's conversion rounds (in double lanes, exact below 2^53).
+  const auto toRealIn = [](auto dn, auto v) {
+    if constexpr (kInt) return hn::ConvertTo(dn, v);
+    else if constexpr (sizeof(T) == sizeof(Real)) return v;
+    else return hn::DemoteTo(dn, v);
+  };
+  const auto toReal = [&](V v) { return toRealIn(dr, v); };
+  const auto insideEdges = [&](const V (&E)[3]) {
+    if constexpr (kInt) return hn::RebindMask(dr, hn::And(hn::And(E[0] > below[0], E[1] > below[1]), E[2] > below[2]));
+    else {  // (E − below ≥ 1 where inside: positive in Real too)
+      const auto zero = hn::Zero(dr);
+      return hn::And(hn::And(toReal(E[0] - below[0]) > zero, toReal(E[1] - below[1]) > zero), toReal(E[2] - below[2]) > zero);
+    }
   };
   const auto invArea = hn::Set(dr, t.invArea);
   const auto z0 = hn::Set(dr, t.z[0]), z1 = hn::Set(dr, t.z[1]), z2 = hn::Set(dr, t.z[2]);
-  const auto zero = hn::Zero(dr);
   const std::int64_t half = kSubpixelOne / 2;
   // Narrowing a row costs about what testing two vectors of its samples does: a row of at most
   // two vectors is tested whole (the tests are exact either way; narrowing only skips vectors).
@@ -712,30 +717,21 @@ HWY_INLINE std::size_t SamplesPassIn(D d, const TriangleSetup& t, const PixelRec
   if (narrowed)
     NarrowRows(RowSpans(t, std::span(planes.offsets, std::size_t(samples)), minX, minY), t, maxY - minY + 1, maxX,
                rowFirst, rowLast);
-  // Every pixel centre's edge value differs from the bounds' first one by a multiple of 256
-  // (a·256·dx + b·256·dy), so the rest r of that first value is every centre's, and the multiples of
-  // 256 step exactly (multiples of 256 below 2^32 in float lanes; integers in double ones): a row's
-  // first value is the last row's plus b·256, a pixel's the row's plus a·256·dx, as the integers'
-  // conversions would give them.
-  V rowHigh[3], stepY[3], stepX[3], step[3], Elow[3], rest[3][kRowVectors], restBias[3][kRowVectors];
+  // A row's first edge value is the last row's plus b·256, a pixel's the row's plus a·256·dx: in
+  // general registers, each row's broadcast once (T of an int64: modulo 2^32 in int32 lanes, as
+  // the sums it joins are taken).
+  std::int64_t rowValue[3], stepX[3];
+  V step[3], laneStep[3];  // laneStep: lane k's k·a·256 (kShade's vectors of a row's pixels)
   for (int i = 0; i < 3; ++i) {
-    const std::int64_t e =
-        t.edge[i].at(std::int64_t(minX) * kSubpixelOne + half, std::int64_t(minY) * kSubpixelOne + half);
-    const std::int64_t r = kSplit ? (e & (kSubpixelOne - 1)) : 0;
-    rowHigh[i] = hn::Set(d, T(e - r));
-    stepY[i] = hn::Set(d, T(std::int64_t(t.edge[i].b) * kSubpixelOne));
-    stepX[i] = hn::Set(d, T(std::int64_t(t.edge[i].a) * kSubpixelOne));
-    step[i] = hn::Set(d, T(std::int64_t(t.edge[i].a) * kSubpixelOne * pixels));
-    Elow[i] = hn::Set(d, T(r));
-    for (int v = 0; v < vectors; ++v) {
-      rest[i][v] = Elow[i] + hn::Load(d, low[i] + v * lanes);
-      restBias[i][v] = rest[i][v] + bias[i];
-    }
+    rowValue[i] = t.edge[i].at(std::int64_t(minX) * kSubpixelOne + half, std::int64_t(minY) * kSubpixelOne + half) -
+                  std::int64_t(t.edge[i].b) * kSubpixelOne;  // (the row before the first)
+    stepX[i] = std::int64_t(t.edge[i].a) * kSubpixelOne;
+    step[i] = hn::Set(d, T(stepX[i] * pixels));
+    if constexpr (kShade) laneStep[i] = hn::Iota(d, 0) * hn::Set(d, T(stepX[i]));
   }
   std::size_t passed = 0;
   for (int y = minY; y <= maxY; ++y) {
-    if (y != minY)
-      for (int i = 0; i < 3; ++i) rowHigh[i] = rowHigh[i] + stepY[i];
+    for (int i = 0; i < 3; ++i) rowValue[i] += std::int64_t(t.edge[i].b) * kSubpixelOne;
     int first = minX, last = maxX;
     if (narrowed) {
       first = rowFirst[y - minY], last = rowLast[y - minY];
@@ -746,7 +742,7 @@ HWY_INLINE std::size_t SamplesPassIn(D d, const TriangleSetup& t, const PixelRec
     // multiples of 256), and each vector's.
     V Ehigh[3], h[3][kRowVectors];
     for (int i = 0; i < 3; ++i) {
-      Ehigh[i] = first == minX ? rowHigh[i] : rowHigh[i] + hn::Set(d, T(first - minX)) * stepX[i];
+      Ehigh[i] = hn::Set(d, T(rowValue[i] + (first - minX) * stepX[i]));
       for (int v = 0; v < vectors; ++v) h[i][v] = Ehigh[i] + hn::Load(d, high[i] + v * lanes);
     }
     // kShade: the colours of the row's pixels [shadedFrom, shadedFrom + lanes), once asked for.
@@ -761,15 +757,8 @@ HWY_INLINE std::size_t SamplesPassIn(D d, const TriangleSetup& t, const PixelRec
       const auto inRow = hn::Set(dr, Real(last - x));
       for (int v = 0; v < vectors; ++v) {
         const int k = v * lanes;
-        V E[3], Ebias[3];
-        for (int i = 0; i < 3; ++i) {
-          E[i] = kSplit ? h[i][v] + rest[i][v] : h[i][v];
-          Ebias[i] = h[i][v] + restBias[i][v];
-        }
-        // Converting to Real keeps the sign and zero, so the test can run in the narrow lanes.
-        const auto inside = hn::And(hn::And(hn::And(toReal(Ebias[0]) >= zero, toReal(Ebias[1]) >= zero),
-                                            toReal(Ebias[2]) >= zero),
-                                    hn::LoadU(dr, pixelOf + k) <= inRow);
+        const V E[3] = {h[0][v], h[1][v], h[2][v]};
+        const auto inside = hn::And(insideEdges(E), hn::LoadU(dr, pixelOf + k) <= inRow);
         const auto z = (toReal(E[0]) * invArea) * z0 + (toReal(E[1]) * invArea) * z1 + (toReal(E[2]) * invArea) * z2;
         const std::size_t at = std::size_t(row + x) * std::size_t(samples) + std::size_t(k);
         Real* depth = planes.depth + at;
@@ -777,10 +766,7 @@ HWY_INLINE std::size_t SamplesPassIn(D d, const TriangleSetup& t, const PixelRec
         if (!kEveryVector && hn::AllFalse(dr, pass)) continue;
         hn::BlendedStore(z, pass, dr, depth);
         passed += hn::CountTrue(dr, pass);
-        const auto centreAt = [&](int i) {
-          if constexpr (kSplit) return toReal((Ehigh[i] + hn::Load(d, centre[i] + k)) + Elow[i]) * invArea;
-          else return toReal(Ehigh[i] + hn::Load(d, centre[i] + k)) * invArea;
-        };
+        const auto centreAt = [&](int i) { return toReal(Ehigh[i] + hn::Load(d, centre[i] + k)) * invArea; };
         if constexpr (kShade) {
           const hn::Rebind<std::uint32_t, D> du;
           const int from = first + (x - first) / lanes * lanes;  // (x − first is a multiple of pixels)
@@ -791,16 +777,11 @@ HWY_INLINE std::size_t SamplesPassIn(D d, const TriangleSetup& t, const PixelRec
             shadedFrom = from;
             const auto shadeIn = [&](auto dn) {
               const hn::Rebind<Real, decltype(dn)> drn;
-              const auto dx = IotaFrom(dn, T(from - minX));
-              const auto narrow = [&](V v) {  // (a broadcast: its lower half is the same value)
-                if constexpr (std::is_same_v<decltype(dn), D>) return v;
-                else return hn::LowerHalf(dn, v);
-              };
               const auto invAreaN = hn::Set(drn, t.invArea);
               const auto at = [&](int i) {
-                const auto E = narrow(rowHigh[i]) + dx * narrow(stepX[i]);
-                if constexpr (kSplit) return (E + narrow(Elow[i])) * invAreaN;
-                else return hn::DemoteTo(drn, E) * invAreaN;
+                const auto first = hn::Set(dn, T(rowValue[i] + (from - minX) * stepX[i]));
+                if constexpr (std::is_same_v<decltype(dn), D>) return toRealIn(drn, first + laneStep[i]) * invAreaN;
+                else return toRealIn(drn, first + hn::LowerHalf(dn, laneStep[i])) * invAreaN;
               };
               return shade(at(0), at(1), at(2));
             };
@@ -825,11 +806,10 @@ HWY_INLINE std::size_t SamplesPassIn(D d, const TriangleSetup& t, const PixelRec
   return passed;
 }
 
-// Whether the triangle's edge values at every sample of its pixels in `tile`, and every part they
-// are summed from, stay below 2^32 in magnitude (as BlockRowsExact), for SamplesPassIn's split
-// float lanes: the value at the bounds' first pixel, the steps across them and the samples'
-// offsets each below 2^31.
-HWY_INLINE bool SamplesSplitExact(const TriangleSetup& t, const PixelRect& tile, const SamplePlanes& planes) {
+// Whether the triangle's edge values at every sample of its pixels in `tile` stay below 2^31 in
+// magnitude, with room for the bias, for SamplesPassIn's int32 lanes: the value at the bounds'
+// first pixel plus the steps across them and the samples' offsets.
+HWY_INLINE bool SamplesIntExact(const TriangleSetup& t, const PixelRect& tile, const SamplePlanes& planes) {
   const int minX = std::max(t.minX, tile.minX), maxX = std::min(t.maxX, tile.maxX);
   const int minY = std::max(t.minY, tile.minY), maxY = std::min(t.maxY, tile.maxY);
   std::int64_t reach = 0;
@@ -852,10 +832,10 @@ HWY_INLINE std::size_t SamplesPass(const TriangleSetup& t, const PixelRect& tile
     return 0;
 #if HWY_TARGET != HWY_SCALAR
   if constexpr (sizeof(Real) == 4)
-    if (SamplesSplitExact(t, tile, planes))
-      return SamplesPassIn<true, kEveryVector>(hn::ScalableTag<float>(), t, tile, planes, write, shade);
+    if (SamplesIntExact(t, tile, planes))
+      return SamplesPassIn<kEveryVector>(hn::ScalableTag<std::int32_t>(), t, tile, planes, write, shade);
 #endif
-  return SamplesPassIn<false, kEveryVector>(DD(), t, tile, planes, write, shade);
+  return SamplesPassIn<kEveryVector>(DD(), t, tile, planes, write, shade);
 }
 
 std::size_t RasterizeSamples(const TriangleSetup& t, const PixelRect& tile, const SamplePlanes& planes,
