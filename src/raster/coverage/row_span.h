@@ -40,9 +40,10 @@ struct RowSpans {
       for (const SubpixelOffset& o : samples) reach = std::max(reach, std::int64_t(e.a) * o.x + std::int64_t(e.b) * o.y);
       need[i] = -(reach + e.bias) - e.at(std::int64_t(minX) * kSubpixelOne + half, std::int64_t(minY) * kSubpixelOne + half);
       B[i] = std::int64_t(e.b) * kSubpixelOne;
-      const double A = double(std::int64_t(e.a) * kSubpixelOne);
-      q0[i] = e.a != 0 ? double(need[i]) / A : 0.0;
-      dq[i] = e.a != 0 ? -double(B[i]) / A : 0.0;
+      // (Through 1/A: within a few units in the last place of the quotients, far inside the slack.)
+      const double perA = e.a != 0 ? 1.0 / double(std::int64_t(e.a) * kSubpixelOne) : 0.0;
+      q0[i] = double(need[i]) * perA;
+      dq[i] = -double(B[i]) * perA;
       rising[i] = e.a > 0;
     }
   }
