@@ -17,7 +17,7 @@ for input in "${inputs[@]}"; do
   declare -A ms=() mib=()
   for ((r = 0; r < rounds; ++r)); do
     for s in 1 4 8; do
-      out=$("$illum" bench "$input" --samples "$s" --frames "$frames" --threads "$threads")
+      out=$("$illum" bench "$input" --samples "$s" --frames "$frames" --threads "$threads" --environment none)
       ms[$s]+=" $(field ms_per_frame <<<"$out")"
       mib[$s]=$(field peak_mib <<<"$out")
     done
