@@ -632,9 +632,9 @@ HWY_INLINE void NarrowRows(const RowSpans& s, const TriangleSetup& t, int count,
 // sample's edge value is its pixel centre's plus a·ox + b·oy, an integer as exact as the
 // centre's, so coverage, barycentrics and depth come out as a whole pass at that sample finds them
 // (DepthPass of atSample). The edge values are kept in double lanes, or in int32 lanes where every
-// one of them (and every part it is summed from) stays below 2^31 (SamplesIntExact): the lanes'
-// conversion to Real rounds as the integer's does, and the test is the integer's. kEveryVector: write is called for every vector, also under an empty mask, where
-// it must change nothing (no branch on whether a sample passed).
+// one of them stays below 2^31 (SamplesIntExact): the lanes' conversion to Real rounds as the
+// integer's does, and the test is the integer's. kEveryVector: write is called for every vector,
+// also under an empty mask, where it must change nothing (no branch on whether a sample passed).
 // With `shade` (not null), write(at, pass, color) instead: color the lanes' pixels' RGBA8 words,
 // shade(l0, l1, l2) of their centres' barycentrics worked out for as many pixels of a row as a
 // vector has lanes at once (the first time one of them has a sample passing), not for each vector
@@ -700,7 +700,8 @@ HWY_INLINE std::size_t SamplesPassIn(D d, const TriangleSetup& t, const PixelRec
     if constexpr (kInt) return hn::RebindMask(dr, hn::And(hn::And(E[0] > below[0], E[1] > below[1]), E[2] > below[2]));
     else {  // (E − below ≥ 1 where inside: positive in Real too)
       const auto zero = hn::Zero(dr);
-      return hn::And(hn::And(toReal(E[0] - below[0]) > zero, toReal(E[1] - below[1]) > zero), toReal(E[2] - below[2]) > zero);
+      return hn::And(hn::And(toReal(E[0] - below[0]) > zero, toReal(E[1] - below[1]) > zero),
+                     toReal(E[2] - below[2]) > zero);
     }
   };
   const auto invArea = hn::Set(dr, t.invArea);
