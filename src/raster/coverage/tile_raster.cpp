@@ -760,6 +760,10 @@ HWY_INLINE std::size_t SamplesPassIn(D d, const TriangleSetup& t, const PixelRec
         const int k = v * lanes;
         const V E[3] = {h[0][v], h[1][v], h[2][v]};
         const auto inside = hn::And(insideEdges(E), hn::LoadU(dr, pixelOf + k) <= inRow);
+        // (A vector with no sample inside, about a quarter of a small triangle's at 4 samples, skips
+        // its depths: spheres_48k_8lights_gouraud at 4 samples −3 %, 8 samples unchanged. Where
+        // write is called for every vector, the branch cost more than it saved: 2CylinderEngine +5 %.)
+        if (!kEveryVector && hn::AllFalse(dr, inside)) continue;
         const auto z = (toReal(E[0]) * invArea) * z0 + (toReal(E[1]) * invArea) * z1 + (toReal(E[2]) * invArea) * z2;
         const std::size_t at = std::size_t(row + x) * std::size_t(samples) + std::size_t(k);
         Real* depth = planes.depth + at;
