@@ -1,6 +1,5 @@
 // The pixels of a row that a triangle may cover (a sample of them, when multisampled), from its
-// edge functions: what the multisampled coverage kernel and the deferred colours visit of a
-// triangle's bounds.
+// edge functions: what the multisampled coverage kernel visits of a triangle's bounds.
 #pragma once
 
 #include "raster/coverage/triangle.h"

@@ -707,12 +707,11 @@ HWY_INLINE std::size_t SamplesPassIn(D d, const TriangleSetup& t, const PixelRec
   const auto invArea = hn::Set(dr, t.invArea);
   const auto z0 = hn::Set(dr, t.z[0]), z1 = hn::Set(dr, t.z[1]), z2 = hn::Set(dr, t.z[2]);
   const std::int64_t half = kSubpixelOne / 2;
-  // Narrowing a row costs about what testing two vectors of its samples does: a row of at most
-  // two vectors is tested whole (the tests are exact either way; narrowing only skips vectors).
-  // Measured: spheres_1m_8lights_phong at 4 samples −15 % CPU time, 2CylinderEngine −5 to −8 %
-  // (then narrowing stepped rather than solved per row: 2CylinderEngine −3 %). The spans are
-  // worked out only for such wide bounds (their six divisions were a tenth of a small triangle's
-  // pass).
+  // A row of at most two vectors is tested whole (the tests are exact either way; narrowing only
+  // skips vectors). Measured: spheres_1m_8lights_phong at 4 samples −15 % CPU time,
+  // 2CylinderEngine −5 to −8 % (then narrowing stepped rather than solved per row:
+  // 2CylinderEngine −3 %). The spans are worked out only for such wide bounds, all rows at once
+  // (testing rows of three vectors whole as well: spheres_48k_8lights_gouraud at 4 samples +6 %).
   const bool narrowed = maxX - minX + 1 > 2 * pixels;
   std::int32_t rowFirst[kTileSize + kRowSpansRoom], rowLast[kTileSize + kRowSpansRoom];
   if (narrowed)
@@ -739,8 +738,8 @@ HWY_INLINE std::size_t SamplesPassIn(D d, const TriangleSetup& t, const PixelRec
       if (first > last) continue;
     }
     const int row = (y - tile.minY) * kTileSize - tile.minX;  // tile-local index of (0, y)
-    // The edge values at the row's first pixel (each group of pixels on adds a·256·pixels to the
-    // multiples of 256), and each vector's.
+    // The edge values at the row's first pixel (each group of pixels on adds a·256·pixels), and
+    // each vector's.
     V Ehigh[3], h[3][kRowVectors];
     for (int i = 0; i < 3; ++i) {
       Ehigh[i] = hn::Set(d, T(rowValue[i] + (first - minX) * stepX[i]));
@@ -784,9 +783,9 @@ HWY_INLINE std::size_t SamplesPassIn(D d, const TriangleSetup& t, const PixelRec
               const hn::Rebind<Real, decltype(dn)> drn;
               const auto invAreaN = hn::Set(drn, t.invArea);
               const auto at = [&](int i) {
-                const auto first = hn::Set(dn, T(rowValue[i] + (from - minX) * stepX[i]));
-                if constexpr (std::is_same_v<decltype(dn), D>) return toRealIn(drn, first + laneStep[i]) * invAreaN;
-                else return toRealIn(drn, first + hn::LowerHalf(dn, laneStep[i])) * invAreaN;
+                const auto atFrom = hn::Set(dn, T(rowValue[i] + (from - minX) * stepX[i]));
+                if constexpr (std::is_same_v<decltype(dn), D>) return toRealIn(drn, atFrom + laneStep[i]) * invAreaN;
+                else return toRealIn(drn, atFrom + hn::LowerHalf(dn, laneStep[i])) * invAreaN;
               };
               return shade(at(0), at(1), at(2));
             };
