@@ -78,7 +78,15 @@ std::size_t CoverGroups(const TinyBatchLanes& b, std::uint32_t members, std::uin
   constexpr std::uint32_t kOffsetMask = (1u << kOffsetBits) - 1;
   static_assert(kTileSize == 1 << kTileShift && (kTinyPixels - 1) * (kTileSize + 1) < 1 << 12);
   const int sampleShift = __builtin_ctz(unsigned(b.samples));
+  // A row of the offset table from `base` on (offsets fit below kOffsetBits): whole rows, no
+  // branch per pixel, but a box is mostly a few pixels, so the rest of the row only where it has
+  // more.
   constexpr int kFewSlots = 16;
+  const auto writeRow = [](std::uint32_t* to, std::uint32_t base, const std::uint32_t* offsets, int count) {
+    for (int k = 0; k < kFewSlots; ++k) to[k] = base + offsets[k];
+    if (count > kFewSlots)
+      for (int k = kFewSlots; k < kTinyPixels; ++k) to[k] = base + offsets[k];
+  };
   const VF zero = hn::Zero(df);
   std::size_t n = 0;
   for (int g = 0; g < TinyBatchLanes::kCapacity; g += group) {
@@ -98,20 +106,14 @@ std::size_t CoverGroups(const TinyBatchLanes& b, std::uint32_t members, std::uin
           const std::uint32_t base = std::uint32_t(j) << kOffsetBits | b.sampleBase[s][g + j];
           const std::uint32_t* offsets = kTinySampleRows.offset[b.sampleWidth[s][g + j]];
           const int count = b.sampleCount[s][g + j];
-          // A sample's box is mostly a few pixels: the rest of the row only where it has more.
-          for (int k = 0; k < kFewSlots; ++k) slot[slots + k] = base + offsets[k];
-          if (count > kFewSlots)
-            for (int k = kFewSlots; k < kTinyPixels; ++k) slot[slots + k] = base + offsets[k];
+          writeRow(slot + slots, base, offsets, count);
           slots += count;
         }
         slotsOf[j] = slots - before;
       } else {
         const std::uint32_t* offsets = kTinyLanes.offset[b.width[g + j]];
         const int count = b.count[g + j];
-        // Whole rows of the table, no branch per pixel (the rest only where the bounds have more).
-        for (int k = 0; k < kFewSlots; ++k) slot[slots + k] = std::uint32_t(j) << kOffsetBits | offsets[k];
-        if (count > kFewSlots)
-          for (int k = kFewSlots; k < kTinyPixels; ++k) slot[slots + k] = std::uint32_t(j) << kOffsetBits | offsets[k];
+        writeRow(slot + slots, std::uint32_t(j) << kOffsetBits, offsets, count);
         slots += count;
       }
     }
